@@ -1,0 +1,83 @@
+#include "engine/core/image.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.h"
+
+namespace diptych {
+namespace {
+
+Image readFrom(OIIO::ImageInput* in, const std::string& name) {
+  if (!in) throw InputError(name, "", "cannot open image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    throw InputError(name, "", "image has no pixels");
+  Image img(spec.width, spec.height, spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+    throw InputError(name, "", "cannot decode image: " + in->geterror());
+  in->close();
+  return img;
+}
+
+std::string lowerExtension(const std::filesystem::path& p) {
+  std::string e = p.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+  return e;
+}
+
+}  // namespace
+
+Image readImage(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path.string(), "", "file not found");
+  auto in = OIIO::ImageInput::open(path.string());
+  return readFrom(in.get(), path.string());
+}
+
+Image readImageFromMemory(const std::string& name, const void* data, std::size_t size) {
+  OIIO::Filesystem::IOMemReader reader(data, size);
+  auto in = OIIO::ImageInput::open(name, nullptr, &reader);
+  return readFrom(in.get(), name);
+}
+
+float srgbToLinear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+float linearToSrgb(float c) {
+  return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.f / 2.4f) - 0.055f;
+}
+
+void writeImage(const std::filesystem::path& path, const Image& image, ToneMap tone) {
+  if (image.empty()) throw Error(path.string() + ": refusing to write an empty image");
+  const std::string ext = lowerExtension(path);
+  const bool linearFormat = ext == ".exr" || ext == ".hdr";
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+
+  auto out = OIIO::ImageOutput::create(path.string());
+  if (!out) throw Error(path.string() + ": no image writer for this extension");
+  OIIO::ImageSpec spec(image.width, image.height, image.channels,
+                       linearFormat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
+  if (ext == ".exr") spec.set_format(OIIO::TypeDesc::FLOAT);
+  if (!linearFormat) spec.attribute("oiio:ColorSpace", "sRGB");
+
+  std::vector<float> encoded = image.pixels;
+  if (!linearFormat) {
+    const float scale = std::exp2(tone.exposure);
+    const bool hasAlpha = image.channels == 4 || image.channels == 2;
+    for (std::size_t i = 0; i < encoded.size(); ++i) {
+      const bool isAlpha = hasAlpha && int(i % image.channels) == image.channels - 1;
+      float v = isAlpha ? encoded[i] : encoded[i] * scale;
+      v = std::isfinite(v) ? std::clamp(v, 0.f, 1.f) : 0.f;
+      encoded[i] = isAlpha ? v : linearToSrgb(v);
+    }
+  }
+  if (!out->open(path.string(), spec) ||
+      !out->write_image(OIIO::TypeDesc::FLOAT, encoded.data()) || !out->close())
+    throw Error(path.string() + ": cannot write image: " + out->geterror());
+}
+
+}  // namespace diptych

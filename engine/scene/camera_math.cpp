@@ -1,0 +1,42 @@
+#include "engine/scene/camera_math.h"
+
+namespace diptych {
+
+mat4 viewMatrix(const Camera& c) { return glm::lookAt(c.position, c.target, c.up); }
+
+mat4 reversedZProjection(const Camera& c, float aspect) {
+  const float f = 1.f / std::tan(0.5f * c.verticalFov);
+  mat4 p(0.f);  // column-major: p[column][row]
+  p[0][0] = f / aspect;
+  p[1][1] = f;
+  p[2][3] = -1.f;     // w_clip = -z_view
+  p[3][2] = c.znear;  // z_clip = near, so depth = near / -z_view
+  return p;
+}
+
+Ray primaryRay(const Camera& c, int width, int height, float x, float y) {
+  const float aspect = float(width) / float(height);
+  const float tanHalf = std::tan(0.5f * c.verticalFov);
+  const float ndcX = 2.f * x / float(width) - 1.f;
+  const float ndcY = 1.f - 2.f * y / float(height);
+  const vec3 forward = glm::normalize(c.target - c.position);
+  const vec3 right = glm::normalize(glm::cross(forward, c.up));
+  const vec3 up = glm::cross(right, forward);
+  const vec3 d = forward + (ndcX * aspect * tanHalf) * right + (ndcY * tanHalf) * up;
+  return {c.position, glm::normalize(d)};
+}
+
+Camera frameBounds(const Aabb& b) {
+  Camera c;
+  const vec3 centre = b.empty() ? vec3(0.f) : b.center();
+  const float radius = std::max(0.5f * b.diagonal(), 1e-3f);
+  const float distance = radius / std::sin(0.5f * c.verticalFov) * 1.1f;
+  c.target = centre;
+  c.position = centre + vec3(0.f, 0.25f * radius, distance);
+  c.znear = std::max(distance - radius, distance * 1e-3f) * 0.5f;
+  c.zfar = distance + 2.f * radius;
+  c.focusDistance = distance;
+  return c;
+}
+
+}  // namespace diptych

@@ -1,0 +1,24 @@
+#pragma once
+// Camera matrices and primary rays. Raster and ray tracing both derive from these, so that a
+// pixel centre is the same ray on both sides. Image pixel (x, y) has y = 0 at the top row.
+#include "engine/scene/scene.h"
+
+namespace diptych {
+
+mat4 viewMatrix(const Camera& camera);
+// Infinite reversed-Z perspective (depth 1 at the near plane, -> 0 at infinity) for
+// glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) with a D32F buffer cleared to 0 and GL_GREATER.
+mat4 reversedZProjection(const Camera& camera, float aspect);
+
+struct Ray {
+  vec3 origin;
+  vec3 direction;  // unit length
+};
+
+// Ray through the point (x + sx, y + sy) of the image, sx, sy in [0,1); (0.5, 0.5) is the centre.
+Ray primaryRay(const Camera& camera, int width, int height, float x, float y);
+
+// A camera that frames the bounds (used when a scene has none).
+Camera frameBounds(const Aabb& bounds);
+
+}  // namespace diptych

@@ -1,0 +1,19 @@
+#include "engine/scene/scene.h"
+
+namespace diptych {
+
+const Material& Scene::material(int index) const {
+  static const Material defaultMaterial{.name = "default"};
+  if (index < 0 || index >= int(materials.size())) return defaultMaterial;
+  return materials[index];
+}
+
+Aabb Scene::bounds() const {
+  Aabb box;
+  for (const Instance& inst : instances) {
+    for (const vec3& p : meshes[inst.mesh].positions) box.extend(vec3(inst.transform * vec4(p, 1.f)));
+  }
+  return box;
+}
+
+}  // namespace diptych

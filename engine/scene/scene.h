@@ -1,0 +1,146 @@
+#pragma once
+// The in-memory scene every layer reads: meshes, instances, materials (lecture coefficients),
+// textures, lights, camera and environment. Loaders fill it and validate it; nothing else
+// mutates it after loading.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/core/image.h"
+#include "engine/core/math.h"
+
+namespace diptych {
+
+// An indexed triangle mesh in object space. normals/uvs/tangents are either empty or have one
+// entry per position. Triangles are counter-clockwise when seen from the front.
+struct Mesh {
+  std::string name;  // "meshes[2] 'Helmet' primitive 0" style, used in error messages
+  std::vector<vec3> positions;
+  std::vector<vec3> normals;
+  std::vector<vec2> uvs;
+  std::vector<vec4> tangents;  // xyz tangent, w handedness (glTF convention)
+  std::vector<std::uint32_t> indices;  // 3 per triangle
+  int material = -1;                   // -1: the default material
+  std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// A placed mesh. A negative determinant mirrors the mesh: consumers that flatten it must flip
+// the triangle winding so that front faces stay counter-clockwise.
+struct Instance {
+  std::string name;
+  int mesh = 0;
+  mat4 transform{1.f};
+};
+
+enum class WrapMode { Repeat, ClampToEdge, MirroredRepeat };
+enum class FilterMode { Nearest, Linear, NearestMipmapNearest, LinearMipmapNearest,
+                        NearestMipmapLinear, LinearMipmapLinear };
+
+// A texture image decoded to linear float RGBA (colour textures marked sRGB in the file are
+// decoded with the sRGB transfer function at load, as glTF specifies for baseColor/emissive).
+struct Texture {
+  std::string name;
+  Image image;  // 4 channels, linear
+  bool srgbSource = false;
+  WrapMode wrapS = WrapMode::Repeat, wrapT = WrapMode::Repeat;
+  FilterMode minFilter = FilterMode::LinearMipmapLinear, magFilter = FilterMode::Linear;
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// Procedural checkerboard in uv space: colour alternates between colorA and colorB every
+// 1/scale units of u and v.
+struct Checker {
+  vec3 colorA{1.f}, colorB{0.f};
+  float scale = 1.f;
+};
+
+// The lecture's extended local illumination model (Tema 5, "Un M.I.L. extendido"):
+// L = M_E + A_G + sum_i V_i S_i [k_a C + k_d C max(0,n.l) + k_s d_i max(0,r.v)^e]
+//       + k_ps M_PS L_refl + k_t M_T L_trans.
+// d_i is the specular colour (specularColor), white unless authored.
+struct Material {
+  std::string name;
+  vec3 color{0.8f};  // C
+  float ka = 0.f, kd = 1.f, ks = 0.f, exponent = 32.f;
+  vec3 specularColor{1.f};  // d_i
+  float kps = 0.f;          // perfect-mirror fraction
+  vec3 mirrorColor{1.f};    // M_PS
+  float kt = 0.f;           // transmitted fraction
+  vec3 transmitColor{1.f};  // M_T
+  vec3 emission{0.f};       // M_E
+  float ior = 1.5f;
+  float alpha = 1.f;        // coverage (glTF baseColor alpha)
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;
+  bool doubleSided = false;
+  int colorTexture = -1;     // multiplies C (and alpha); index into Scene::textures
+  int emissionTexture = -1;  // multiplies M_E
+  std::optional<Checker> checker;  // replaces C when present
+  bool fromGltfPbr = false;  // true when mapped from metallic-roughness (see docs/scene-format.md)
+  bool castsShadows = true;
+};
+
+enum class LightType { Point, Directional, Spot, QuadArea, DiscArea, SphereArea };
+
+// S_i of the lecture is color * intensity, with glTF units: point/spot in candela (W/sr),
+// directional in lux; area lights give radiance per unit area. Point/spot/area fall off with
+// 1/d^2 (glTF KHR_lights_punctual, range ignored except as a hard cut-off when > 0).
+struct Light {
+  std::string name;
+  LightType type = LightType::Point;
+  vec3 color{1.f};
+  float intensity = 1.f;
+  vec3 position{0.f};
+  vec3 direction{0.f, -1.f, 0.f};  // direction the light travels (directional, spot, area normal)
+  float range = 0.f;               // 0: infinite
+  float innerConeAngle = 0.f, outerConeAngle = 0.7853982f;  // spot, radians
+  vec3 edgeU{0.f}, edgeV{0.f};     // quad area: corners position +- edgeU/2 +- edgeV/2
+  float radius = 0.f;              // disc and sphere area lights
+  bool castsShadows = true;
+};
+
+struct Camera {
+  vec3 position{0.f, 0.f, 5.f};
+  vec3 target{0.f};
+  vec3 up{0.f, 1.f, 0.f};
+  float verticalFov = 0.7853982f;  // radians
+  float aperture = 0.f;            // lens radius for later depth of field; 0 = pinhole
+  float focusDistance = 1.f;
+  float znear = 0.05f;  // reversed-Z makes far irrelevant to precision; kept finite for export
+  float zfar = 1000.f;
+};
+
+enum class EnvironmentType { Color, Equirect, Cube };
+
+// Background radiance on a miss. Equirect uses u = 0.5 + atan2(d.z, d.x)/2pi, v = acos(d.y)/pi
+// (v = 0 at the top row); cube faces are in OpenGL order +x,-x,+y,-y,+z,-z.
+struct Environment {
+  EnvironmentType type = EnvironmentType::Color;
+  vec3 color{0.f};
+  float intensity = 1.f;
+  Image equirect;                 // linear RGB(A)
+  std::array<Image, 6> cubeFaces;  // linear RGB(A)
+  std::string source;             // file(s) it came from, for reports
+};
+
+struct Scene {
+  std::string sourcePath;
+  std::vector<Mesh> meshes;
+  std::vector<Instance> instances;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<Light> lights;
+  Camera camera;
+  bool hasCamera = false;  // false: a camera was framed automatically from the bounds
+  Environment environment;
+  vec3 ambient{0.f};  // A_G
+  std::vector<std::string> warnings;  // recoveries made while loading, each naming the place
+
+  const Material& material(int index) const;  // -1 or out of range -> default material
+  Aabb bounds() const;                         // world-space bounds of all instances
+};
+
+}  // namespace diptych

@@ -1,0 +1,88 @@
+#include "engine/scene/world_geometry.h"
+
+namespace diptych {
+namespace {
+
+// Area-weighted vertex normals (the cross product's length is twice the triangle area).
+std::vector<vec3> computeVertexNormals(const std::vector<vec3>& p,
+                                       const std::vector<std::uint32_t>& idx) {
+  std::vector<vec3> n(p.size(), vec3(0.f));
+  for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
+    const vec3 face = glm::cross(p[idx[t + 1]] - p[idx[t]], p[idx[t + 2]] - p[idx[t]]);
+    for (int k = 0; k < 3; ++k) n[idx[t + k]] += face;
+  }
+  for (vec3& v : n) {
+    const float len = glm::length(v);
+    v = len > 0.f && std::isfinite(len) ? v / len : vec3(0.f, 1.f, 0.f);
+  }
+  return n;
+}
+
+}  // namespace
+
+std::size_t WorldGeometry::triangleCount() const {
+  std::size_t n = 0;
+  for (const WorldMesh& m : meshes) n += m.indices.size() / 3;
+  return n;
+}
+
+WorldGeometry flattenScene(const Scene& scene) {
+  WorldGeometry world;
+  world.meshes.reserve(scene.instances.size());
+  for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+    const Instance& inst = scene.instances[i];
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    WorldMesh w;
+    w.instance = int(i);
+    w.material = mesh.material;
+    w.mirrored = glm::determinant(mat3(inst.transform)) < 0.f;
+    w.positions.reserve(mesh.positions.size());
+    for (const vec3& p : mesh.positions) w.positions.push_back(vec3(inst.transform * vec4(p, 1.f)));
+    w.indices = mesh.indices;
+    if (w.mirrored) {
+      for (std::size_t t = 0; t + 2 < w.indices.size(); t += 3) std::swap(w.indices[t + 1], w.indices[t + 2]);
+    }
+    if (mesh.normals.size() == mesh.positions.size()) {
+      const mat3 normalMatrix = glm::transpose(glm::inverse(mat3(inst.transform)));
+      w.normals.reserve(mesh.normals.size());
+      for (const vec3& n : mesh.normals) {
+        const vec3 t = normalMatrix * n;
+        const float len = glm::length(t);
+        w.normals.push_back(len > 0.f && std::isfinite(len) ? t / len : vec3(0.f, 1.f, 0.f));
+      }
+    } else {
+      w.normals = computeVertexNormals(w.positions, w.indices);
+    }
+    if (mesh.uvs.size() == mesh.positions.size()) w.uvs = mesh.uvs;
+    for (const vec3& p : w.positions) world.bounds.extend(p);
+    world.meshes.push_back(std::move(w));
+  }
+  return world;
+}
+
+vec3 interpolatePosition(const WorldMesh& m, std::uint32_t prim, float u, float v) {
+  const std::uint32_t* t = &m.indices[3 * std::size_t(prim)];
+  return (1.f - u - v) * m.positions[t[0]] + u * m.positions[t[1]] + v * m.positions[t[2]];
+}
+
+vec3 interpolateNormal(const WorldMesh& m, std::uint32_t prim, float u, float v) {
+  const std::uint32_t* t = &m.indices[3 * std::size_t(prim)];
+  const vec3 n = (1.f - u - v) * m.normals[t[0]] + u * m.normals[t[1]] + v * m.normals[t[2]];
+  const float len = glm::length(n);
+  return len > 0.f ? n / len : geometricNormal(m, prim);
+}
+
+vec2 interpolateUv(const WorldMesh& m, std::uint32_t prim, float u, float v) {
+  if (m.uvs.empty()) return vec2(u, v);
+  const std::uint32_t* t = &m.indices[3 * std::size_t(prim)];
+  return (1.f - u - v) * m.uvs[t[0]] + u * m.uvs[t[1]] + v * m.uvs[t[2]];
+}
+
+vec3 geometricNormal(const WorldMesh& m, std::uint32_t prim) {
+  const std::uint32_t* t = &m.indices[3 * std::size_t(prim)];
+  const vec3 n = glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
+  const float len = glm::length(n);
+  return len > 0.f ? n / len : vec3(0.f, 1.f, 0.f);
+}
+
+}  // namespace diptych

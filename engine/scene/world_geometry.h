@@ -1,0 +1,37 @@
+#pragma once
+// The scene's triangles in world space, one WorldMesh per Instance (same index). The raster
+// G-buffer and the Embree scene are both built from these arrays, so a (instance, primitive,
+// barycentrics) triple names the same point on both sides, bit for bit.
+#include <cstdint>
+#include <vector>
+
+#include "engine/scene/scene.h"
+
+namespace diptych {
+
+struct WorldMesh {
+  int instance = 0;
+  int material = -1;
+  std::vector<vec3> positions;  // world space
+  std::vector<vec3> normals;    // world space, unit length (computed when the mesh has none)
+  std::vector<vec2> uvs;        // empty when the mesh has none
+  std::vector<std::uint32_t> indices;  // winding flipped for mirrored instances
+  bool mirrored = false;               // det(transform) < 0
+};
+
+struct WorldGeometry {
+  std::vector<WorldMesh> meshes;
+  Aabb bounds;
+  std::size_t triangleCount() const;
+};
+
+WorldGeometry flattenScene(const Scene& scene);
+
+// Exact world position of a hit: p = (1-u-v) p0 + u p1 + v p2 with Embree's barycentric
+// convention (u weights vertex 1, v weights vertex 2), evaluated in one fixed order.
+vec3 interpolatePosition(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
+vec3 interpolateNormal(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
+vec2 interpolateUv(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
+vec3 geometricNormal(const WorldMesh& mesh, std::uint32_t primitive);  // unit, CCW front
+
+}  // namespace diptych

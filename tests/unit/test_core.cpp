@@ -1,0 +1,77 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "engine/core/error.h"
+#include "engine/core/image.h"
+#include "engine/core/timing.h"
+#include "engine/scene/camera_math.h"
+#include "engine/scene/world_geometry.h"
+
+using namespace diptych;
+
+TEST(Timing, MedianOfOddAndEvenCounts) {
+  EXPECT_DOUBLE_EQ(summarize({5, 1, 3}).median, 3);
+  EXPECT_DOUBLE_EQ(summarize({4, 1, 3, 2}).median, 2.5);
+  EXPECT_EQ(summarize({}).samples, 0);
+}
+
+TEST(Image, ExrRoundTripIsExactAndPngIsSrgbEncoded) {
+  const auto dir = std::filesystem::temp_directory_path() / "diptych_test_core";
+  Image img(3, 2, 3);
+  for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = 0.1f * float(i) + 0.01f;
+  writeImage(dir / "a.exr", img);
+  const Image back = readImage(dir / "a.exr");
+  ASSERT_EQ(back.width, 3);
+  ASSERT_EQ(back.height, 2);
+  for (std::size_t i = 0; i < img.pixels.size(); ++i) EXPECT_FLOAT_EQ(back.pixels[i], img.pixels[i]);
+
+  Image grey(1, 1, 3, 0.5f);
+  writeImage(dir / "g.png", grey);
+  const Image png = readImage(dir / "g.png");
+  EXPECT_NEAR(png.at(0, 0, 0), linearToSrgb(0.5f), 1.f / 255.f);
+}
+
+TEST(Image, MissingFileNamesTheFile) {
+  try {
+    readImage("/nonexistent/dir/missing.png");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing.png"), std::string::npos);
+  }
+}
+
+TEST(Srgb, TransferFunctionRoundTrips) {
+  for (float v : {0.f, 0.001f, 0.04f, 0.2f, 0.5f, 1.f}) EXPECT_NEAR(srgbToLinear(linearToSrgb(v)), v, 1e-6f);
+}
+
+TEST(Camera, CentreRayLooksAtTargetAndReversedZMapsNearToOne) {
+  Camera c;
+  c.position = {0, 0, 5};
+  c.target = {0, 0, 0};
+  const Ray r = primaryRay(c, 64, 64, 32.f, 32.f);
+  EXPECT_NEAR(r.direction.z, -1.f, 1e-6f);
+  const mat4 p = reversedZProjection(c, 1.f);
+  const vec4 nearPoint = p * vec4(0, 0, -c.znear, 1);
+  EXPECT_NEAR(nearPoint.z / nearPoint.w, 1.f, 1e-6f);
+  const vec4 farPoint = p * vec4(0, 0, -1e6f, 1);
+  EXPECT_LT(farPoint.z / farPoint.w, 1e-6f);
+}
+
+TEST(WorldGeometry, MirroredInstanceKeepsOutwardGeometricNormal) {
+  Scene s;
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.indices = {0, 1, 2};
+  s.meshes.push_back(m);
+  s.instances.push_back({"plain", 0, mat4(1.f)});
+  s.instances.push_back({"mirrored", 0, glm::scale(mat4(1.f), vec3(-1, 1, 1))});
+  const WorldGeometry w = flattenScene(s);
+  ASSERT_EQ(w.meshes.size(), 2u);
+  EXPECT_FALSE(w.meshes[0].mirrored);
+  EXPECT_TRUE(w.meshes[1].mirrored);
+  // Mirroring x and flipping winding keeps the face pointing along +z.
+  EXPECT_NEAR(geometricNormal(w.meshes[0], 0).z, 1.f, 1e-6f);
+  EXPECT_NEAR(geometricNormal(w.meshes[1], 0).z, 1.f, 1e-6f);
+  EXPECT_NEAR(interpolatePosition(w.meshes[1], 0, 1.f / 3, 1.f / 3).x, -1.f / 3, 1e-6f);
+}
