@@ -75,8 +75,8 @@ void writeImage(const std::filesystem::path& path, const Image& image, ToneMap t
       encoded[i] = isAlpha ? v : linearToSrgb(v);
     }
   }
-  if (!out->open(path.string(), spec) ||
-      !out->write_image(OIIO::TypeDesc::FLOAT, encoded.data()) || !out->close())
+  if (!out->open(path.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, encoded.data()) ||
+      !out->close())
     throw Error(path.string() + ": cannot write image: " + out->geterror());
 }
 

@@ -12,5 +12,7 @@ spdlog::logger& log() {
   }();
   return *logger;
 }
-void setLogLevel(spdlog::level::level_enum level) { log().set_level(level); }
+void setLogLevel(spdlog::level::level_enum level) {
+  log().set_level(level);
+}
 }  // namespace diptych

@@ -24,7 +24,8 @@ TEST(Image, ExrRoundTripIsExactAndPngIsSrgbEncoded) {
   const Image back = readImage(dir / "a.exr");
   ASSERT_EQ(back.width, 3);
   ASSERT_EQ(back.height, 2);
-  for (std::size_t i = 0; i < img.pixels.size(); ++i) EXPECT_FLOAT_EQ(back.pixels[i], img.pixels[i]);
+  for (std::size_t i = 0; i < img.pixels.size(); ++i)
+    EXPECT_FLOAT_EQ(back.pixels[i], img.pixels[i]);
 
   Image grey(1, 1, 3, 0.5f);
   writeImage(dir / "g.png", grey);
@@ -42,7 +43,8 @@ TEST(Image, MissingFileNamesTheFile) {
 }
 
 TEST(Srgb, TransferFunctionRoundTrips) {
-  for (float v : {0.f, 0.001f, 0.04f, 0.2f, 0.5f, 1.f}) EXPECT_NEAR(srgbToLinear(linearToSrgb(v)), v, 1e-6f);
+  for (float v : {0.f, 0.001f, 0.04f, 0.2f, 0.5f, 1.f})
+    EXPECT_NEAR(srgbToLinear(linearToSrgb(v)), v, 1e-6f);
 }
 
 TEST(Camera, CentreRayLooksAtTargetAndReversedZMapsNearToOne) {

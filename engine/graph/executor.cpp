@@ -1,0 +1,133 @@
+#include "engine/graph/executor.h"
+
+#include <algorithm>
+
+#include "engine/core/error.h"
+#include "engine/core/timing.h"
+
+namespace diptych {
+
+// The PassContext of one pass node: resolves handles to pooled storage and refuses any
+// resource the pass did not declare in setup.
+class ExecutionContext final : public PassContext {
+ public:
+  ExecutionContext(GraphExecutor& ex, const GraphPass& pass, NodeTiming& timing)
+      : ex_(ex), pass_(pass), timing_(timing) {}
+
+  const Surface& cpuRead(ResourceId id) override { return cpuSlot(id, false); }
+  Surface& cpuWrite(ResourceId id) override { return cpuSlot(id, true); }
+  unsigned glTexture(ResourceId id) override {
+    const int slot = slotOf(id, Domain::Gl, true);
+    return ex_.glSlots_[slot];
+  }
+  const ResourceDesc& desc(ResourceId id) const override {
+    check(id, false);
+    return ex_.graph_.resources[id].desc;
+  }
+  RenderWorld& world() override { return ex_.world_; }
+  const FrameSettings& frame() const override { return ex_.graph_.frame; }
+  void count(const std::string& counter, double amount) override {
+    timing_.counters[counter] += amount;
+  }
+
+ private:
+  void check(ResourceId id, bool writing) const {
+    const bool valid = id >= 0 && id < ResourceId(ex_.graph_.resources.size());
+    const auto& w = pass_.writes;
+    const auto& r = pass_.reads;
+    const bool declared = valid && (std::find(w.begin(), w.end(), id) != w.end() ||
+                                    (!writing && std::find(r.begin(), r.end(), id) != r.end()));
+    if (!declared)
+      throw Error("pass '" + pass_.name + "' " + (writing ? "wrote" : "read") + " resource '" +
+                  (valid ? ex_.graph_.resources[id].name : std::to_string(id)) +
+                  "' without declaring it in setup");
+  }
+  int slotOf(ResourceId id, Domain domain, bool writing) const {
+    const auto& r = pass_.reads;
+    check(id, writing && std::find(r.begin(), r.end(), id) == r.end());
+    if (pass_.domain != domain)
+      throw Error("pass '" + pass_.name + "' runs in the " + domainName(pass_.domain) +
+                  " domain but asked for the " + domainName(domain) + " copy of '" +
+                  ex_.graph_.resources[id].name + "'");
+    const int storage = ex_.graph_.storageOf.at({id, domain});
+    return ex_.graph_.storages[storage].poolSlot;
+  }
+  Surface& cpuSlot(ResourceId id, bool writing) {
+    return ex_.cpuSlots_[slotOf(id, Domain::Cpu, writing)];
+  }
+
+  GraphExecutor& ex_;
+  const GraphPass& pass_;
+  NodeTiming& timing_;
+};
+
+GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world, GlBackend* gl)
+    : graph_(graph), world_(world), gl_(gl), timings_(graph.nodes.size()) {
+  if (graph.usesGl() && !gl_)
+    throw Error("the frame graph has GL work but no GL context was created");
+  cpuSlots_.resize(graph.pool.size());
+  glSlots_.assign(graph.pool.size(), 0u);
+  for (std::size_t i = 0; i < graph.pool.size(); ++i) {
+    if (graph.pool[i].domain == Domain::Cpu)
+      cpuSlots_[i] = Surface(graph.pool[i].desc);
+    else
+      glSlots_[i] = gl_->createTexture(graph.pool[i].desc);
+  }
+}
+
+GraphExecutor::~GraphExecutor() {
+  for (unsigned t : glSlots_)
+    if (t) gl_->destroyTexture(t);
+}
+
+void GraphExecutor::clearTimings() {
+  for (NodeTiming& t : timings_) t = NodeTiming{};
+}
+
+void GraphExecutor::runFrame() {
+  for (std::size_t n = 0; n < graph_.nodes.size(); ++n) {
+    const GraphNode& node = graph_.nodes[n];
+    NodeTiming& timing = timings_[n];
+    timing.counters.clear();
+    const bool glWork = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
+                        node.kind == NodeKind::Upload;
+    if (glWork) gl_->beginTimer(node.name);
+    Stopwatch clock;
+    auto slotOf = [&](int storage) { return graph_.storages[storage].poolSlot; };
+    switch (node.kind) {
+      case NodeKind::Pass: {
+        ExecutionContext context(*this, graph_.passes[node.pass], timing);
+        graph_.passes[node.pass].pass->execute(context);
+        break;
+      }
+      case NodeKind::Readback:
+        gl_->readback(glSlots_[slotOf(node.storagesRead[0])],
+                      cpuSlots_[slotOf(node.storagesWritten[0])]);
+        break;
+      case NodeKind::Upload:
+        gl_->upload(cpuSlots_[slotOf(node.storagesRead[0])],
+                    glSlots_[slotOf(node.storagesWritten[0])]);
+        break;
+      case NodeKind::Default: {
+        const GraphResource& res = graph_.resources[node.resource];
+        const int slot = slotOf(node.storagesWritten[0]);
+        if (node.domain == Domain::Cpu)
+          cpuSlots_[slot].fill(res.fallback);
+        else
+          gl_->fill(glSlots_[slot], res.desc, res.fallback);
+        break;
+      }
+    }
+    if (glWork) timing.gpuMs.push_back(gl_->endTimerMs());
+    timing.cpuMs.push_back(clock.milliseconds());
+  }
+}
+
+const Surface& GraphExecutor::output(const std::string& name) const {
+  const auto id = graph_.findResource(name);
+  if (!id || std::find(graph_.outputs.begin(), graph_.outputs.end(), *id) == graph_.outputs.end())
+    throw Error("'" + name + "' is not a requested output of this graph");
+  return cpuSlots_[graph_.storages[graph_.storageOf.at({*id, Domain::Cpu})].poolSlot];
+}
+
+}  // namespace diptych

@@ -1,0 +1,19 @@
+#pragma once
+// Exports a compiled graph (and, when given, its measured timings) as Graphviz DOT or JSON:
+// passes, resources, edges, lifetimes, culled passes with reasons, pooled memory with and
+// without reuse, and per-node timings (median over the measured frames).
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/graph/executor.h"
+#include "engine/graph/frame_graph.h"
+
+namespace diptych {
+
+nlohmann::json graphToJson(const CompiledGraph& graph,
+                           const std::vector<NodeTiming>* timings = nullptr);
+std::string graphToDot(const CompiledGraph& graph,
+                       const std::vector<NodeTiming>* timings = nullptr);
+
+}  // namespace diptych

@@ -1,0 +1,360 @@
+#include "engine/graph/frame_graph.h"
+
+#include <algorithm>
+#include <functional>
+#include <set>
+
+#include "engine/core/error.h"
+
+namespace diptych {
+
+const char* nodeKindName(NodeKind kind) {
+  switch (kind) {
+    case NodeKind::Pass:
+      return "pass";
+    case NodeKind::Readback:
+      return "readback";
+    case NodeKind::Upload:
+      return "upload";
+    case NodeKind::Default:
+      return "default";
+  }
+  return "?";
+}
+
+std::optional<ResourceId> CompiledGraph::findResource(const std::string& name) const {
+  for (std::size_t i = 0; i < resources.size(); ++i)
+    if (resources[i].name == name) return ResourceId(i);
+  return std::nullopt;
+}
+
+std::size_t CompiledGraph::bytesWithoutReuse() const {
+  std::size_t total = 0;
+  for (const GraphStorage& s : storages) total += s.desc.bytes();
+  return total;
+}
+
+std::size_t CompiledGraph::bytesWithReuse() const {
+  std::size_t total = 0;
+  for (const PoolSlot& p : pool) total += p.desc.bytes();
+  return total;
+}
+
+bool CompiledGraph::usesGl() const {
+  for (const GraphNode& n : nodes)
+    if (n.domain == Domain::Gl || n.kind == NodeKind::Readback || n.kind == NodeKind::Upload)
+      return true;
+  return false;
+}
+
+namespace {
+
+// Runs each pass's setup; the builder is bound to one pass at a time.
+class Builder final : public PassBuilder {
+ public:
+  Builder(CompiledGraph& g, const Recipe& r, const Scene& s) : g_(g), recipe_(r), scene_(s) {}
+
+  void bind(int passIndex, const RecipePass* spec, PassParams* params) {
+    pass_ = passIndex;
+    spec_ = spec;
+    params_ = params;
+    slotsRead_.clear();
+  }
+  const std::set<std::string>& slotsRead() const { return slotsRead_; }
+
+  ResourceId read(const std::string& slot, Format expected) override {
+    const ResourceId id = readOptional(slot, expected);
+    if (id == kNoResource) fail(".inputs." + slot, "input '" + slot + "' is not connected");
+    return id;
+  }
+
+  ResourceId readOptional(const std::string& slot, Format expected) override {
+    slotsRead_.insert(slot);
+    auto it = spec_->inputs.find(slot);
+    if (it == spec_->inputs.end()) return kNoResource;
+    const std::string& source = it->second;
+    const auto found = g_.findResource(source);
+    const std::string place = ".inputs." + slot;
+    if (!found) {
+      const auto [producer, output] = splitResourceName(source, recipe_.file, spec_->place + place);
+      std::string written;
+      for (const GraphResource& r : g_.resources)
+        if (r.name.rfind(producer + ".", 0) == 0) written += (written.empty() ? "" : ", ") + r.name;
+      fail(place, "reads '" + source + "', which is never written (pass '" + producer +
+                      "' writes: " + (written.empty() ? "nothing" : written) + ")");
+    }
+    GraphResource& res = g_.resources[*found];
+    if (res.desc.format != expected)
+      fail(place, "type mismatch: '" + source + "' is " + describe(res.desc) + " but pass type '" +
+                      spec_->type + "' reads " + formatName(expected));
+    if (res.desc.width != g_.frame.width || res.desc.height != g_.frame.height)
+      fail(place, "size mismatch: '" + source + "' is " + describe(res.desc) + ", frame is " +
+                      std::to_string(g_.frame.width) + "x" + std::to_string(g_.frame.height));
+    res.readers.push_back(pass_);
+    g_.passes[pass_].reads.push_back(*found);
+    return *found;
+  }
+
+  ResourceId write(const std::string& output, const ResourceDesc& desc, vec4 fallback) override {
+    const std::string name = g_.passes[pass_].name + "." + output;
+    if (g_.findResource(name)) fail("", "writes '" + name + "' twice");
+    if (desc.width <= 0 || desc.height <= 0 || desc.layers <= 0)
+      fail("", "writes '" + name + "' with an empty size " + describe(desc));
+    GraphResource res{.name = name, .desc = desc, .producer = pass_, .fallback = fallback};
+    g_.resources.push_back(res);
+    const ResourceId id = ResourceId(g_.resources.size() - 1);
+    g_.passes[pass_].writes.push_back(id);
+    return id;
+  }
+
+  ResourceId modify(const std::string& slot, const std::string& output, Format expected) override {
+    const ResourceId in = read(slot, expected);
+    const ResourceId out = write(output, g_.resources[in].desc, g_.resources[in].fallback);
+    g_.resources[out].previous = in;
+    g_.resources[out].version = g_.resources[in].version + 1;
+    return out;
+  }
+
+  void needs(SceneNeed need) override { g_.passes[pass_].needs.push_back(need); }
+  const Scene& scene() const override { return scene_; }
+  const FrameSettings& frame() const override { return g_.frame; }
+  const PassParams& params() const override { return *params_; }
+
+  [[noreturn]] void fail(const std::string& placeSuffix, const std::string& message) const {
+    throw InputError(recipe_.file, spec_->place + placeSuffix,
+                     "pass '" + spec_->name + "' (" + spec_->type + "): " + message);
+  }
+
+ private:
+  CompiledGraph& g_;
+  const Recipe& recipe_;
+  const Scene& scene_;
+  int pass_ = -1;
+  const RecipePass* spec_ = nullptr;
+  PassParams* params_ = nullptr;
+  std::set<std::string> slotsRead_;
+};
+
+// Orders recipe passes so that producers come before consumers; reports a cycle by its path.
+std::vector<int> setupOrder(const Recipe& recipe) {
+  std::map<std::string, int> index;
+  for (std::size_t i = 0; i < recipe.passes.size(); ++i) index[recipe.passes[i].name] = int(i);
+  std::vector<std::vector<std::pair<int, std::string>>> deps(recipe.passes.size());
+  for (std::size_t i = 0; i < recipe.passes.size(); ++i) {
+    for (const auto& [slot, source] : recipe.passes[i].inputs) {
+      const std::string place = recipe.passes[i].place + ".inputs." + slot;
+      const auto [producer, output] = splitResourceName(source, recipe.file, place);
+      auto it = index.find(producer);
+      if (it == index.end())
+        throw InputError(recipe.file, place,
+                         "pass '" + recipe.passes[i].name + "' reads '" + source +
+                             "', but no pass is named '" + producer + "'");
+      deps[i].push_back({it->second, source});
+    }
+  }
+  std::vector<int> order, state(recipe.passes.size(), 0);  // 0 new, 1 on stack, 2 done
+  std::vector<int> stack;
+  std::function<void(int)> visit = [&](int p) {
+    if (state[p] == 2) return;
+    if (state[p] == 1) {
+      std::string path;
+      auto from = std::find(stack.begin(), stack.end(), p);
+      for (auto it = from; it != stack.end(); ++it) path += recipe.passes[*it].name + " -> ";
+      throw InputError(recipe.file, recipe.passes[p].place,
+                       "cycle in the frame graph: " + path + recipe.passes[p].name);
+    }
+    state[p] = 1;
+    stack.push_back(p);
+    for (const auto& [producer, source] : deps[p]) visit(producer);
+    stack.pop_back();
+    state[p] = 2;
+    order.push_back(p);
+  };
+  for (std::size_t i = 0; i < recipe.passes.size(); ++i) visit(int(i));
+  return order;
+}
+
+// Marks passes no requested output needs; scene-culled passes do not pull in their inputs.
+void cullUnrequested(CompiledGraph& g) {
+  std::vector<bool> live(g.passes.size(), false);
+  std::vector<int> work;
+  for (ResourceId out : g.outputs) work.push_back(g.resources[out].producer);
+  while (!work.empty()) {
+    const int p = work.back();
+    work.pop_back();
+    if (live[p] || g.passes[p].culled) continue;
+    live[p] = true;
+    for (ResourceId r : g.passes[p].reads) work.push_back(g.resources[r].producer);
+  }
+  for (std::size_t p = 0; p < g.passes.size(); ++p) {
+    if (!live[p] && !g.passes[p].culled) {
+      g.passes[p].culled = true;
+      g.passes[p].cullReason = "output not requested";
+    }
+  }
+}
+
+// Emits the schedule: live passes in setup order, with transfers and defaults just before the
+// first node that needs them, and a readback for every output that lives on the GPU.
+void schedule(CompiledGraph& g, const std::vector<int>& order) {
+  auto storageFor = [&](ResourceId r, Domain d) {
+    auto key = std::make_pair(r, d);
+    auto it = g.storageOf.find(key);
+    if (it != g.storageOf.end()) return it->second;
+    g.storages.push_back({.resource = r, .domain = d, .desc = g.resources[r].desc});
+    return g.storageOf[key] = int(g.storages.size() - 1);
+  };
+  auto producerLive = [&](ResourceId r) { return !g.passes[g.resources[r].producer].culled; };
+  // Makes resource r available in domain d, scheduling a transfer or default fill if needed.
+  std::function<int(ResourceId, Domain)> ensure = [&](ResourceId r, Domain d) -> int {
+    auto existing = g.storageOf.find({r, d});
+    if (existing != g.storageOf.end()) return existing->second;
+    GraphNode node;
+    node.resource = r;
+    node.domain = d;
+    if (!producerLive(r)) {
+      node.kind = NodeKind::Default;
+      node.name = "default:" + g.resources[r].name;
+    } else {
+      const Domain home = g.passes[g.resources[r].producer].domain;
+      node.kind = d == Domain::Cpu ? NodeKind::Readback : NodeKind::Upload;
+      node.name = std::string(nodeKindName(node.kind)) + ":" + g.resources[r].name;
+      node.storagesRead.push_back(g.storageOf.at({r, home}));
+    }
+    const int s = storageFor(r, d);
+    node.storagesWritten.push_back(s);
+    g.nodes.push_back(node);
+    return s;
+  };
+  for (int p : order) {
+    GraphPass& pass = g.passes[p];
+    if (pass.culled) continue;
+    GraphNode node{.kind = NodeKind::Pass, .name = pass.name, .domain = pass.domain, .pass = p};
+    for (ResourceId r : pass.reads) node.storagesRead.push_back(ensure(r, pass.domain));
+    for (ResourceId w : pass.writes) {
+      const ResourceId prev = g.resources[w].previous;
+      if (prev != kNoResource) {
+        // In-place version: shares the storage of the input it modifies.
+        const int s = g.storageOf.at({prev, pass.domain});
+        g.storageOf[{w, pass.domain}] = s;
+        node.storagesWritten.push_back(s);
+      } else {
+        node.storagesWritten.push_back(storageFor(w, pass.domain));
+      }
+    }
+    g.nodes.push_back(node);
+  }
+  for (ResourceId out : g.outputs) ensure(out, Domain::Cpu);
+}
+
+// A resource modified in place must have no other reader: it would see the new contents.
+void checkInPlaceWrites(const CompiledGraph& g, const Recipe& recipe) {
+  for (const GraphResource& r : g.resources) {
+    if (r.previous == kNoResource) continue;
+    const GraphResource& in = g.resources[r.previous];
+    if (in.readers.size() > 1)
+      throw InputError(recipe.file, "",
+                       "'" + in.name + "' is modified in place by pass '" +
+                           g.passes[r.producer].name + "' but is also read by another pass");
+  }
+}
+
+void computeLifetimesAndPool(CompiledGraph& g) {
+  for (GraphStorage& s : g.storages) s.firstNode = int(g.nodes.size()), s.lastNode = -1;
+  for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+    for (int s : g.nodes[n].storagesWritten) {
+      g.storages[s].firstNode = std::min(g.storages[s].firstNode, int(n));
+      g.storages[s].lastNode = std::max(g.storages[s].lastNode, int(n));
+    }
+    for (int s : g.nodes[n].storagesRead)
+      g.storages[s].lastNode = std::max(g.storages[s].lastNode, int(n));
+  }
+  for (ResourceId out : g.outputs)
+    g.storages[g.storageOf.at({out, Domain::Cpu})].lastNode = int(g.nodes.size());
+  // Greedy interval assignment in order of first use: reuse a slot of the same domain and
+  // description whose previous tenant is dead before this one is born.
+  std::vector<int> byStart(g.storages.size());
+  for (std::size_t i = 0; i < byStart.size(); ++i) byStart[i] = int(i);
+  std::sort(byStart.begin(), byStart.end(),
+            [&](int a, int b) { return g.storages[a].firstNode < g.storages[b].firstNode; });
+  std::vector<int> slotFreeAfter;
+  for (int s : byStart) {
+    GraphStorage& st = g.storages[s];
+    for (std::size_t slot = 0; slot < g.pool.size(); ++slot) {
+      if (g.pool[slot].domain == st.domain && g.pool[slot].desc == st.desc &&
+          slotFreeAfter[slot] < st.firstNode) {
+        st.poolSlot = int(slot);
+        break;
+      }
+    }
+    if (st.poolSlot < 0) {
+      g.pool.push_back({st.domain, st.desc});
+      slotFreeAfter.push_back(-1);
+      st.poolSlot = int(g.pool.size() - 1);
+    }
+    slotFreeAfter[st.poolSlot] = st.lastNode;
+  }
+}
+
+}  // namespace
+
+CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, const Scene& scene,
+                           const FrameSettings& frame,
+                           const std::vector<std::string>& requestedOutputs) {
+  CompiledGraph g;
+  g.recipeFile = recipe.file;
+  g.frame = frame;
+  const std::vector<int> order = setupOrder(recipe);
+
+  for (const RecipePass& spec : recipe.passes) {
+    const PassTypeInfo* info = registry.find(spec.type);
+    if (!info) {
+      std::string known;
+      for (const std::string& n : registry.names()) known += (known.empty() ? "" : ", ") + n;
+      throw InputError(recipe.file, spec.place + ".type",
+                       "unknown pass type '" + spec.type + "' (known: " + known + ")");
+    }
+    GraphPass pass{.name = spec.name, .type = spec.type, .pass = info->create()};
+    pass.domain = pass.pass->domain();
+    g.passes.push_back(std::move(pass));
+  }
+
+  Builder builder(g, recipe, scene);
+  for (int p : order) {
+    const RecipePass& spec = recipe.passes[p];
+    PassParams params(spec.params, recipe.file, spec.place + ".params");
+    builder.bind(p, &spec, &params);
+    g.passes[p].pass->setup(builder);
+    params.rejectUnread(spec.type);
+    for (const auto& [slot, source] : spec.inputs)
+      if (!builder.slotsRead().count(slot))
+        builder.fail(".inputs." + slot, "'" + slot + "' is not an input of this pass type");
+    for (SceneNeed need : g.passes[p].needs) {
+      if (!sceneSatisfies(scene, need)) {
+        g.passes[p].culled = true;
+        g.passes[p].cullReason = missingReason(need);
+        break;
+      }
+    }
+  }
+  checkInPlaceWrites(g, recipe);
+
+  const std::vector<std::string>& wanted =
+      requestedOutputs.empty() ? recipe.outputs : requestedOutputs;
+  for (const std::string& name : wanted) {
+    const auto id = g.findResource(name);
+    if (!id) {
+      std::string known;
+      for (const GraphResource& r : g.resources) known += (known.empty() ? "" : ", ") + r.name;
+      throw InputError(recipe.file, "outputs",
+                       "output '" + name + "' is never written (written: " + known + ")");
+    }
+    g.outputs.push_back(*id);
+  }
+  cullUnrequested(g);
+  schedule(g, order);
+  computeLifetimesAndPool(g);
+  return g;
+}
+
+}  // namespace diptych
