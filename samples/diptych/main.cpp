@@ -1,2 +1,30 @@
+// diptych: the command-line front end. Errors are one line on stderr and a non-zero exit.
+#include <CLI/CLI.hpp>
 #include <cstdio>
-int main() { std::puts("diptych: under construction"); return 0; }
+
+#include "engine/core/error.h"
+#include "samples/diptych/render_command.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Diptych: rasterization tricks beside their exact ray-traced answers"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "diptych 0.1.0");
+  int exitCode = 0;
+  diptych::cli::addRenderCommand(app, exitCode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "diptych: error: %s (see 'diptych --help')\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "diptych: error: %s\n", e.what());
+    return 1;
+  }
+  return exitCode;
+}
