@@ -1,6 +1,8 @@
 #include "engine/rt/shading.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace diptych::shading {

@@ -26,8 +26,10 @@ using glm::vec2;
 using glm::vec3;
 using glm::vec4;
 
-#define in  // GLSL's default parameter qualifier; parameters are by value in C++ too
+#define in                 // GLSL's default parameter qualifier; parameters are by value in C++ too
+#define SHADING_FN inline  // definitions in a header
 #include "shaders/common/shading.glsl"
+#undef SHADING_FN
 #undef in
 
 static_assert(LIGHT_POINT == int(LightType::Point) &&

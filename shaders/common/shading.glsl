@@ -29,12 +29,19 @@
 //  6. Only built-ins that GLM also provides (dot, length, clamp, min, max, abs, sqrt, pow,
 //     inversesqrt, cross, floor, mix); declare every local with its type (no auto), no
 //     recursion, no pointers, no C++ library calls.
-//  7. No GLSL built-in names for our functions (reflect, refract): overloading a built-in
+//  7. Every function definition is prefixed with SHADING_FN (see below).
+//  8. No GLSL built-in names for our functions (reflect, refract): overloading a built-in
 //     with the same signature is an error in GLSL.
-//  8. Every function returns a finite value for any finite input, including zero vectors,
+//  9. Every function returns a finite value for any finite input, including zero vectors,
 //     huge vectors and grazing angles: guard divisions, square roots and pow.
 #ifndef DIPTYCH_SHADING_GLSL
 #define DIPTYCH_SHADING_GLSL
+
+// Every function definition starts with SHADING_FN: nothing in GLSL, "inline" in C++ (the file
+// is included from a header, so C++ needs inline definitions).
+#ifndef SHADING_FN
+#define SHADING_FN
+#endif
 
 // Light types: the values of diptych::LightType (checked by a static_assert on the C++ side).
 const int LIGHT_POINT = 0;
@@ -90,13 +97,13 @@ struct Refraction {
 };
 
 // Largest |component|; 0 for a zero vector, not finite for non-finite input.
-float maxAbsComponent(vec3 v) {
+SHADING_FN float maxAbsComponent(vec3 v) {
   return max(abs(v.x), max(abs(v.y), abs(v.z)));
 }
 
 // Unit vector along v, or the zero vector when v is zero or not finite. Scaling by the largest
 // component first keeps dot(v, v) from overflowing for huge v or underflowing for tiny v.
-vec3 safeNormalize(vec3 v) {
+SHADING_FN vec3 safeNormalize(vec3 v) {
   float m = maxAbsComponent(v);
   if (!(m > 0.0f) || !(m <= SHADING_FLT_MAX)) return vec3(0.0f);
   vec3 s = v / m;
@@ -104,7 +111,7 @@ vec3 safeNormalize(vec3 v) {
 }
 
 // |v| without overflow or underflow of the squares (saturates at SHADING_FLT_MAX).
-float safeLength(vec3 v) {
+SHADING_FN float safeLength(vec3 v) {
   float m = maxAbsComponent(v);
   if (!(m > 0.0f)) return 0.0f;
   if (!(m <= SHADING_FLT_MAX)) return SHADING_FLT_MAX;
@@ -113,13 +120,13 @@ float safeLength(vec3 v) {
 }
 
 // x clamped to [0, 1], with NaN mapped to 0 (GLSL leaves clamp(NaN) undefined).
-float saturate01(float x) {
+SHADING_FN float saturate01(float x) {
   return x > 0.0f ? min(x, 1.0f) : 0.0f;
 }
 
 // base^e for the glossy lobe: negative bases count as 0, negative exponents as 0, 0^0 := 1
 // (the limit of x^0), so pow never sees an argument with an undefined result.
-float safePow(float base, float e) {
+SHADING_FN float safePow(float base, float e) {
   float b = base > 0.0f ? base : 0.0f;
   float x = e > 0.0f ? e : 0.0f;
   if (x == 0.0f) return 1.0f;
@@ -129,7 +136,7 @@ float safePow(float base, float e) {
 
 // Mirror image of d about the line of n: 2 (n.d) n - d. With d pointing away from the surface
 // the result does too (the lecture's r). Equals GLSL reflect(-d, n).
-vec3 reflectAbout(vec3 d, vec3 n) {
+SHADING_FN vec3 reflectAbout(vec3 d, vec3 n) {
   return 2.0f * dot(n, d) * n - d;
 }
 
@@ -141,7 +148,7 @@ vec3 reflectAbout(vec3 d, vec3 n) {
 // i = -rayDirection); n: normal; eta = n_i / n_t (the caller knows which side is inside).
 // n is flipped onto i's side if needed. sin^2 is formed before any square root; eta == 1
 // returns -i exactly; on TIR the mirror direction is returned with the flag set.
-Refraction refractLecture(vec3 i, vec3 n, float eta) {
+SHADING_FN Refraction refractLecture(vec3 i, vec3 n, float eta) {
   vec3 I = safeNormalize(i);
   vec3 N = safeNormalize(n);
   float cosI = clamp(dot(I, N), -1.0f, 1.0f);
@@ -163,7 +170,7 @@ Refraction refractLecture(vec3 i, vec3 n, float eta) {
 //   F = F0 + (1 - F0)(1 - cos)^5,  F0 = ((n1 - n2) / (n1 + n2))^2.
 // cosTheta is the cosine on the optically thinner side (cos(theta_t) when leaving the denser
 // medium); on total internal reflection use 1 for F.
-float fresnelSchlick(float cosTheta, float n1, float n2) {
+SHADING_FN float fresnelSchlick(float cosTheta, float n1, float n2) {
   float sum = n1 + n2;
   float r0 = sum > 0.0f ? (n1 - n2) / sum : 0.0f;
   r0 = r0 * r0;
@@ -182,8 +189,11 @@ float fresnelSchlick(float cosTheta, float n1, float n2) {
 //                (one-sided quad and disc, emitting along direction) or radiance * pi r^2
 //                (sphere); stratified sampling of the surface comes later.
 // range > 0 cuts the light off beyond that distance.
-LightSample sampleLight(ShadingLight light, vec3 p) {
-  vec3 emitted = light.color * max(light.intensity, 0.0f);
+SHADING_FN LightSample sampleLight(ShadingLight light, vec3 p) {
+  // Every product below is of finite, non-negative factors clamped to SHADING_FLT_MAX, so an
+  // overflow saturates instead of becoming inf (or NaN through inf * 0).
+  vec3 emitted = min(light.color * max(light.intensity, 0.0f), vec3(SHADING_FLT_MAX));
+  emitted = max(emitted, vec3(0.0f));
   if (light.type == LIGHT_DIRECTIONAL) {
     vec3 ld = safeNormalize(-light.direction);
     return LightSample(ld, SHADING_FLT_MAX, maxAbsComponent(ld) > 0.0f ? emitted : vec3(0.0f));
@@ -191,30 +201,33 @@ LightSample sampleLight(ShadingLight light, vec3 p) {
   vec3 toLight = light.position - p;
   float d = safeLength(toLight);
   vec3 l = safeNormalize(toLight);
-  if (!(d > 0.0f) || maxAbsComponent(l) == 0.0f) return LightSample(vec3(0.0f), 0.0f, vec3(0.0f));
+  if (!(d > 0.0f) || maxAbsComponent(l) == 0.0f) {
+    return LightSample(vec3(0.0f), 0.0f, vec3(0.0f));
+  }
   if (light.range > 0.0f && d > light.range) return LightSample(l, d, vec3(0.0f));
   float inv = 1.0f / d;
   float falloff = min(inv * inv, SHADING_FLT_MAX);  // inv * inv may overflow to inf
   vec3 axis = safeNormalize(light.direction);
   float cosEmit = dot(axis, -l);  // cosine between the light's axis and the path to p
+  float area = light.area > 0.0f ? min(light.area, SHADING_FLT_MAX) : 0.0f;  // NaN -> 0
   if (light.type == LIGHT_SPOT) {
     // The 0.001 floor is KHR_lights_punctual's own guard for inner == outer.
     float scale = 1.0f / max(0.001f, light.cosInner - light.cosOuter);
     float a = saturate01(cosEmit * scale - light.cosOuter * scale);
     falloff = falloff * a * a;
   } else if (light.type == LIGHT_QUAD_AREA || light.type == LIGHT_DISC_AREA) {
-    falloff = falloff * max(light.area, 0.0f) * saturate01(cosEmit);
+    falloff = min(falloff * area, SHADING_FLT_MAX) * saturate01(cosEmit);
   } else if (light.type == LIGHT_SPHERE_AREA) {
-    falloff = falloff * max(light.area, 0.0f);
+    falloff = min(falloff * area, SHADING_FLT_MAX);
   }
-  vec3 s = min(emitted * min(falloff, SHADING_FLT_MAX), vec3(SHADING_FLT_MAX));
+  vec3 s = min(emitted * falloff, vec3(SHADING_FLT_MAX));
   return LightSample(l, d, s);
 }
 
 // The lecture's DIRECTA: k_a C + k_d C max(0, n.l) + k_s d_i max(0, r.v)^e (see the header for
 // the n.l > 0 gate on the glossy term). n, v, l need not be normalised; zero vectors give 0
 // for the terms that need them.
-vec3 directTerm(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
+SHADING_FN vec3 directTerm(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
   vec3 N = safeNormalize(n);
   vec3 V = safeNormalize(v);
   vec3 L = safeNormalize(l);
@@ -226,17 +239,19 @@ vec3 directTerm(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
 }
 
 // One summand of the lecture's sum: V_i S_i L_dir,i.
-vec3 lightContribution(ShadingMaterial m, vec3 n, vec3 v, LightSample s, float visibility) {
-  return saturate01(visibility) * s.radiance * directTerm(m, n, v, s.l);
+SHADING_FN vec3 lightContribution(ShadingMaterial m, vec3 n, vec3 v, LightSample s,
+                                  float visibility) {
+  vec3 lit = saturate01(visibility) * s.radiance * directTerm(m, n, v, s.l);
+  return min(lit, vec3(SHADING_FLT_MAX));  // S_i near FLT_MAX times a factor > 1 saturates
 }
 
 // M_E + A_G: the terms that do not depend on any light.
-vec3 emittedAndAmbient(ShadingMaterial m, vec3 ambientGlobal) {
+SHADING_FN vec3 emittedAndAmbient(ShadingMaterial m, vec3 ambientGlobal) {
   return m.emission + ambientGlobal;
 }
 
 // k_ps M_PS L_refl + k_t M_T L_trans, given the radiance arriving along r and t.
-vec3 secondaryTerms(ShadingMaterial m, vec3 reflected, vec3 transmitted) {
+SHADING_FN vec3 secondaryTerms(ShadingMaterial m, vec3 reflected, vec3 transmitted) {
   return m.kps * m.mirrorColor * reflected + m.kt * m.transmitColor * transmitted;
 }
 
