@@ -1,0 +1,144 @@
+#include "engine/rt/rt_scene.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "engine/core/error.h"
+
+namespace diptych {
+namespace {
+
+// Rays per stream call. Large enough for Embree to amortise its stream setup, small enough
+// that a tile's RTCRay array (48 bytes each) stays on the stack and TBB can balance tiles.
+constexpr std::size_t kTileRays = 256;
+
+RTCRay makeRay(const vec3& origin, const vec3& direction, float tnear, float tfar) {
+  RTCRay r{};
+  r.org_x = origin.x;
+  r.org_y = origin.y;
+  r.org_z = origin.z;
+  r.dir_x = direction.x;
+  r.dir_y = direction.y;
+  r.dir_z = direction.z;
+  r.tnear = tnear;
+  r.tfar = tfar;
+  r.time = 0.f;
+  r.mask = ~0u;  // ray masks are compiled out of Debian's Embree; set as the docs ask anyway
+  r.flags = 0;
+  return r;
+}
+
+}  // namespace
+
+RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, RtSceneOptions options)
+    : device_(device) {
+  RTCDevice dev = device.handle();
+  scene_ = rtcNewScene(dev);
+  device.check("rtcNewScene");
+  rtcSetSceneBuildQuality(scene_, options.quality);
+  rtcSetSceneFlags(scene_, options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
+
+  for (std::size_t id = 0; id < world.meshes.size(); ++id) {
+    const WorldMesh& mesh = world.meshes[id];
+    const std::size_t triangles = mesh.indices.size() / 3;
+    if (triangles == 0 || mesh.positions.empty()) continue;
+    RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetGeometryBuildQuality(geom, options.quality);
+    // Copied, not shared: Embree requires shared vertex buffers to stay readable 16 bytes past
+    // the last element (an SSE load of the final vec3), which std::vector<vec3> does not
+    // promise. Embree-allocated buffers are padded. The values are bit-identical copies.
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                sizeof(float) * 3, mesh.positions.size()));
+    auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(std::uint32_t) * 3, triangles));
+    device.check("allocating buffers for instance " + std::to_string(id));
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+      vertices[3 * i + 0] = mesh.positions[i].x;
+      vertices[3 * i + 1] = mesh.positions[i].y;
+      vertices[3 * i + 2] = mesh.positions[i].z;
+    }
+    std::memcpy(indices, mesh.indices.data(), sizeof(std::uint32_t) * 3 * triangles);
+    // For the future alpha-mask filter (see the header): the filter looks the mesh up here.
+    rtcSetGeometryUserData(geom, const_cast<WorldMesh*>(&mesh));
+    rtcCommitGeometry(geom);
+    rtcAttachGeometryByID(scene_, geom, unsigned(id));
+    rtcReleaseGeometry(geom);  // the scene holds its own reference
+    device.check("adding instance " + std::to_string(id) + " (" + std::to_string(triangles) +
+                 " triangles)");
+  }
+  rtcCommitScene(scene_);
+  device.check("rtcCommitScene");
+}
+
+RtScene::~RtScene() {
+  if (scene_) rtcReleaseScene(scene_);
+}
+
+std::optional<Hit> RtScene::intersect(const Ray& ray, float tnear, float tfar) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh{};
+  rh.ray = makeRay(ray.origin, ray.direction, tnear, tfar);
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &context, &rh);
+  raysTraced_.fetch_add(1, std::memory_order_relaxed);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  Hit hit;
+  hit.instance = int(rh.hit.geomID);
+  hit.primitive = rh.hit.primID;
+  hit.u = rh.hit.u;
+  hit.v = rh.hit.v;
+  hit.t = rh.ray.tfar;
+  hit.Ng = vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+  return hit;
+}
+
+bool RtScene::occluded(const vec3& origin, const vec3& direction, float tnear, float tfar) const {
+  if (!(tnear <= tfar)) return false;  // inactive, as in the batch API
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray = makeRay(origin, direction, tnear, tfar);
+  rtcOccluded1(scene_, &context, &ray);
+  raysTraced_.fetch_add(1, std::memory_order_relaxed);
+  // Embree sets tfar to -inf on a hit (rtcOccluded1 docs).
+  return ray.tfar < 0.f;
+}
+
+void RtScene::occludedBatch(std::span<const OcclusionRay> rays, std::span<std::uint8_t> out,
+                            bool coherent) const {
+  if (out.size() < rays.size()) throw Error("RtScene::occludedBatch: output span too small");
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), kTileRays),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      RTCIntersectContext context;
+                      rtcInitIntersectContext(&context);
+                      context.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                               : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+                      RTCRay tile[kTileRays];  // RTCRay is RTC_ALIGN(16), as rtcOccluded1M requires
+                      std::uint64_t active = 0;
+                      for (std::size_t begin = range.begin(); begin < range.end();
+                           begin += kTileRays) {
+                        const std::size_t count = std::min(kTileRays, range.end() - begin);
+                        for (std::size_t i = 0; i < count; ++i) {
+                          const OcclusionRay& r = rays[begin + i];
+                          tile[i] = makeRay(r.origin, r.direction, r.tnear, r.tfar);
+                          active += r.tnear <= r.tfar ? 1 : 0;
+                        }
+                        rtcOccluded1M(scene_, &context, tile, unsigned(count), sizeof(RTCRay));
+                        for (std::size_t i = 0; i < count; ++i) {
+                          const OcclusionRay& r = rays[begin + i];
+                          // An inactive ray (tnear > tfar) is untouched by Embree; it reports "not
+                          // occluded".
+                          out[begin + i] = (r.tnear <= r.tfar && tile[i].tfar < 0.f) ? 1 : 0;
+                        }
+                      }
+                      raysTraced_.fetch_add(active, std::memory_order_relaxed);
+                    });
+}
+
+}  // namespace diptych

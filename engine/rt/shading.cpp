@@ -1,0 +1,33 @@
+#include "engine/rt/shading.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace diptych::shading {
+
+ShadingLight toShadingLight(const Light& light) {
+  float area = 0.f;
+  switch (light.type) {
+    case LightType::QuadArea:
+      area = glm::length(glm::cross(light.edgeU, light.edgeV));
+      break;
+    case LightType::DiscArea:
+    case LightType::SphereArea:  // projected area of the sphere, seen from any direction
+      area = std::numbers::pi_v<float> * light.radius * light.radius;
+      break;
+    default:
+      break;
+  }
+  return ShadingLight(int(light.type), light.color, light.intensity, light.position,
+                      light.direction, light.range, std::cos(light.innerConeAngle),
+                      std::cos(light.outerConeAngle), area);
+}
+
+ShadingMaterial toShadingMaterial(const Material& m) {
+  return ShadingMaterial(m.color, m.ka, m.kd, m.ks, m.exponent, m.specularColor, m.kps,
+                         m.mirrorColor, m.kt, m.transmitColor, m.emission, m.ior, m.alpha);
+}
+
+}  // namespace diptych::shading

@@ -1,0 +1,48 @@
+#pragma once
+// The shared shading model (shaders/common/shading.glsl) compiled as C++ through GLM, in
+// namespace diptych::shading, plus converters from the scene's Light and Material.
+// The prelude below is all the C++ side needs; the subset rules are at the top of the .glsl.
+#include <glm/glm.hpp>
+
+#include "engine/scene/scene.h"
+
+namespace diptych::shading {
+
+// GLSL types and built-ins, by name. Using-declarations (not a using-directive) so that only
+// GLM's overloads are found, never a C library function of the same name.
+using glm::abs;
+using glm::clamp;
+using glm::cross;
+using glm::dot;
+using glm::floor;
+using glm::inversesqrt;
+using glm::length;
+using glm::max;
+using glm::min;
+using glm::mix;
+using glm::pow;
+using glm::sqrt;
+using glm::vec2;
+using glm::vec3;
+using glm::vec4;
+
+#define in                 // GLSL's default parameter qualifier; parameters are by value in C++ too
+#define SHADING_FN inline  // definitions in a header
+#include "shaders/common/shading.glsl"
+#undef SHADING_FN
+#undef in
+
+static_assert(LIGHT_POINT == int(LightType::Point) &&
+              LIGHT_DIRECTIONAL == int(LightType::Directional) &&
+              LIGHT_SPOT == int(LightType::Spot) && LIGHT_QUAD_AREA == int(LightType::QuadArea) &&
+              LIGHT_DISC_AREA == int(LightType::DiscArea) &&
+              LIGHT_SPHERE_AREA == int(LightType::SphereArea));
+
+// Flattens a scene light (cone cosines and emitting area precomputed).
+ShadingLight toShadingLight(const Light& light);
+
+// The material's constant parameters; textures and the checker are NOT applied here (see
+// engine/rt/surface.h, which resolves them at a point).
+ShadingMaterial toShadingMaterial(const Material& material);
+
+}  // namespace diptych::shading

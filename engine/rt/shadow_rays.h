@@ -1,0 +1,39 @@
+#pragma once
+// Exact light visibility by shadow rays: the ray-traced producer of the "light visibility"
+// slot (visibility in [0,1] per light per point).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/rt/rt_scene.h"
+#include "engine/scene/scene.h"
+
+namespace diptych {
+
+// A receiver: a point on the world geometry and its unit geometric (face) normal, either side.
+// magnitude: per-axis max |vertex coordinate| of its triangle (SurfacePoint::positionMagnitude);
+// zero means "use the position itself" (the paper's plain offset).
+struct ShadowReceiver {
+  vec3 position{0.f};
+  vec3 geometricNormal{0.f};
+  vec3 magnitude{0.f};
+};
+
+// The shadow ray for one receiver and one light, as traced by traceShadowRays():
+//  - origin: offsetRayOrigin() along the geometric normal, flipped to the light's side (so a
+//    receiver facing away from the light is still traced, from its back side; the shading
+//    term max(0, n.l) decides what it contributes);
+//  - point, spot and area lights (area lights as a point at their centre for now): toward the
+//    light position, stopping short by shadowSegmentTo()'s relative margin;
+//  - directional lights: along -direction with tfar = infinity.
+// A light with castsShadows == false, or a degenerate segment, yields an inactive ray
+// (tnear > tfar), which counts as visible.
+OcclusionRay makeShadowRay(const Light& light, const ShadowReceiver& receiver);
+
+// visibility[l * receivers.size() + p] in {0, 1} for light l and receiver p (fractions once
+// area lights are sampled). One ray per receiver per light, traced in parallel tiles through
+// RtScene::occludedBatch (Embree ray streams, TBB).
+std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lights,
+                                   std::span<const ShadowReceiver> receivers);
+
+}  // namespace diptych

@@ -1,0 +1,41 @@
+#pragma once
+// The shading point of a ray hit: exact position from the same arrays Embree traced, normals,
+// uv, and the material with its textures and checker resolved at the point.
+#include <cstdint>
+
+#include "engine/rt/shading.h"
+#include "engine/scene/world_geometry.h"
+
+namespace diptych {
+
+// What identifies a point on the world geometry: Embree's hit, or a visibility-buffer texel.
+struct SurfaceHit {
+  int instance = -1;
+  std::uint32_t primitive = 0;
+  float u = 0.f, v = 0.f;  // Embree barycentrics
+};
+
+struct SurfacePoint {
+  SurfaceHit hit;
+  vec3 position{0.f};           // interpolatePosition(): bit-identical to what Embree intersected
+  vec3 positionMagnitude{0.f};  // max |vertex coordinate| per axis, for offsetRayOrigin()
+  vec3 faceNormal{0.f};         // unit geometric normal of the CCW front face (unflipped)
+  vec3 geometricNormal{0.f};    // faceNormal flipped to face the incoming ray
+  vec3 shadingNormal{0.f};      // interpolated vertex normal, on the same side as geometricNormal
+  bool frontFacing = true;      // the ray arrived on the front (CCW) side
+  vec2 uv{0.f};
+  int material = -1;                    // index into Scene::materials (-1: default)
+  shading::ShadingMaterial resolved{};  // C with texture/checker, M_E with its texture
+};
+
+// incoming: direction of the ray that found the hit (from the eye toward the surface); only its
+// sign relative to the face matters. A zero vector counts as arriving on the front.
+// Throws Error for an instance or primitive out of range.
+SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit,
+                              const vec3& incoming);
+
+// The material's parameters at uv: C = color * colorTexture (or the checker, which replaces C),
+// alpha = alpha * colorTexture.a, M_E = emission * emissionTexture.
+shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv);
+
+}  // namespace diptych

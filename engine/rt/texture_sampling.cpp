@@ -1,0 +1,96 @@
+#include "engine/rt/texture_sampling.h"
+
+#include <cmath>
+
+namespace diptych {
+namespace {
+
+vec4 texel(const Image& image, int x, int y) {
+  vec4 c(0.f, 0.f, 0.f, 1.f);
+  const int n = image.channels < 4 ? image.channels : 4;
+  for (int k = 0; k < n; ++k) c[k] = image.at(x, y, k);
+  if (image.channels == 1) c = vec4(c.x, c.x, c.x, 1.f);  // grey
+  return c;
+}
+
+// Reduces a texture coordinate to a small range before it is scaled and converted to int, so
+// that huge or non-finite uv cannot overflow the integer conversion. The reduction is by whole
+// periods of the wrap mode, which the wrap leaves unchanged.
+float reduceCoordinate(float t, WrapMode mode) {
+  if (!std::isfinite(t)) return 0.f;
+  switch (mode) {
+    case WrapMode::Repeat:
+      return t - std::floor(t);  // period 1
+    case WrapMode::MirroredRepeat:
+      return t - 2.f * std::floor(0.5f * t);  // period 2
+    case WrapMode::ClampToEdge:
+      return t < -1.f ? -1.f : (t > 2.f ? 2.f : t);
+  }
+  return t;
+}
+
+bool isNearest(FilterMode f) {
+  return f == FilterMode::Nearest || f == FilterMode::NearestMipmapNearest ||
+         f == FilterMode::NearestMipmapLinear;
+}
+
+}  // namespace
+
+int wrapTexel(int i, int size, WrapMode mode) {
+  if (size <= 1) return 0;
+  switch (mode) {
+    case WrapMode::Repeat: {
+      const int m = i % size;
+      return m < 0 ? m + size : m;
+    }
+    case WrapMode::MirroredRepeat: {
+      // Period 2 * size: the image, then its mirror image (GL's mirror(a) on texel indices).
+      int m = i % (2 * size);
+      if (m < 0) m += 2 * size;
+      return m < size ? m : 2 * size - 1 - m;
+    }
+    case WrapMode::ClampToEdge:
+      return i < 0 ? 0 : (i >= size ? size - 1 : i);
+  }
+  return 0;
+}
+
+vec4 sampleNearest(const Image& image, vec2 uv, WrapMode wrapS, WrapMode wrapT) {
+  if (image.empty()) return vec4(1.f);
+  const float u = reduceCoordinate(uv.x, wrapS), v = reduceCoordinate(uv.y, wrapT);
+  const int x = wrapTexel(int(std::floor(u * float(image.width))), image.width, wrapS);
+  const int y = wrapTexel(int(std::floor(v * float(image.height))), image.height, wrapT);
+  return texel(image, x, y);
+}
+
+vec4 sampleBilinear(const Image& image, vec2 uv, WrapMode wrapS, WrapMode wrapT) {
+  if (image.empty()) return vec4(1.f);
+  const float u = reduceCoordinate(uv.x, wrapS), v = reduceCoordinate(uv.y, wrapT);
+  // Position in texel units relative to texel centres.
+  const float x = u * float(image.width) - 0.5f, y = v * float(image.height) - 0.5f;
+  const float x0f = std::floor(x), y0f = std::floor(y);
+  const float fx = x - x0f, fy = y - y0f;
+  const int x0 = int(x0f), y0 = int(y0f);
+  const int xa = wrapTexel(x0, image.width, wrapS), xb = wrapTexel(x0 + 1, image.width, wrapS);
+  const int ya = wrapTexel(y0, image.height, wrapT), yb = wrapTexel(y0 + 1, image.height, wrapT);
+  const vec4 top = glm::mix(texel(image, xa, ya), texel(image, xb, ya), fx);
+  const vec4 bottom = glm::mix(texel(image, xa, yb), texel(image, xb, yb), fx);
+  return glm::mix(top, bottom, fy);
+}
+
+vec4 sampleTexture(const Texture& texture, vec2 uv, bool minifying) {
+  const FilterMode f = minifying ? texture.minFilter : texture.magFilter;
+  return isNearest(f) ? sampleNearest(texture.image, uv, texture.wrapS, texture.wrapT)
+                      : sampleBilinear(texture.image, uv, texture.wrapS, texture.wrapT);
+}
+
+vec3 checkerColor(const Checker& checker, vec2 uv) {
+  const double a = std::floor(double(uv.x) * checker.scale);
+  const double b = std::floor(double(uv.y) * checker.scale);
+  if (!std::isfinite(a) || !std::isfinite(b)) return checker.colorA;
+  // fmod of the sum by 2 in double: exact for the integers a float uv can produce.
+  const double parity = std::fmod(std::fabs(a + b), 2.0);
+  return parity == 0.0 ? checker.colorA : checker.colorB;
+}
+
+}  // namespace diptych

@@ -1,0 +1,258 @@
+// shading.glsl: the lecture's extended local illumination model (Tema 5, "Un M.I.L. extendido
+// para Ray-Tracing", functions EVALUAMILREC and DIRECTA), written once for GLSL 4.50 and C++.
+//
+//   L = M_E + A_G + sum_i V_i S_i L_dir,i + k_ps M_PS L_refl + k_t M_T L_trans
+//   L_dir = k_a C + k_d C max(0, n.l) + k_s d_i max(0, r.v)^e
+//
+// Symbols (units follow glTF KHR_lights_punctual; see docs/ray-tracing.md):
+//   n  unit shading normal; v unit vector toward the viewer; l unit vector toward the light.
+//   r  = 2 (n.l) n - l, the reflection of l about n (GLSL reflect(-l, n)). The lecture calls r
+//      "the reflected vector, depending on v and n"; reflecting v instead gives the same r.v
+//      (both equal 2 (n.l)(n.v) - l.v), so the choice does not change a value.
+//   C colour, k_a/k_d/k_s coefficients, e exponent, d_i specular colour, M_E emission,
+//   A_G global ambient radiance, S_i light radiance at the point, V_i visibility in [0,1].
+//
+// Deviation from the lecture, on purpose: the k_s term is only added when n.l > 0. As printed,
+// DIRECTA gives a highlight for a light below the tangent plane (r.v can be positive there);
+// the lecture itself says a source that does not illuminate the point adds nothing.
+//
+// ---- Subset rules: this file must stay valid GLSL 4.50 AND valid C++20 through GLM ----
+//  1. No #version, no #include, no uniforms/in/out variables: the including program adds
+//     those. An include guard (#ifndef) is fine in both languages.
+//  2. Float literals carry the f suffix (1.0f): a plain 1.0 is a double in C++ and breaks
+//     GLM's template deduction (max(0.0, x) does not compile).
+//  3. No swizzles at all (GLM_FORCE_XYZW_ONLY); use .x .y .z members and constructors.
+//  4. Parameters are by value with no qualifier ("in" is allowed; C++ defines it away).
+//     No out/inout parameters: return a struct instead (C++ cannot map "out T x" to "T& x").
+//  5. Structs are built with constructor syntax in declaration order, LightSample(l, d, s):
+//     a GLSL struct constructor and a C++20 parenthesised aggregate initialisation.
+//  6. Only built-ins that GLM also provides (dot, length, clamp, min, max, abs, sqrt, pow,
+//     inversesqrt, cross, floor, mix); declare every local with its type (no auto), no
+//     recursion, no pointers, no C++ library calls.
+//  7. Every function definition is prefixed with SHADING_FN (see below).
+//  8. No GLSL built-in names for our functions (reflect, refract): overloading a built-in
+//     with the same signature is an error in GLSL.
+//  9. Every function returns a finite value for any finite input, including zero vectors,
+//     huge vectors and grazing angles: guard divisions, square roots and pow.
+#ifndef DIPTYCH_SHADING_GLSL
+#define DIPTYCH_SHADING_GLSL
+
+// Every function definition starts with SHADING_FN: nothing in GLSL, "inline" in C++ (the file
+// is included from a header, so C++ needs inline definitions).
+#ifndef SHADING_FN
+#define SHADING_FN
+#endif
+
+// Light types: the values of diptych::LightType (checked by a static_assert on the C++ side).
+const int LIGHT_POINT = 0;
+const int LIGHT_DIRECTIONAL = 1;
+const int LIGHT_SPOT = 2;
+const int LIGHT_QUAD_AREA = 3;
+const int LIGHT_DISC_AREA = 4;
+const int LIGHT_SPHERE_AREA = 5;
+
+const float SHADING_FLT_MAX = 3.402823466e+38f;
+const float SHADING_PI = 3.14159265358979f;
+
+// A material with every texture already resolved at the point.
+struct ShadingMaterial {
+  vec3 color;          // C (linear RGB)
+  float ka;            // ambient coefficient (scaled by each light's S_i, as in the lecture)
+  float kd;            // diffuse coefficient
+  float ks;            // glossy coefficient
+  float exponent;      // e; < 0 is treated as 0, and 0^0 := 1
+  vec3 specularColor;  // d_i
+  float kps;           // perfect-mirror fraction
+  vec3 mirrorColor;    // M_PS
+  float kt;            // transmitted fraction
+  vec3 transmitColor;  // M_T
+  vec3 emission;       // M_E, radiance
+  float ior;           // index of refraction of the inside
+  float alpha;         // coverage
+};
+
+// One light, flattened from diptych::Light.
+struct ShadingLight {
+  int type;         // LIGHT_*
+  vec3 color;       // linear RGB
+  float intensity;  // cd (point, spot), lux (directional), radiance (area lights)
+  vec3 position;    // world space
+  vec3 direction;   // the direction the light travels (directional, spot, area normal)
+  float range;      // > 0: hard cut-off distance; 0: infinite
+  float cosInner;   // spot: cos(innerConeAngle)
+  float cosOuter;   // spot: cos(outerConeAngle)
+  float area;       // area lights: emitting area (sphere: projected area pi r^2)
+};
+
+// Direction and radiance of one light at one point.
+struct LightSample {
+  vec3 l;          // unit, toward the light; zero when undefined (point on the light)
+  float distance;  // to the light's position; SHADING_FLT_MAX for directional lights
+  vec3 radiance;   // S_i, finite, >= 0
+};
+
+struct Refraction {
+  vec3 t;                        // unit transmitted direction (mirror direction on TIR)
+  bool totalInternalReflection;  // true: no transmitted ray exists
+};
+
+// Largest |component|; 0 for a zero vector, not finite for non-finite input.
+SHADING_FN float maxAbsComponent(vec3 v) {
+  return max(abs(v.x), max(abs(v.y), abs(v.z)));
+}
+
+// Unit vector along v, or the zero vector when v is zero or not finite. Scaling by the largest
+// component first keeps dot(v, v) from overflowing for huge v or underflowing for tiny v.
+SHADING_FN vec3 safeNormalize(vec3 v) {
+  float m = maxAbsComponent(v);
+  if (!(m > 0.0f) || !(m <= SHADING_FLT_MAX)) return vec3(0.0f);
+  vec3 s = v / m;
+  return s * inversesqrt(dot(s, s));
+}
+
+// |v| without overflow or underflow of the squares (saturates at SHADING_FLT_MAX).
+SHADING_FN float safeLength(vec3 v) {
+  float m = maxAbsComponent(v);
+  if (!(m > 0.0f)) return 0.0f;
+  if (!(m <= SHADING_FLT_MAX)) return SHADING_FLT_MAX;
+  vec3 s = v / m;
+  return min(m * sqrt(dot(s, s)), SHADING_FLT_MAX);
+}
+
+// x clamped to [0, 1], with NaN mapped to 0 (GLSL leaves clamp(NaN) undefined).
+SHADING_FN float saturate01(float x) {
+  return x > 0.0f ? min(x, 1.0f) : 0.0f;
+}
+
+// base^e for the glossy lobe: negative bases count as 0, negative exponents as 0, 0^0 := 1
+// (the limit of x^0), so pow never sees an argument with an undefined result.
+SHADING_FN float safePow(float base, float e) {
+  float b = base > 0.0f ? base : 0.0f;
+  float x = e > 0.0f ? e : 0.0f;
+  if (x == 0.0f) return 1.0f;
+  if (b == 0.0f) return 0.0f;
+  return min(pow(b, x), SHADING_FLT_MAX);
+}
+
+// Mirror image of d about the line of n: 2 (n.d) n - d. With d pointing away from the surface
+// the result does too (the lecture's r). Equals GLSL reflect(-d, n).
+SHADING_FN vec3 reflectAbout(vec3 d, vec3 n) {
+  return 2.0f * dot(n, d) * n - d;
+}
+
+// The lecture's refraction (Tema 5, "Cambio de dirección en la refracción"):
+//   t = (r cos(theta_i) - cos(theta_t)) n - r i,  r = n_i / n_t,
+//   cos(theta_t) = sqrt(1 - r^2 (1 - (i.n)^2)); total internal reflection when the radicand
+//   would be negative, i.e. when sin^2(theta_t) = r^2 sin^2(theta_i) > 1.
+// i: unit vector from the point toward where the light comes from (for a camera ray,
+// i = -rayDirection); n: normal; eta = n_i / n_t (the caller knows which side is inside).
+// n is flipped onto i's side if needed. sin^2 is formed before any square root; eta == 1
+// returns -i exactly; on TIR the mirror direction is returned with the flag set.
+SHADING_FN Refraction refractLecture(vec3 i, vec3 n, float eta) {
+  vec3 I = safeNormalize(i);
+  vec3 N = safeNormalize(n);
+  float cosI = clamp(dot(I, N), -1.0f, 1.0f);
+  if (cosI < 0.0f) {
+    N = -N;
+    cosI = -cosI;
+  }
+  if (eta == 1.0f || !(eta > 0.0f) || !(eta <= SHADING_FLT_MAX)) return Refraction(-I, false);
+  // (1 - c)(1 + c) keeps sin^2 accurate near normal incidence, where 1 - c*c cancels.
+  float sin2I = max(0.0f, (1.0f - cosI) * (1.0f + cosI));
+  float sin2T = eta * eta * sin2I;
+  if (sin2T > 1.0f) return Refraction(reflectAbout(I, N), true);
+  float cosT = sqrt(1.0f - sin2T);
+  return Refraction(safeNormalize((eta * cosI - cosT) * N - eta * I), false);
+}
+
+// Schlick's approximation of the Fresnel reflectance between media n1 and n2
+// (C. Schlick, "An Inexpensive BRDF Model for Physically-based Rendering", 1994):
+//   F = F0 + (1 - F0)(1 - cos)^5,  F0 = ((n1 - n2) / (n1 + n2))^2.
+// cosTheta is the cosine on the optically thinner side (cos(theta_t) when leaving the denser
+// medium); on total internal reflection use 1 for F.
+SHADING_FN float fresnelSchlick(float cosTheta, float n1, float n2) {
+  float sum = n1 + n2;
+  float r0 = sum > 0.0f ? (n1 - n2) / sum : 0.0f;
+  r0 = r0 * r0;
+  float c = 1.0f - saturate01(cosTheta);
+  float c2 = c * c;
+  return r0 + (1.0f - r0) * c2 * c2 * c;
+}
+
+// Direction l and radiance S_i of a light at point p.
+//   directional: l = -direction, S = color * intensity (lux)
+//   point:       S = color * intensity / d^2 (cd / m^2)
+//   spot:        point times the KHR_lights_punctual smooth cone factor
+//                a = saturate(cd * scale + offset)^2, scale = 1 / max(0.001, cosInner -
+//                cosOuter), offset = -cosOuter * scale, cd = dot(direction, -l)
+//   area lights: for now a point at the centre with intensity radiance * area * cosine
+//                (one-sided quad and disc, emitting along direction) or radiance * pi r^2
+//                (sphere); stratified sampling of the surface comes later.
+// range > 0 cuts the light off beyond that distance.
+SHADING_FN LightSample sampleLight(ShadingLight light, vec3 p) {
+  // Every product below is of finite, non-negative factors clamped to SHADING_FLT_MAX, so an
+  // overflow saturates instead of becoming inf (or NaN through inf * 0).
+  vec3 emitted = min(light.color * max(light.intensity, 0.0f), vec3(SHADING_FLT_MAX));
+  emitted = max(emitted, vec3(0.0f));
+  if (light.type == LIGHT_DIRECTIONAL) {
+    vec3 ld = safeNormalize(-light.direction);
+    return LightSample(ld, SHADING_FLT_MAX, maxAbsComponent(ld) > 0.0f ? emitted : vec3(0.0f));
+  }
+  vec3 toLight = light.position - p;
+  float d = safeLength(toLight);
+  vec3 l = safeNormalize(toLight);
+  if (!(d > 0.0f) || maxAbsComponent(l) == 0.0f) {
+    return LightSample(vec3(0.0f), 0.0f, vec3(0.0f));
+  }
+  if (light.range > 0.0f && d > light.range) return LightSample(l, d, vec3(0.0f));
+  float inv = 1.0f / d;
+  float falloff = min(inv * inv, SHADING_FLT_MAX);  // inv * inv may overflow to inf
+  vec3 axis = safeNormalize(light.direction);
+  float cosEmit = dot(axis, -l);  // cosine between the light's axis and the path to p
+  float area = light.area > 0.0f ? min(light.area, SHADING_FLT_MAX) : 0.0f;  // NaN -> 0
+  if (light.type == LIGHT_SPOT) {
+    // The 0.001 floor is KHR_lights_punctual's own guard for inner == outer.
+    float scale = 1.0f / max(0.001f, light.cosInner - light.cosOuter);
+    float a = saturate01(cosEmit * scale - light.cosOuter * scale);
+    falloff = falloff * a * a;
+  } else if (light.type == LIGHT_QUAD_AREA || light.type == LIGHT_DISC_AREA) {
+    falloff = min(falloff * area, SHADING_FLT_MAX) * saturate01(cosEmit);
+  } else if (light.type == LIGHT_SPHERE_AREA) {
+    falloff = min(falloff * area, SHADING_FLT_MAX);
+  }
+  vec3 s = min(emitted * falloff, vec3(SHADING_FLT_MAX));
+  return LightSample(l, d, s);
+}
+
+// The lecture's DIRECTA: k_a C + k_d C max(0, n.l) + k_s d_i max(0, r.v)^e (see the header for
+// the n.l > 0 gate on the glossy term). n, v, l need not be normalised; zero vectors give 0
+// for the terms that need them.
+SHADING_FN vec3 directTerm(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
+  vec3 N = safeNormalize(n);
+  vec3 V = safeNormalize(v);
+  vec3 L = safeNormalize(l);
+  float nl = saturate01(dot(N, L));
+  vec3 r = reflectAbout(L, N);
+  float rv = saturate01(dot(r, V));
+  float glossy = nl > 0.0f ? safePow(rv, m.exponent) : 0.0f;
+  return m.ka * m.color + m.kd * m.color * nl + m.ks * m.specularColor * glossy;
+}
+
+// One summand of the lecture's sum: V_i S_i L_dir,i.
+SHADING_FN vec3 lightContribution(ShadingMaterial m, vec3 n, vec3 v, LightSample s,
+                                  float visibility) {
+  vec3 lit = saturate01(visibility) * s.radiance * directTerm(m, n, v, s.l);
+  return min(lit, vec3(SHADING_FLT_MAX));  // S_i near FLT_MAX times a factor > 1 saturates
+}
+
+// M_E + A_G: the terms that do not depend on any light.
+SHADING_FN vec3 emittedAndAmbient(ShadingMaterial m, vec3 ambientGlobal) {
+  return m.emission + ambientGlobal;
+}
+
+// k_ps M_PS L_refl + k_t M_T L_trans, given the radiance arriving along r and t.
+SHADING_FN vec3 secondaryTerms(ShadingMaterial m, vec3 reflected, vec3 transmitted) {
+  return m.kps * m.mirrorColor * reflected + m.kt * m.transmitColor * transmitted;
+}
+
+#endif  // DIPTYCH_SHADING_GLSL
