@@ -3,21 +3,38 @@
 // the Embree scene and GL buffers built from them on first use (so a frame that needs no ray
 // tracing never builds a BVH, and a CPU-only frame never touches OpenGL).
 #include <memory>
+#include <mutex>
 
+#include "engine/rt/rt_device.h"
+#include "engine/rt/rt_scene.h"
 #include "engine/scene/scene.h"
 #include "engine/scene/world_geometry.h"
 
 namespace diptych {
 
+namespace gl {
+class GlContext;
+class GlSceneBuffers;
+}  // namespace gl
+
 class RenderWorld {
  public:
-  explicit RenderWorld(const Scene& scene) : scene_(scene), world_(flattenScene(scene)) {}
+  // `context` may be null for CPU-only frames; it must outlive this object.
+  explicit RenderWorld(const Scene& scene, gl::GlContext* context = nullptr);
+  ~RenderWorld();
   const Scene& scene() const { return scene_; }
   const WorldGeometry& geometry() const { return world_; }
+  const RtScene& rtScene();               // Embree BVH, built on first call
+  const gl::GlSceneBuffers& glScene();    // uploaded on first call; needs a context
+  gl::GlContext& glContext();             // throws Error when there is none
 
  private:
   const Scene& scene_;
   WorldGeometry world_;
+  gl::GlContext* context_ = nullptr;
+  std::unique_ptr<RtDevice> device_;
+  std::unique_ptr<RtScene> rt_;
+  std::unique_ptr<gl::GlSceneBuffers> glScene_;
 };
 
 }  // namespace diptych

@@ -1,0 +1,57 @@
+#include "passes/rt/rt_shadows.h"
+
+#include <tbb/parallel_for.h>
+
+#include "engine/graph/render_world.h"
+#include "engine/rt/ray_offset.h"
+#include "engine/rt/shadow_rays.h"
+#include "passes/common/visibility_texel.h"
+
+namespace diptych {
+
+void RtShadowsPass::setup(PassBuilder& b) {
+  b.needs(SceneNeed::ShadowCastingLight);
+  gbuffer_ = b.read("visibility", Format::RGBA32UI);
+  const int layers = std::max<int>(1, int(b.scene().lights.size()));
+  visibility_ = b.write("visibility", {Format::R32F, b.frame().width, b.frame().height, layers}, vec4(1.f));
+}
+
+void RtShadowsPass::execute(PassContext& c) {
+  RenderWorld& world = c.world();
+  const Surface& gbuffer = c.cpuRead(gbuffer_);
+  Surface& out = c.cpuWrite(visibility_);
+  const int w = gbuffer.desc.width, h = gbuffer.desc.height;
+  const auto& lights = world.scene().lights;
+  const RtScene& rt = world.rtScene();
+
+  // Receivers for covered pixels only; background pixels stay fully visible.
+  std::vector<int> pixelOf;
+  std::vector<ShadowReceiver> receivers;
+  pixelOf.reserve(std::size_t(w) * h);
+  receivers.reserve(std::size_t(w) * h);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const auto hit = visibilityTexel(gbuffer, x, y);
+      if (!hit) continue;
+      const WorldMesh& mesh = world.geometry().meshes.at(hit->instance);
+      const std::uint32_t* tri = &mesh.indices.at(3 * std::size_t(hit->primitive));
+      receivers.push_back({interpolatePosition(mesh, hit->primitive, hit->u, hit->v),
+                           geometricNormal(mesh, hit->primitive),
+                           vertexMagnitude(mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                           mesh.positions[tri[2]])});
+      pixelOf.push_back(y * w + x);
+    }
+  }
+  const std::vector<float> visibility = traceShadowRays(rt, lights, receivers);
+  out.fill(vec4(1.f));
+  const std::size_t n = receivers.size();
+  tbb::parallel_for(std::size_t(0), lights.size(), [&](std::size_t l) {
+    for (std::size_t i = 0; i < n; ++i)
+      out.setF(pixelOf[i] % w, pixelOf[i] / w, 0, visibility[l * n + i], int(l));
+  });
+  std::size_t active = 0;
+  for (const Light& light : lights) active += light.castsShadows ? n : 0;
+  c.count("rays", double(active));
+}
+
+}  // namespace diptych

@@ -1,0 +1,63 @@
+#include "passes/rt/shade.h"
+
+#include <tbb/parallel_for.h>
+
+#include "engine/graph/render_world.h"
+#include "engine/rt/shading.h"
+#include "engine/scene/camera_math.h"
+#include "engine/scene/environment.h"
+#include "passes/common/visibility_texel.h"
+
+namespace diptych {
+
+void ShadePass::setup(PassBuilder& b) {
+  const int w = b.frame().width, h = b.frame().height;
+  gbuffer_ = b.read("visibility", Format::RGBA32UI);
+  lightVisibility_ = b.readOptional("light_visibility", Format::R32F);
+  reflection_ = b.readOptional("reflection", Format::RGBA32F);
+  transmission_ = b.readOptional("transmission", Format::RGBA32F);
+  color_ = b.write("color", {Format::RGBA32F, w, h}, vec4(0.f, 0.f, 0.f, 1.f));
+}
+
+void ShadePass::execute(PassContext& c) {
+  RenderWorld& world = c.world();
+  const Scene& scene = world.scene();
+  const FrameSettings& frame = c.frame();
+  const Surface& gbuffer = c.cpuRead(gbuffer_);
+  const Surface* visibility = lightVisibility_ == kNoResource ? nullptr : &c.cpuRead(lightVisibility_);
+  const Surface* reflection = reflection_ == kNoResource ? nullptr : &c.cpuRead(reflection_);
+  const Surface* transmission = transmission_ == kNoResource ? nullptr : &c.cpuRead(transmission_);
+  Surface& out = c.cpuWrite(color_);
+
+  std::vector<shading::ShadingLight> lights;
+  for (const Light& l : scene.lights) lights.push_back(shading::toShadingLight(l));
+  const int visibilityLayers = visibility ? visibility->desc.layers : 0;
+  auto rgb = [](const Surface* s, int x, int y) {
+    return s ? vec3(s->f(x, y, 0), s->f(x, y, 1), s->f(x, y, 2)) : vec3(0.f);
+  };
+
+  tbb::parallel_for(0, frame.height, [&](int y) {
+    for (int x = 0; x < frame.width; ++x) {
+      const Ray eye = primaryRay(frame.camera, frame.width, frame.height, x + 0.5f, y + 0.5f);
+      const auto hit = visibilityTexel(gbuffer, x, y);
+      vec3 radiance;
+      if (!hit) {
+        radiance = sampleEnvironment(scene.environment, eye.direction);
+      } else {
+        const SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
+        const vec3 v = -eye.direction;
+        radiance = shading::emittedAndAmbient(sp.resolved, scene.ambient);
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+          const float vis = int(i) < visibilityLayers ? visibility->f(x, y, 0, int(i)) : 1.f;
+          const shading::LightSample s = shading::sampleLight(lights[i], sp.position);
+          radiance += shading::lightContribution(sp.resolved, sp.shadingNormal, v, s, vis);
+        }
+        radiance += shading::secondaryTerms(sp.resolved, rgb(reflection, x, y), rgb(transmission, x, y));
+      }
+      for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, radiance[ch]);
+      out.setF(x, y, 3, 1.f);
+    }
+  });
+}
+
+}  // namespace diptych
