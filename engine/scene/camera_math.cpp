@@ -2,7 +2,9 @@
 
 namespace diptych {
 
-mat4 viewMatrix(const Camera& c) { return glm::lookAt(c.position, c.target, c.up); }
+mat4 viewMatrix(const Camera& c) {
+  return glm::lookAt(c.position, c.target, c.up);
+}
 
 mat4 reversedZProjection(const Camera& c, float aspect) {
   const float f = 1.f / std::tan(0.5f * c.verticalFov);

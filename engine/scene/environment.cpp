@@ -56,7 +56,8 @@ vec3 sampleEnvironment(const Environment& env, const vec3& direction) {
   if (!(len > 0.f) || !std::isfinite(len)) return vec3(0.f);
   const vec3 d = direction / len;
   switch (env.type) {
-    case EnvironmentType::Color: return env.color * env.intensity;
+    case EnvironmentType::Color:
+      return env.color * env.intensity;
     case EnvironmentType::Equirect: {
       const Image& img = env.equirect;
       if (img.empty()) return vec3(0.f);

@@ -41,8 +41,8 @@ float positive(JsonObject& o, const std::string& key, float fallback) {
 int segmentCount(JsonObject& o, const std::string& key, int fallback, int minimum) {
   const int n = o.integer(key).value_or(fallback);
   if (n < minimum || n > kMaxSegments)
-    o.fail(key, "must be between " + std::to_string(minimum) + " and " +
-                    std::to_string(kMaxSegments));
+    o.fail(key,
+           "must be between " + std::to_string(minimum) + " and " + std::to_string(kMaxSegments));
   return n;
 }
 
@@ -60,8 +60,8 @@ ivec2 segmentPair(JsonObject& o, const std::string& key, ivec2 fallback, ivec2 m
     o.fail(key, "expected an integer or [integer, integer]");
   }
   if (glm::any(glm::lessThan(out, minimum)) || glm::any(glm::greaterThan(out, ivec2(kMaxSegments))))
-    o.fail(key, "must be between " + std::to_string(minimum.x) + " and " +
-                    std::to_string(kMaxSegments));
+    o.fail(key,
+           "must be between " + std::to_string(minimum.x) + " and " + std::to_string(kMaxSegments));
   return out;
 }
 
@@ -192,8 +192,8 @@ Light readLight(JsonObject o) {
     l.position = o.requiredVector3("position");
     l.radius = positive(o, "radius", 0.f);
   } else {
-    o.fail("type", "unknown light type '" + type +
-                       "' (point, directional, spot, quad, disc, sphere)");
+    o.fail("type",
+           "unknown light type '" + type + "' (point, directional, spot, quad, disc, sphere)");
   }
   o.rejectUnknownKeys();
   return l;
@@ -255,7 +255,8 @@ Mesh readShape(JsonObject& o, const std::string& type, const Context& ctx) {
     if (!corners || !corners->is_array() || corners->size() != 4)
       o.fail("corners", "expected 4 corner points [[x,y,z], ...]");
     std::array<vec3, 4> p;
-    for (int i = 0; i < 4; ++i) p[i] = toVector3((*corners)[i], indexed(o.pathOf("corners"), i), ctx.file);
+    for (int i = 0; i < 4; ++i)
+      p[i] = toVector3((*corners)[i], indexed(o.pathOf("corners"), i), ctx.file);
     return makeQuad(p);
   }
   if (type == "box") {
@@ -268,7 +269,8 @@ Mesh readShape(JsonObject& o, const std::string& type, const Context& ctx) {
     const ivec2 seg = segmentPair(o, "segments", ivec2(64, 32), ivec2(3, 2));
     return makeUvSphere(radius, seg.x, seg.y);
   }
-  if (type == "disc") return makeDisc(positive(o, "radius", 1.f), segmentCount(o, "segments", 64, 3));
+  if (type == "disc")
+    return makeDisc(positive(o, "radius", 1.f), segmentCount(o, "segments", 64, 3));
   if (type == "cylinder" || type == "cone") {
     const float radius = positive(o, "radius", 1.f), height = positive(o, "height", 1.f);
     const int slices = segmentCount(o, "segments", 64, 3);

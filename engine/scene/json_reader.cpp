@@ -4,11 +4,12 @@
 
 namespace diptych::jsonread {
 
-std::string describeType(const json& v) { return v.type_name(); }
+std::string describeType(const json& v) {
+  return v.type_name();
+}
 
 float toNumber(const json& v, const std::string& path, const std::string& file) {
-  if (!v.is_number())
-    throw InputError(file, path, "expected a number, found " + describeType(v));
+  if (!v.is_number()) throw InputError(file, path, "expected a number, found " + describeType(v));
   // nlohmann parses an overflowing literal such as 1e999 to +inf; a double that does not fit a
   // float is just as unusable.
   const double d = v.get<double>();
@@ -22,9 +23,10 @@ namespace {
 template <int N>
 glm::vec<N, float> toVector(const json& v, const std::string& path, const std::string& file) {
   if (!v.is_array() || v.size() != N)
-    throw InputError(file, path,
-                     "expected an array of " + std::to_string(N) + " numbers, found " +
-                         (v.is_array() ? "an array of " + std::to_string(v.size()) : describeType(v)));
+    throw InputError(
+        file, path,
+        "expected an array of " + std::to_string(N) + " numbers, found " +
+            (v.is_array() ? "an array of " + std::to_string(v.size()) : describeType(v)));
   glm::vec<N, float> out;
   for (int i = 0; i < N; ++i) out[i] = toNumber(v[i], path + "[" + std::to_string(i) + "]", file);
   return out;

@@ -18,8 +18,8 @@ Scene loadScene(const std::filesystem::path& path) {
   else if (ext == ".json")
     scene = loadJsonSceneUnvalidated(path);
   else
-    throw InputError(path.string(), "", "unknown scene format '" + ext +
-                                            "' (expected .gltf, .glb or .json)");
+    throw InputError(path.string(), "",
+                     "unknown scene format '" + ext + "' (expected .gltf, .glb or .json)");
   scene.sourcePath = path.string();
   // Frame the geometry before validating so that the automatic camera is checked too.
   if (!scene.hasCamera) {

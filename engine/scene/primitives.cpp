@@ -20,7 +20,9 @@ void addTriangle(Mesh& m, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
 
 // Direction in the xz plane at angle phi, turning counter-clockwise seen from +y, so that the
 // ring orders below give outward-facing counter-clockwise triangles.
-vec3 around(float phi) { return vec3(std::cos(phi), 0.f, -std::sin(phi)); }
+vec3 around(float phi) {
+  return vec3(std::cos(phi), 0.f, -std::sin(phi));
+}
 
 // Fan of `slices` triangles closing a circle at height y, facing +y (up) or -y.
 void addCap(Mesh& m, float radius, float y, int slices, bool up) {
@@ -29,7 +31,8 @@ void addCap(Mesh& m, float radius, float y, int slices, bool up) {
   const std::uint32_t first = std::uint32_t(m.positions.size());
   for (int i = 0; i <= slices; ++i) {
     const vec3 d = around(2.f * kPi * float(i) / float(slices));
-    addVertex(m, vec3(0.f, y, 0.f) + radius * d, normal, vec2(0.5f + 0.5f * d.x, 0.5f + 0.5f * d.z));
+    addVertex(m, vec3(0.f, y, 0.f) + radius * d, normal,
+              vec2(0.5f + 0.5f * d.x, 0.5f + 0.5f * d.z));
   }
   for (int i = 0; i < slices; ++i) {
     if (up)
@@ -89,8 +92,7 @@ Mesh makeBox(vec3 size) {
     const vec3 v = glm::cross(n, u);
     const std::uint32_t base = std::uint32_t(m.positions.size());
     const vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-    for (const vec2& c : corners)
-      addVertex(m, h * (n + c.x * u + c.y * v), n, 0.5f * (c + 1.f));
+    for (const vec2& c : corners) addVertex(m, h * (n + c.x * u + c.y * v), n, 0.5f * (c + 1.f));
     addTriangle(m, base, base + 1, base + 2);
     addTriangle(m, base, base + 2, base + 3);
   }
@@ -141,7 +143,8 @@ Mesh makeCylinder(float radius, float height, int slices, bool capped) {
     addVertex(m, radius * d + vec3(0, y1, 0), d, vec2(u, 1.f));
   }
   for (int i = 0; i < slices; ++i) {
-    const std::uint32_t bottom = 2 * i, top = bottom + 1, nextBottom = bottom + 2, nextTop = bottom + 3;
+    const std::uint32_t bottom = 2 * i, top = bottom + 1, nextBottom = bottom + 2,
+                        nextTop = bottom + 3;
     addTriangle(m, bottom, nextBottom, nextTop);
     addTriangle(m, bottom, nextTop, top);
   }
@@ -164,10 +167,12 @@ Mesh makeCone(float radius, float height, int slices, bool capped) {
   for (int i = 0; i < slices; ++i) {
     const float phi0 = 2.f * kPi * i / slices, phi1 = 2.f * kPi * (i + 1) / slices;
     const float u0 = float(i) / slices, u1 = float(i + 1) / slices;
-    const std::uint32_t a = addVertex(m, radius * around(phi0) + vec3(0, y0, 0), sideNormal(phi0), vec2(u0, 0.f));
-    const std::uint32_t b = addVertex(m, radius * around(phi1) + vec3(0, y0, 0), sideNormal(phi1), vec2(u1, 0.f));
-    const std::uint32_t apex = addVertex(m, vec3(0, y1, 0), sideNormal(0.5f * (phi0 + phi1)),
-                                         vec2(0.5f * (u0 + u1), 1.f));
+    const std::uint32_t a =
+        addVertex(m, radius * around(phi0) + vec3(0, y0, 0), sideNormal(phi0), vec2(u0, 0.f));
+    const std::uint32_t b =
+        addVertex(m, radius * around(phi1) + vec3(0, y0, 0), sideNormal(phi1), vec2(u1, 0.f));
+    const std::uint32_t apex =
+        addVertex(m, vec3(0, y1, 0), sideNormal(0.5f * (phi0 + phi1)), vec2(0.5f * (u0 + u1), 1.f));
     addTriangle(m, a, b, apex);
   }
   if (capped) addCap(m, radius, y0, slices, false);

@@ -11,7 +11,8 @@ const Material& Scene::material(int index) const {
 Aabb Scene::bounds() const {
   Aabb box;
   for (const Instance& inst : instances) {
-    for (const vec3& p : meshes[inst.mesh].positions) box.extend(vec3(inst.transform * vec4(p, 1.f)));
+    for (const vec3& p : meshes[inst.mesh].positions)
+      box.extend(vec3(inst.transform * vec4(p, 1.f)));
   }
   return box;
 }

@@ -20,7 +20,7 @@ struct Mesh {
   std::vector<vec3> positions;
   std::vector<vec3> normals;
   std::vector<vec2> uvs;
-  std::vector<vec4> tangents;  // xyz tangent, w handedness (glTF convention)
+  std::vector<vec4> tangents;          // xyz tangent, w handedness (glTF convention)
   std::vector<std::uint32_t> indices;  // 3 per triangle
   int material = -1;                   // -1: the default material
   std::size_t triangleCount() const { return indices.size() / 3; }
@@ -35,8 +35,14 @@ struct Instance {
 };
 
 enum class WrapMode { Repeat, ClampToEdge, MirroredRepeat };
-enum class FilterMode { Nearest, Linear, NearestMipmapNearest, LinearMipmapNearest,
-                        NearestMipmapLinear, LinearMipmapLinear };
+enum class FilterMode {
+  Nearest,
+  Linear,
+  NearestMipmapNearest,
+  LinearMipmapNearest,
+  NearestMipmapLinear,
+  LinearMipmapLinear
+};
 
 // A texture image decoded to linear float RGBA (colour textures marked sRGB in the file are
 // decoded with the sRGB transfer function at load, as glTF specifies for baseColor/emissive).
@@ -77,12 +83,12 @@ struct Material {
   float thickness = 0.f;
   vec3 attenuationColor{1.f};
   float attenuationDistance = 0.f;
-  float alpha = 1.f;        // coverage (glTF baseColor alpha)
+  float alpha = 1.f;  // coverage (glTF baseColor alpha)
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
   bool doubleSided = false;
-  int colorTexture = -1;     // multiplies C (and alpha); index into Scene::textures
-  int emissionTexture = -1;  // multiplies M_E
+  int colorTexture = -1;           // multiplies C (and alpha); index into Scene::textures
+  int emissionTexture = -1;        // multiplies M_E
   std::optional<Checker> checker;  // replaces C when present
   bool fromGltfPbr = false;  // true when mapped from metallic-roughness (see docs/scene-format.md)
   bool castsShadows = true;
@@ -102,8 +108,8 @@ struct Light {
   vec3 direction{0.f, -1.f, 0.f};  // direction the light travels (directional, spot, area normal)
   float range = 0.f;               // 0: infinite
   float innerConeAngle = 0.f, outerConeAngle = 0.7853982f;  // spot, radians
-  vec3 edgeU{0.f}, edgeV{0.f};     // quad area: corners position +- edgeU/2 +- edgeV/2
-  float radius = 0.f;              // disc and sphere area lights
+  vec3 edgeU{0.f}, edgeV{0.f};  // quad area: corners position +- edgeU/2 +- edgeV/2
+  float radius = 0.f;           // disc and sphere area lights
   bool castsShadows = true;
 };
 
@@ -126,9 +132,9 @@ struct Environment {
   EnvironmentType type = EnvironmentType::Color;
   vec3 color{0.f};
   float intensity = 1.f;
-  Image equirect;                 // linear RGB(A)
+  Image equirect;                  // linear RGB(A)
   std::array<Image, 6> cubeFaces;  // linear RGB(A)
-  std::string source;             // file(s) it came from, for reports
+  std::string source;              // file(s) it came from, for reports
 };
 
 struct Scene {
@@ -141,11 +147,11 @@ struct Scene {
   Camera camera;
   bool hasCamera = false;  // false: a camera was framed automatically from the bounds
   Environment environment;
-  vec3 ambient{0.f};  // A_G
+  vec3 ambient{0.f};                  // A_G
   std::vector<std::string> warnings;  // recoveries made while loading, each naming the place
 
   const Material& material(int index) const;  // -1 or out of range -> default material
-  Aabb bounds() const;                         // world-space bounds of all instances
+  Aabb bounds() const;                        // world-space bounds of all instances
 };
 
 }  // namespace diptych

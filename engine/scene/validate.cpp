@@ -7,10 +7,18 @@
 namespace diptych {
 namespace {
 
-bool finite(float v) { return std::isfinite(v); }
-bool finite(const vec2& v) { return finite(v.x) && finite(v.y); }
-bool finite(const vec3& v) { return allFinite(v); }
-bool finite(const vec4& v) { return finite(vec3(v)) && finite(v.w); }
+bool finite(float v) {
+  return std::isfinite(v);
+}
+bool finite(const vec2& v) {
+  return finite(v.x) && finite(v.y);
+}
+bool finite(const vec3& v) {
+  return allFinite(v);
+}
+bool finite(const vec4& v) {
+  return finite(vec3(v)) && finite(v.w);
+}
 bool finite(const mat4& m) {
   for (int c = 0; c < 4; ++c)
     if (!finite(m[c])) return false;
@@ -60,8 +68,8 @@ void checkMesh(Mesh& mesh, std::size_t index, const Scene& scene, const SceneChe
   check.finiteArray(mesh.tangents, place + " tangents");
   auto sameLength = [&](std::size_t size, const char* what) {
     if (size != 0 && size != n)
-      check.fail(place, std::string(what) + " has " + std::to_string(size) +
-                            " entries for " + std::to_string(n) + " positions");
+      check.fail(place, std::string(what) + " has " + std::to_string(size) + " entries for " +
+                            std::to_string(n) + " positions");
   };
   sameLength(mesh.normals.size(), "normals");
   sameLength(mesh.uvs.size(), "uvs");
@@ -75,8 +83,8 @@ void checkMesh(Mesh& mesh, std::size_t index, const Scene& scene, const SceneChe
                  "index " + std::to_string(mesh.indices[i]) + " is out of range (" +
                      std::to_string(n) + " vertices)");
   if (mesh.material < -1 || mesh.material >= int(scene.materials.size()))
-    check.fail(place + " material", "material " + std::to_string(mesh.material) +
-                                        " does not exist");
+    check.fail(place + " material",
+               "material " + std::to_string(mesh.material) + " does not exist");
 
   // Zero normals would normalise to NaN in every shader; rebuild them from the faces.
   std::size_t zero = 0;
@@ -207,8 +215,7 @@ void validateScene(Scene& scene) {
   for (std::size_t i = 0; i < scene.textures.size(); ++i) {
     const Texture& t = scene.textures[i];
     const std::string place = "textures[" + std::to_string(i) + "] '" + t.name + "'";
-    if (t.image.empty() || t.image.channels != 4)
-      check.fail(place, "texture has no RGBA pixels");
+    if (t.image.empty() || t.image.channels != 4) check.fail(place, "texture has no RGBA pixels");
     check.finiteArray(t.image.pixels, place + " pixels");
   }
   for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], i, check);
@@ -225,8 +232,7 @@ void validateScene(Scene& scene) {
     for (int f = 0; f < 6; ++f) {
       const Image& face = env.cubeFaces[f];
       const std::string place = "environment cube[" + std::to_string(f) + "]";
-      if (face.empty() || face.width != face.height ||
-          face.width != env.cubeFaces[0].width)
+      if (face.empty() || face.width != face.height || face.width != env.cubeFaces[0].width)
         check.fail(place, "cube faces must be square and all the same size");
       check.finiteArray(face.pixels, place + " pixels");
     }

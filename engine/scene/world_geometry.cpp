@@ -40,7 +40,8 @@ WorldGeometry flattenScene(const Scene& scene) {
     for (const vec3& p : mesh.positions) w.positions.push_back(vec3(inst.transform * vec4(p, 1.f)));
     w.indices = mesh.indices;
     if (w.mirrored) {
-      for (std::size_t t = 0; t + 2 < w.indices.size(); t += 3) std::swap(w.indices[t + 1], w.indices[t + 2]);
+      for (std::size_t t = 0; t + 2 < w.indices.size(); t += 3)
+        std::swap(w.indices[t + 1], w.indices[t + 2]);
     }
     if (mesh.normals.size() == mesh.positions.size()) {
       const mat3 normalMatrix = glm::transpose(glm::inverse(mat3(inst.transform)));
@@ -80,7 +81,8 @@ vec2 interpolateUv(const WorldMesh& m, std::uint32_t prim, float u, float v) {
 
 vec3 geometricNormal(const WorldMesh& m, std::uint32_t prim) {
   const std::uint32_t* t = &m.indices[3 * std::size_t(prim)];
-  const vec3 n = glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
+  const vec3 n =
+      glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
   const float len = glm::length(n);
   return len > 0.f ? n / len : vec3(0.f, 1.f, 0.f);
 }

@@ -12,9 +12,9 @@ namespace diptych {
 struct WorldMesh {
   int instance = 0;
   int material = -1;
-  std::vector<vec3> positions;  // world space
-  std::vector<vec3> normals;    // world space, unit length (computed when the mesh has none)
-  std::vector<vec2> uvs;        // empty when the mesh has none
+  std::vector<vec3> positions;         // world space
+  std::vector<vec3> normals;           // world space, unit length (computed when the mesh has none)
+  std::vector<vec2> uvs;               // empty when the mesh has none
   std::vector<std::uint32_t> indices;  // winding flipped for mirrored instances
   bool mirrored = false;               // det(transform) < 0
 };

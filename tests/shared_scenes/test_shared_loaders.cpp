@@ -42,8 +42,7 @@ const std::map<std::string, Expected>& expectations() {
       {"edge-cases-tinygltf/BoundsChecking/invalid-buffer-view-index.gltf", {{"tinygltf"}, ""}},
       {"edge-cases-tinygltf/BoundsChecking/invalid-primitive-indices.gltf", {{"tinygltf"}, ""}},
       {"iridescence-suzanne/IridescenceSuzanne.glb",
-       {{"extensionsRequired[0]", "unsupported required extension KHR_materials_iridescence"},
-        ""}},
+       {{"extensionsRequired[0]", "unsupported required extension KHR_materials_iridescence"}, ""}},
       {"mesh-primitive-modes/MeshPrimitiveModes.gltf", {{}, "skipped POINTS primitive"}},
   };
   return table;
@@ -136,7 +135,8 @@ TEST(SharedScenes, LightsPunctualLampHasFivePointLightsInCandela) {
 }
 
 TEST(SharedScenes, TransmissionAndEmissiveStrengthMapOntoLectureCoefficients) {
-  const fs::path transmission = kShared / "transmission-roughness-test/TransmissionRoughnessTest.glb";
+  const fs::path transmission =
+      kShared / "transmission-roughness-test/TransmissionRoughnessTest.glb";
   const fs::path cornell = kShared / "cornell-box/CornellBox.glb";
   if (!fs::exists(transmission) || !fs::exists(cornell)) GTEST_SKIP();
   const Scene glass = loadScene(transmission);

@@ -49,8 +49,8 @@ void expectConsistentWinding(const Mesh& m) {
                c = m.positions[m.indices[t + 2]];
     const vec3 g = glm::cross(b - a, c - a);
     if (glm::length(g) < 1e-9f) continue;
-    const vec3 avg = m.normals[m.indices[t]] + m.normals[m.indices[t + 1]] +
-                     m.normals[m.indices[t + 2]];
+    const vec3 avg =
+        m.normals[m.indices[t]] + m.normals[m.indices[t + 1]] + m.normals[m.indices[t + 2]];
     EXPECT_GT(glm::dot(g, avg), 0.f) << m.name << " triangle " << t / 3;
   }
 }
@@ -196,29 +196,37 @@ TEST(SceneJson, BrokenScenesNameFileAndJsonPath) {
   const std::vector<BrokenCase> cases = {
       {"malformed", R"({"objects": [ {"type": "box" ]})", {"malformed JSON"}},
       {"unknown_top_key", R"({"objcts": []})", {"objcts", "unknown key"}},
-      {"unknown_object_key", R"({"objects": [{"type": "sphere", "raduis": 1}]})",
+      {"unknown_object_key",
+       R"({"objects": [{"type": "sphere", "raduis": 1}]})",
        {"objects[0].raduis", "unknown key"}},
-      {"unknown_material", R"({"materials": {"glass": {}},
+      {"unknown_material",
+       R"({"materials": {"glass": {}},
          "objects": [{"type": "box"}, {"type": "box"}, {"type": "box", "material": "glas"}]})",
        {"objects[2].material", "unknown material 'glas'"}},
       // nlohmann rejects an overflowing literal while parsing, so only the file is named.
-      {"overflow_is_infinite", R"({"objects": [{"type": "sphere", "radius": 1e999}]})",
+      {"overflow_is_infinite",
+       R"({"objects": [{"type": "sphere", "radius": 1e999}]})",
        {"number overflow", "1e999"}},
-      {"float_overflow", R"({"objects": [{"type": "sphere", "radius": 1e300}]})",
+      {"float_overflow",
+       R"({"objects": [{"type": "sphere", "radius": 1e300}]})",
        {"objects[0].radius", "non-finite"}},
-      {"negative_radius", R"({"objects": [{"type": "box"}, {"type": "sphere", "radius": -1}]})",
+      {"negative_radius",
+       R"({"objects": [{"type": "box"}, {"type": "sphere", "radius": -1}]})",
        {"objects[1].radius", "positive"}},
-      {"missing_include", R"({"objects": [{"type": "gltf", "file": "nope.glb"}]})",
+      {"missing_include",
+       R"({"objects": [{"type": "gltf", "file": "nope.glb"}]})",
        {"objects[0].file", "file not found", "nope.glb"}},
       {"wrong_type_vector", R"({"ambient": "grey"})", {"ambient", "expected an array of 3"}},
-      {"wrong_type_number", R"({"materials": {"m": {"kd": "one"}}})",
+      {"wrong_type_number",
+       R"({"materials": {"m": {"kd": "one"}}})",
        {"materials.m.kd", "expected a number"}},
-      {"wrong_type_bool", R"({"materials": {"m": {"double_sided": 1}}})",
+      {"wrong_type_bool",
+       R"({"materials": {"m": {"double_sided": 1}}})",
        {"materials.m.double_sided", "true or false"}},
-      {"bad_fov", R"({"camera": {"position": [0,0,5], "target": [0,0,0], "fov": 180}})",
+      {"bad_fov",
+       R"({"camera": {"position": [0,0,5], "target": [0,0,0], "fov": 180}})",
        {"camera.fov", "(0, 180)"}},
-      {"unknown_light_type", R"({"lights": [{"type": "laser"}]})",
-       {"lights[0].type", "laser"}},
+      {"unknown_light_type", R"({"lights": [{"type": "laser"}]})", {"lights[0].type", "laser"}},
       {"face_index_out_of_range",
        R"({"objects": [{"type": "mesh", "vertices": [[0,0,0],[1,0,0],[0,1,0]], "faces": [[0,1,3]]}]})",
        {"objects[0].faces[0][2]", "out of range"}},
@@ -336,23 +344,20 @@ TEST(SceneGltf, TinyFilesLoadAndFailByName) {
   EXPECT_NE(outOfRange.find("meshes[0].primitives[0].indices"), std::string::npos) << outOfRange;
   EXPECT_NE(outOfRange.find("out of range"), std::string::npos) << outOfRange;
 
-  const std::string cycle = loadError(
-      "cycle.gltf", tinyGltf(R"("scene": 0, "scenes": [{"nodes": [0]}],
+  const std::string cycle =
+      loadError("cycle.gltf", tinyGltf(R"("scene": 0, "scenes": [{"nodes": [0]}],
         "nodes": [{"mesh": 0}, {"children": [2]}, {"children": [1]}], )"));
-  EXPECT_NE(cycle.find("node cycle: nodes[1] -> nodes[2] -> nodes[1]"), std::string::npos)
-      << cycle;
-  const std::string shared = loadError(
-      "shared_child.gltf", tinyGltf(R"("scene": 0, "scenes": [{"nodes": [0]}],
+  EXPECT_NE(cycle.find("node cycle: nodes[1] -> nodes[2] -> nodes[1]"), std::string::npos) << cycle;
+  const std::string shared =
+      loadError("shared_child.gltf", tinyGltf(R"("scene": 0, "scenes": [{"nodes": [0]}],
         "nodes": [{"mesh": 0, "children": [1]}, {"children": []}, {"children": [1]}], )"));
-  EXPECT_NE(shared.find("nodes[2].children: node 1 already has parent nodes[0]"),
-            std::string::npos)
+  EXPECT_NE(shared.find("nodes[2].children: node 1 already has parent nodes[0]"), std::string::npos)
       << shared;
 
-  const std::string required = loadError(
-      "required.gltf", tinyGltf(nodes + R"("extensionsUsed": ["KHR_materials_sheen"],
+  const std::string required =
+      loadError("required.gltf", tinyGltf(nodes + R"("extensionsUsed": ["KHR_materials_sheen"],
         "extensionsRequired": ["KHR_materials_sheen"], )"));
-  EXPECT_NE(required.find("unsupported required extension KHR_materials_sheen"),
-            std::string::npos)
+  EXPECT_NE(required.find("unsupported required extension KHR_materials_sheen"), std::string::npos)
       << required;
 
   // A JSON scene including the glTF with a transform and a material override for everything.

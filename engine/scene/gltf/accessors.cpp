@@ -19,12 +19,16 @@ constexpr std::uint64_t kMaxElementsWithoutBuffer = std::uint64_t(1) << 26;
 int componentSize(int componentType) {
   switch (componentType) {
     case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return 1;
     case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return 2;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return 4;
+    default:
+      return 0;
   }
 }
 
@@ -37,7 +41,8 @@ float decodeComponent(const unsigned char* p, int componentType, bool normalized
       std::memcpy(&f, p, 4);
       return f;
     }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.f : float(*p);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return normalized ? *p / 255.f : float(*p);
     case TINYGLTF_COMPONENT_TYPE_BYTE: {
       const auto c = static_cast<std::int8_t>(*p);
       return normalized ? std::max(c / 127.f, -1.f) : float(c);
@@ -57,13 +62,15 @@ float decodeComponent(const unsigned char* p, int componentType, bool normalized
       std::memcpy(&c, p, 4);
       return float(c);
     }
-    default: return 0.f;
+    default:
+      return 0.f;
   }
 }
 
 std::uint32_t decodeIndex(const unsigned char* p, int componentType) {
   switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return *p;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
       std::uint16_t c;
       std::memcpy(&c, p, 2);
@@ -88,26 +95,28 @@ ByteRange resolve(const tinygltf::Model& model, int viewIndex, std::uint64_t byt
                   std::uint64_t stride, std::uint64_t elementSize, std::uint64_t count,
                   const AccessorSite& site, int accessor, const char* what) {
   if (viewIndex < 0 || viewIndex >= int(model.bufferViews.size()))
-    fail(site, accessor, std::string(what) + " bufferView " + std::to_string(viewIndex) +
-                             " does not exist");
+    fail(site, accessor,
+         std::string(what) + " bufferView " + std::to_string(viewIndex) + " does not exist");
   const tinygltf::BufferView& view = model.bufferViews[viewIndex];
   if (view.buffer < 0 || view.buffer >= int(model.buffers.size()))
-    fail(site, accessor, "bufferViews[" + std::to_string(viewIndex) + "].buffer " +
-                             std::to_string(view.buffer) + " does not exist");
+    fail(site, accessor,
+         "bufferViews[" + std::to_string(viewIndex) + "].buffer " + std::to_string(view.buffer) +
+             " does not exist");
   const std::vector<unsigned char>& data = model.buffers[view.buffer].data;
   if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
-    fail(site, accessor, "bufferViews[" + std::to_string(viewIndex) + "] extends past the end of " +
-                             "buffer " + std::to_string(view.buffer));
+    fail(site, accessor,
+         "bufferViews[" + std::to_string(viewIndex) + "] extends past the end of " + "buffer " +
+             std::to_string(view.buffer));
   if (count > 0) {
     // Last byte read: byteOffset + (count-1)*stride + elementSize; all terms are < 2^40 in any
     // real file, and we reject anything larger before multiplying.
     const std::uint64_t limit = std::uint64_t(1) << 40;
     if (count > limit || stride > limit || byteOffset > limit ||
         byteOffset + (count - 1) * stride + elementSize > view.byteLength)
-      fail(site, accessor, std::string(what) + " reads " + std::to_string(count) +
-                               " elements past the end of bufferViews[" +
-                               std::to_string(viewIndex) + "] (byteLength " +
-                               std::to_string(view.byteLength) + ")");
+      fail(site, accessor,
+           std::string(what) + " reads " + std::to_string(count) +
+               " elements past the end of bufferViews[" + std::to_string(viewIndex) +
+               "] (byteLength " + std::to_string(view.byteLength) + ")");
   }
   return {data.data() + view.byteOffset + byteOffset, stride};
 }
@@ -138,13 +147,13 @@ void forEachElement(const tinygltf::Model& model, int index, const Layout& layou
   const tinygltf::Accessor& acc = model.accessors[index];
   const std::uint64_t count = acc.count;
   if (acc.bufferView >= 0) {
-    const tinygltf::BufferView& view =
-        acc.bufferView < int(model.bufferViews.size()) ? model.bufferViews[acc.bufferView]
-                                                       : tinygltf::BufferView{};
+    const tinygltf::BufferView& view = acc.bufferView < int(model.bufferViews.size())
+                                           ? model.bufferViews[acc.bufferView]
+                                           : tinygltf::BufferView{};
     const std::uint64_t stride = view.byteStride ? view.byteStride : layout.elementBytes();
     if (view.byteStride && view.byteStride < layout.elementBytes())
-      fail(site, index, "byteStride " + std::to_string(view.byteStride) +
-                            " is smaller than one element");
+      fail(site, index,
+           "byteStride " + std::to_string(view.byteStride) + " is smaller than one element");
     const ByteRange range = resolve(model, acc.bufferView, acc.byteOffset, stride,
                                     layout.elementBytes(), count, site, index, "data");
     for (std::uint64_t i = 0; i < count; ++i) visit(i, range.first + i * range.stride);
@@ -163,15 +172,15 @@ void forEachElement(const tinygltf::Model& model, int index, const Layout& layou
   const ByteRange where =
       resolve(model, acc.sparse.indices.bufferView, acc.sparse.indices.byteOffset, indexBytes,
               indexBytes, sparseCount, site, index, "sparse.indices");
-  const ByteRange values =
-      resolve(model, acc.sparse.values.bufferView, acc.sparse.values.byteOffset,
-              layout.elementBytes(), layout.elementBytes(), sparseCount, site, index,
-              "sparse.values");
+  const ByteRange values = resolve(
+      model, acc.sparse.values.bufferView, acc.sparse.values.byteOffset, layout.elementBytes(),
+      layout.elementBytes(), sparseCount, site, index, "sparse.values");
   for (std::uint64_t k = 0; k < sparseCount; ++k) {
     const std::uint32_t target = decodeIndex(where.first + k * where.stride, indexType);
     if (target >= count)
-      fail(site, index, "sparse.indices[" + std::to_string(k) + "] = " + std::to_string(target) +
-                            " is out of range");
+      fail(site, index,
+           "sparse.indices[" + std::to_string(k) + "] = " + std::to_string(target) +
+               " is out of range");
     visit(target, values.first + k * values.stride);
   }
 }
@@ -193,8 +202,9 @@ std::vector<float> readFloatAccessor(const tinygltf::Model& model, int index, in
                                      const AccessorSite& site) {
   const Layout layout = checkLayout(model, index, site);
   if (layout.components != components)
-    fail(site, index, "has " + std::to_string(layout.components) + " components, expected " +
-                          std::to_string(components));
+    fail(site, index,
+         "has " + std::to_string(layout.components) + " components, expected " +
+             std::to_string(components));
   const tinygltf::Accessor& acc = model.accessors[index];
   checkCountBeforeAllocating(model, index, site);
   std::vector<float> out(std::size_t(acc.count) * components, 0.f);
@@ -205,9 +215,9 @@ std::vector<float> readFloatAccessor(const tinygltf::Model& model, int index, in
   });
   for (std::size_t i = 0; i < out.size(); ++i) {
     if (!std::isfinite(out[i]))
-      fail(site, index, "non-finite value " + std::to_string(out[i]) + " at element " +
-                            std::to_string(i / components) + " component " +
-                            std::to_string(i % components));
+      fail(site, index,
+           "non-finite value " + std::to_string(out[i]) + " at element " +
+               std::to_string(i / components) + " component " + std::to_string(i % components));
   }
   return out;
 }

@@ -29,8 +29,8 @@ bool decodeImage(tinygltf::Image* image, const int index, std::string*, std::str
     decoded.errors.resize(index + 1);
   }
   try {
-    const std::string name = image->uri.empty() ? "images[" + std::to_string(index) + "]"
-                                                : image->uri;
+    const std::string name =
+        image->uri.empty() ? "images[" + std::to_string(index) + "]" : image->uri;
     decoded.images[index] = readImageFromMemory(name, bytes, std::size_t(std::max(size, 0)));
     image->width = decoded.images[index].width;
     image->height = decoded.images[index].height;
@@ -64,7 +64,9 @@ bool finiteMatrix(const mat4& m) {
   return true;
 }
 
-std::string nodeRef(int i) { return "nodes[" + std::to_string(i) + "]"; }
+std::string nodeRef(int i) {
+  return "nodes[" + std::to_string(i) + "]";
+}
 
 // glTF requires nodes to form disjoint strict trees (spec 3.5.3). Checks child indices, that
 // no node has two parents, and that following parents never loops; returns each node's parent.
@@ -136,9 +138,9 @@ void addLight(const tinygltf::Model& model, int lightIndex, const mat4& world,
   } else if (src.type == "directional") {
     light.type = LightType::Directional;
   } else {
-    throw InputError(file, "extensions.KHR_lights_punctual.lights[" +
-                               std::to_string(lightIndex) + "].type",
-                     "unknown light type '" + src.type + "'");
+    throw InputError(
+        file, "extensions.KHR_lights_punctual.lights[" + std::to_string(lightIndex) + "].type",
+        "unknown light type '" + src.type + "'");
   }
   if (src.color.size() >= 3) light.color = vec3(src.color[0], src.color[1], src.color[2]);
   light.intensity = float(src.intensity);  // candela (point, spot) or lux (directional)
@@ -193,8 +195,9 @@ void convertNodes(const tinygltf::Model& model, const std::vector<std::vector<in
     const tinygltf::Node& node = model.nodes[item.node];
     const mat4 local = localTransform(node);
     if (!finiteMatrix(local))
-      throw InputError(file, place + (node.matrix.size() == 16 ? ".matrix" : ".translation/rotation/scale"),
-                       "non-finite transform");
+      throw InputError(
+          file, place + (node.matrix.size() == 16 ? ".matrix" : ".translation/rotation/scale"),
+          "non-finite transform");
     const mat4 world = item.parentWorld * local;
     if (!finiteMatrix(world))
       throw InputError(file, place, "world transform overflows to a non-finite value");
@@ -203,8 +206,7 @@ void convertNodes(const tinygltf::Model& model, const std::vector<std::vector<in
         throw InputError(file, place + ".mesh",
                          "mesh " + std::to_string(node.mesh) + " does not exist");
       for (int mesh : meshes[node.mesh])
-        scene.instances.push_back(
-            {node.name.empty() ? place : node.name, mesh, world});
+        scene.instances.push_back({node.name.empty() ? place : node.name, mesh, world});
     }
     if (node.camera >= 0 && !scene.hasCamera)
       setCamera(model, node.camera, world, file, place + ".camera", scene);
@@ -230,7 +232,8 @@ Scene loadGltfUnvalidated(const std::filesystem::path& path) {
   tinygltf::Model model;
   std::string err, warn;
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   const bool ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, file)
                                 : loader.LoadASCIIFromFile(&model, &err, &warn, file);
   if (!ok) {

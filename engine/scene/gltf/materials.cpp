@@ -11,7 +11,9 @@ namespace diptych::gltf {
 namespace {
 
 // Rec. 709 luminance, used to collapse an RGB reflectance into the scalar k_s / k_ps.
-float luminance(const vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+float luminance(const vec3& c) {
+  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
 
 vec3 toVec3(const std::vector<double>& v, vec3 fallback) {
   return v.size() >= 3 ? vec3(float(v[0]), float(v[1]), float(v[2])) : fallback;
@@ -36,21 +38,31 @@ const tinygltf::Value* extension(const tinygltf::Material& m, const char* name) 
 
 WrapMode wrapMode(int gl) {
   switch (gl) {
-    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return WrapMode::ClampToEdge;
-    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return WrapMode::MirroredRepeat;
-    default: return WrapMode::Repeat;
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+      return WrapMode::ClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+      return WrapMode::MirroredRepeat;
+    default:
+      return WrapMode::Repeat;
   }
 }
 
 FilterMode filterMode(int gl, FilterMode fallback) {
   switch (gl) {
-    case TINYGLTF_TEXTURE_FILTER_NEAREST: return FilterMode::Nearest;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR: return FilterMode::Linear;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return FilterMode::NearestMipmapNearest;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: return FilterMode::LinearMipmapNearest;
-    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return FilterMode::NearestMipmapLinear;
-    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: return FilterMode::LinearMipmapLinear;
-    default: return fallback;  // -1: sampler leaves it to the implementation
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+      return FilterMode::Nearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+      return FilterMode::Linear;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      return FilterMode::NearestMipmapNearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      return FilterMode::LinearMipmapNearest;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+      return FilterMode::NearestMipmapLinear;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
+      return FilterMode::LinearMipmapLinear;
+    default:
+      return fallback;  // -1: sampler leaves it to the implementation
   }
 }
 
@@ -84,8 +96,8 @@ class TextureTable {
   int colorTexture(const tinygltf::TextureInfo& info, const std::string& place) {
     if (info.index < 0) return -1;
     if (info.index >= int(model_.textures.size()))
-      throw InputError(file_, place + ".index", "texture " + std::to_string(info.index) +
-                                                    " does not exist");
+      throw InputError(file_, place + ".index",
+                       "texture " + std::to_string(info.index) + " does not exist");
     if (info.texCoord != 0)
       scene_.warnings.push_back(file_ + ": " + place + ": uses TEXCOORD_" +
                                 std::to_string(info.texCoord) + "; only TEXCOORD_0 is read");
@@ -132,8 +144,8 @@ class TextureTable {
   vec2 meanRoughnessMetallic(const tinygltf::TextureInfo& info, const std::string& place) {
     if (info.index < 0) return vec2(1.f);
     if (info.index >= int(model_.textures.size()))
-      throw InputError(file_, place + ".index", "texture " + std::to_string(info.index) +
-                                                    " does not exist");
+      throw InputError(file_, place + ".index",
+                       "texture " + std::to_string(info.index) + " does not exist");
     const int source = model_.textures[info.index].source;
     if (source < 0 || source >= int(decoded_.images.size()) || decoded_.images[source].empty())
       throw InputError(file_, place, "image missing or undecodable");

@@ -9,13 +9,20 @@ namespace {
 
 const char* modeName(int mode) {
   switch (mode) {
-    case TINYGLTF_MODE_POINTS: return "POINTS";
-    case TINYGLTF_MODE_LINE: return "LINES";
-    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
-    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
-    default: return "TRIANGLES";
+    case TINYGLTF_MODE_POINTS:
+      return "POINTS";
+    case TINYGLTF_MODE_LINE:
+      return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP:
+      return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP:
+      return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
+      return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN:
+      return "TRIANGLE_FAN";
+    default:
+      return "TRIANGLES";
   }
 }
 
@@ -109,8 +116,8 @@ std::vector<std::vector<int>> convertMeshes(const tinygltf::Model& model, const 
       const tinygltf::Primitive& prim = src.primitives[p];
       const std::string place =
           "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
-      const std::string name = "meshes[" + std::to_string(m) + "] '" + src.name + "' primitive " +
-                               std::to_string(p);
+      const std::string name =
+          "meshes[" + std::to_string(m) + "] '" + src.name + "' primitive " + std::to_string(p);
       const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
       if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
           mode != TINYGLTF_MODE_TRIANGLE_FAN) {
