@@ -78,6 +78,11 @@ struct Material {
   vec3 transmitColor{1.f};  // M_T
   vec3 emission{0.f};       // M_E
   float ior = 1.5f;
+  // KHR_materials_volume, kept for thickness-aware transmission: thickness in object units (0 =
+  // thin-walled), Beer-Lambert attenuation colour reached after attenuationDistance (0 = none).
+  float thickness = 0.f;
+  vec3 attenuationColor{1.f};
+  float attenuationDistance = 0.f;
   float alpha = 1.f;  // coverage (glTF baseColor alpha)
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;

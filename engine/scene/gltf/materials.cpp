@@ -1,0 +1,249 @@
+// glTF metallic-roughness materials mapped onto the lecture's coefficients. The formulas are
+// documented in docs/scene-format.md ("glTF material mapping"); the comments here say why.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "engine/core/error.h"
+#include "engine/scene/gltf/gltf_internal.h"
+
+namespace diptych::gltf {
+namespace {
+
+// Rec. 709 luminance, used to collapse an RGB reflectance into the scalar k_s / k_ps.
+float luminance(const vec3& c) {
+  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+vec3 toVec3(const std::vector<double>& v, vec3 fallback) {
+  return v.size() >= 3 ? vec3(float(v[0]), float(v[1]), float(v[2])) : fallback;
+}
+
+vec3 valueVec3(const tinygltf::Value& v, vec3 fallback) {
+  if (!v.IsArray() || v.ArrayLen() < 3) return fallback;
+  vec3 out;
+  for (int i = 0; i < 3; ++i) out[i] = float(v.Get(i).GetNumberAsDouble());
+  return out;
+}
+
+float valueNumber(const tinygltf::Value& object, const char* key, float fallback) {
+  if (!object.IsObject() || !object.Has(key) || !object.Get(key).IsNumber()) return fallback;
+  return float(object.Get(key).GetNumberAsDouble());
+}
+
+const tinygltf::Value* extension(const tinygltf::Material& m, const char* name) {
+  auto it = m.extensions.find(name);
+  return it == m.extensions.end() ? nullptr : &it->second;
+}
+
+WrapMode wrapMode(int gl) {
+  switch (gl) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+      return WrapMode::ClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+      return WrapMode::MirroredRepeat;
+    default:
+      return WrapMode::Repeat;
+  }
+}
+
+FilterMode filterMode(int gl, FilterMode fallback) {
+  switch (gl) {
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+      return FilterMode::Nearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+      return FilterMode::Linear;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      return FilterMode::NearestMipmapNearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      return FilterMode::LinearMipmapNearest;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+      return FilterMode::NearestMipmapLinear;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
+      return FilterMode::LinearMipmapLinear;
+    default:
+      return fallback;  // -1: sampler leaves it to the implementation
+  }
+}
+
+// Expands 1-4 channels to RGBA (grey replicated, alpha 1 when absent) and decodes sRGB colour
+// channels to linear; alpha is always linear (glTF 3.9.2).
+Image toLinearRgba(const Image& src, bool srgb) {
+  Image out(src.width, src.height, 4, 1.f);
+  for (int y = 0; y < src.height; ++y) {
+    for (int x = 0; x < src.width; ++x) {
+      const int n = src.channels;
+      vec4 p(1.f);
+      if (n <= 2) {
+        p = vec4(vec3(src.at(x, y, 0)), n == 2 ? src.at(x, y, 1) : 1.f);
+      } else {
+        p = vec4(src.at(x, y, 0), src.at(x, y, 1), src.at(x, y, 2), n >= 4 ? src.at(x, y, 3) : 1.f);
+      }
+      for (int c = 0; c < 4; ++c) out.at(x, y, c) = (srgb && c < 3) ? srgbToLinear(p[c]) : p[c];
+    }
+  }
+  return out;
+}
+
+class TextureTable {
+ public:
+  TextureTable(const tinygltf::Model& model, const DecodedImages& decoded, const std::string& file,
+               Scene& scene)
+      : model_(model), decoded_(decoded), file_(file), scene_(scene) {}
+
+  // Scene texture index for glTF texture `index`, decoded as sRGB colour; `place` names the
+  // material slot that uses it, for errors.
+  int colorTexture(const tinygltf::TextureInfo& info, const std::string& place) {
+    if (info.index < 0) return -1;
+    if (info.index >= int(model_.textures.size()))
+      throw InputError(file_, place + ".index",
+                       "texture " + std::to_string(info.index) + " does not exist");
+    if (info.texCoord != 0)
+      scene_.warnings.push_back(file_ + ": " + place + ": uses TEXCOORD_" +
+                                std::to_string(info.texCoord) + "; only TEXCOORD_0 is read");
+    if (info.extensions.count("KHR_texture_transform"))
+      scene_.warnings.push_back(file_ + ": " + place + ": KHR_texture_transform ignored");
+    auto found = made_.find(info.index);
+    if (found != made_.end()) return found->second;
+
+    const tinygltf::Texture& tex = model_.textures[info.index];
+    const std::string texPlace = "textures[" + std::to_string(info.index) + "]";
+    if (tex.source < 0 || tex.source >= int(model_.images.size()))
+      throw InputError(file_, texPlace + ".source",
+                       "image " + std::to_string(tex.source) + " does not exist");
+    const std::string imagePlace = "images[" + std::to_string(tex.source) + "]";
+    const Image& pixels = decoded_.images[tex.source];
+    if (pixels.empty()) {
+      const std::string& why = decoded_.errors[tex.source];
+      const std::string& uri = model_.images[tex.source].uri;
+      throw InputError(file_, imagePlace,
+                       "image missing or undecodable" + (uri.empty() ? "" : " ('" + uri + "')") +
+                           (why.empty() ? "" : ": " + why));
+    }
+    Texture out;
+    out.name = tex.name.empty() ? texPlace : tex.name;
+    out.image = toLinearRgba(pixels, true);
+    out.srgbSource = true;
+    if (tex.sampler >= 0) {
+      if (tex.sampler >= int(model_.samplers.size()))
+        throw InputError(file_, texPlace + ".sampler",
+                         "sampler " + std::to_string(tex.sampler) + " does not exist");
+      const tinygltf::Sampler& s = model_.samplers[tex.sampler];
+      out.wrapS = wrapMode(s.wrapS);
+      out.wrapT = wrapMode(s.wrapT);
+      out.minFilter = filterMode(s.minFilter, out.minFilter);
+      out.magFilter = filterMode(s.magFilter, out.magFilter);
+    }
+    scene_.textures.push_back(std::move(out));
+    return made_[info.index] = int(scene_.textures.size()) - 1;
+  }
+
+  // Mean of the green (roughness) and blue (metallic) channels of a metallicRoughnessTexture,
+  // or (1, 1) when there is none. The lecture model has per-material, not per-texel,
+  // coefficients, so a texture contributes its average (documented approximation).
+  vec2 meanRoughnessMetallic(const tinygltf::TextureInfo& info, const std::string& place) {
+    if (info.index < 0) return vec2(1.f);
+    if (info.index >= int(model_.textures.size()))
+      throw InputError(file_, place + ".index",
+                       "texture " + std::to_string(info.index) + " does not exist");
+    const int source = model_.textures[info.index].source;
+    if (source < 0 || source >= int(decoded_.images.size()) || decoded_.images[source].empty())
+      throw InputError(file_, place, "image missing or undecodable");
+    const Image& img = decoded_.images[source];
+    if (img.channels < 3) return vec2(1.f);
+    double g = 0.0, b = 0.0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        g += img.at(x, y, 1);
+        b += img.at(x, y, 2);
+      }
+    const double n = double(img.width) * img.height;
+    return vec2(float(g / n), float(b / n));
+  }
+
+ private:
+  const tinygltf::Model& model_;
+  const DecodedImages& decoded_;
+  const std::string& file_;
+  Scene& scene_;
+  std::map<int, int> made_;
+};
+
+Material convertMaterial(const tinygltf::Material& src, const std::string& place,
+                         TextureTable& textures) {
+  const tinygltf::PbrMetallicRoughness& pbr = src.pbrMetallicRoughness;
+  Material m;
+  m.name = src.name.empty() ? place : src.name;
+  m.fromGltfPbr = true;
+
+  const vec4 base = pbr.baseColorFactor.size() >= 4
+                        ? vec4(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]),
+                               float(pbr.baseColorFactor[2]), float(pbr.baseColorFactor[3]))
+                        : vec4(1.f);
+  const vec2 textured = textures.meanRoughnessMetallic(
+      pbr.metallicRoughnessTexture, place + ".pbrMetallicRoughness.metallicRoughnessTexture");
+  const float metallic = std::clamp(float(pbr.metallicFactor) * textured.y, 0.f, 1.f);
+  const float roughness = std::clamp(float(pbr.roughnessFactor) * textured.x, 0.f, 1.f);
+
+  if (const tinygltf::Value* ext = extension(src, "KHR_materials_ior"))
+    m.ior = valueNumber(*ext, "ior", 1.5f);
+  float transmission = 0.f;
+  if (const tinygltf::Value* ext = extension(src, "KHR_materials_transmission"))
+    transmission = std::clamp(valueNumber(*ext, "transmissionFactor", 0.f), 0.f, 1.f);
+  if (const tinygltf::Value* ext = extension(src, "KHR_materials_volume")) {
+    m.thickness = valueNumber(*ext, "thicknessFactor", 0.f);
+    m.attenuationColor = valueVec3(ext->Get("attenuationColor"), vec3(1.f));
+    m.attenuationDistance = valueNumber(*ext, "attenuationDistance", 0.f);
+  }
+  float emissiveStrength = 1.f;
+  if (const tinygltf::Value* ext = extension(src, "KHR_materials_emissive_strength"))
+    emissiveStrength = valueNumber(*ext, "emissiveStrength", 1.f);
+
+  // Dielectric reflectance at normal incidence from the IOR, F0 = ((n-1)/(n+1))^2 (0.04 for the
+  // default 1.5); metals reflect their base colour (glTF spec appendix B).
+  const float dielectricF0 = std::pow((m.ior - 1.f) / (m.ior + 1.f), 2.f);
+  const vec3 f0 = glm::mix(vec3(dielectricF0), vec3(base), metallic);
+
+  // Diffuse: metals have none, and transmission replaces diffuse (the glTF dielectric BRDF is
+  // mix(diffuse, transmission, transmissionFactor)).
+  m.color = vec3(base) * (1.f - metallic);
+  m.ka = 0.f;  // metallic-roughness has no ambient term; A_G is still added by the shading
+  m.kd = 1.f - transmission;
+  m.ks = luminance(f0);
+  m.specularColor = m.ks > 0.f ? f0 / m.ks : vec3(1.f);
+  // Blinn-Phong exponent equivalent to a Beckmann/GGX lobe of width alpha = roughness^2:
+  // e = 2/alpha^2 - 2 (Walter et al. 2007, eq. 30). alpha is clamped to 0.01 so a perfectly
+  // smooth surface gets e = 19998 rather than infinity.
+  const float alpha = std::max(roughness * roughness, 0.01f);
+  m.exponent = std::max(2.f / (alpha * alpha) - 2.f, 1.f);
+  // Mirror fraction: the normal-incidence reflectance, fading out as roughness blurs the mirror.
+  m.kps = m.ks * (1.f - roughness);
+  m.mirrorColor = m.specularColor;
+  m.kt = transmission * (1.f - metallic);
+  m.transmitColor = vec3(base);  // glTF transmission is tinted by the base colour
+
+  m.emission = toVec3(src.emissiveFactor, vec3(0.f)) * emissiveStrength;
+  m.alpha = base.w;
+  m.alphaMode = src.alphaMode == "MASK"    ? AlphaMode::Mask
+                : src.alphaMode == "BLEND" ? AlphaMode::Blend
+                                           : AlphaMode::Opaque;
+  m.alphaCutoff = float(src.alphaCutoff);
+  m.doubleSided = src.doubleSided;
+  m.colorTexture =
+      textures.colorTexture(pbr.baseColorTexture, place + ".pbrMetallicRoughness.baseColorTexture");
+  m.emissionTexture = textures.colorTexture(src.emissiveTexture, place + ".emissiveTexture");
+  if (m.emissionTexture >= 0 && m.emission == vec3(0.f)) m.emissionTexture = -1;
+  return m;
+}
+
+}  // namespace
+
+void convertMaterials(const tinygltf::Model& model, const DecodedImages& decoded,
+                      const std::string& file, Scene& scene) {
+  TextureTable textures(model, decoded, file, scene);
+  for (std::size_t i = 0; i < model.materials.size(); ++i)
+    scene.materials.push_back(
+        convertMaterial(model.materials[i], "materials[" + std::to_string(i) + "]", textures));
+}
+
+}  // namespace diptych::gltf

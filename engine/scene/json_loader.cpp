@@ -1,0 +1,490 @@
+// The Diptych JSON scene format (docs/scene-format.md): camera, ambient, environment, named
+// materials with the lecture's coefficients, lights, and objects (tessellated analytic shapes,
+// explicit polygon meshes, included glTF files). Every error names the JSON path.
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "engine/scene/json_reader.h"
+#include "engine/scene/load.h"
+#include "engine/scene/primitives.h"
+
+namespace diptych {
+namespace {
+
+using jsonread::JsonObject;
+using jsonread::toNumber;
+using jsonread::toVector2;
+using jsonread::toVector3;
+using nlohmann::json;
+
+// Tessellation beyond this is a typo, not a wish (a 4096 x 4096 sphere is 33M triangles).
+constexpr int kMaxSegments = 4096;
+
+struct Context {
+  std::string file;
+  std::filesystem::path folder;  // relative paths in the file are relative to this
+  std::map<std::string, int> materialIndex;
+  bool jsonCamera = false;
+};
+
+std::string indexed(const std::string& path, std::size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
+
+float positive(JsonObject& o, const std::string& key, float fallback) {
+  const float v = o.number(key, fallback);
+  if (!(v > 0.f)) o.fail(key, "must be positive (is " + std::to_string(v) + ")");
+  return v;
+}
+
+int segmentCount(JsonObject& o, const std::string& key, int fallback, int minimum) {
+  const int n = o.integer(key).value_or(fallback);
+  if (n < minimum || n > kMaxSegments)
+    o.fail(key,
+           "must be between " + std::to_string(minimum) + " and " + std::to_string(kMaxSegments));
+  return n;
+}
+
+// "segments": n or [a, b].
+ivec2 segmentPair(JsonObject& o, const std::string& key, ivec2 fallback, ivec2 minimum) {
+  const json* v = o.find(key);
+  if (!v) return fallback;
+  ivec2 out;
+  if (v->is_number_integer()) {
+    out = ivec2(v->get<int>());
+  } else if (v->is_array() && v->size() == 2 && (*v)[0].is_number_integer() &&
+             (*v)[1].is_number_integer()) {
+    out = ivec2((*v)[0].get<int>(), (*v)[1].get<int>());
+  } else {
+    o.fail(key, "expected an integer or [integer, integer]");
+  }
+  if (glm::any(glm::lessThan(out, minimum)) || glm::any(glm::greaterThan(out, ivec2(kMaxSegments))))
+    o.fail(key,
+           "must be between " + std::to_string(minimum.x) + " and " + std::to_string(kMaxSegments));
+  return out;
+}
+
+std::filesystem::path resolvePath(const Context& ctx, JsonObject& o, const std::string& key,
+                                  const std::string& relative) {
+  const std::filesystem::path p = ctx.folder / relative;
+  if (!std::filesystem::exists(p)) o.fail(key, "file not found: " + p.string());
+  return p;
+}
+
+Image readImageAt(const Context& ctx, JsonObject& o, const std::string& key,
+                  const std::string& relative) {
+  const std::filesystem::path p = resolvePath(ctx, o, key, relative);
+  try {
+    return readImage(p);
+  } catch (const InputError& e) {
+    o.fail(key, e.what());
+  }
+}
+
+// "transform": {"translate", "rotate" (degrees about x, then y, then z), "scale"} or
+// {"matrix": 16 numbers, column-major as in glTF}. M = T * Rz * Ry * Rx * S.
+mat4 readTransform(JsonObject& parent, const Context& ctx) {
+  auto t = parent.object("transform");
+  if (!t) return mat4(1.f);
+  mat4 m(1.f);
+  if (const json* matrix = t->find("matrix")) {
+    if (t->has("translate") || t->has("rotate") || t->has("scale"))
+      t->fail("matrix", "give either matrix or translate/rotate/scale, not both");
+    if (!matrix->is_array() || matrix->size() != 16)
+      t->fail("matrix", "expected 16 numbers (column-major)");
+    for (int i = 0; i < 16; ++i)
+      m[i / 4][i % 4] = toNumber((*matrix)[i], indexed(t->pathOf("matrix"), i), ctx.file);
+  } else {
+    m = glm::translate(m, t->vector3("translate", vec3(0.f)));
+    const vec3 r = glm::radians(t->vector3("rotate", vec3(0.f)));
+    m = glm::rotate(m, r.z, vec3(0, 0, 1));
+    m = glm::rotate(m, r.y, vec3(0, 1, 0));
+    m = glm::rotate(m, r.x, vec3(1, 0, 0));
+    if (const json* s = t->find("scale"))
+      m = glm::scale(m, s->is_number() ? vec3(toNumber(*s, t->pathOf("scale"), ctx.file))
+                                       : toVector3(*s, t->pathOf("scale"), ctx.file));
+  }
+  t->rejectUnknownKeys();
+  if (glm::determinant(mat3(m)) == 0.f) t->fail("", "transform is singular (zero scale?)");
+  return m;
+}
+
+Material readMaterial(JsonObject o, const std::string& name) {
+  Material m;
+  m.name = name;
+  m.color = o.vector3("color", m.color);
+  m.ka = o.number("ka", m.ka);
+  m.kd = o.number("kd", m.kd);
+  m.ks = o.number("ks", m.ks);
+  m.exponent = o.number("exponent", m.exponent);
+  m.specularColor = o.vector3("specular_color", m.specularColor);
+  m.kps = o.number("kps", m.kps);
+  m.mirrorColor = o.vector3("mirror_color", m.mirrorColor);
+  m.kt = o.number("kt", m.kt);
+  m.transmitColor = o.vector3("transmit_color", m.transmitColor);
+  m.emission = o.vector3("emission", m.emission);
+  m.ior = o.number("ior", m.ior);
+  m.alpha = o.number("alpha", m.alpha);
+  m.doubleSided = o.boolean("double_sided", m.doubleSided);
+  m.castsShadows = o.boolean("casts_shadows", m.castsShadows);
+  if (auto c = o.object("checker")) {
+    Checker checker;
+    checker.colorA = c->vector3("a", checker.colorA);
+    checker.colorB = c->vector3("b", checker.colorB);
+    checker.scale = positive(*c, "scale", checker.scale);
+    c->rejectUnknownKeys();
+    m.checker = checker;
+  }
+  for (const char* key : {"ka", "kd", "ks", "exponent", "kps", "kt"})
+    if (o.has(key) && o.number(key, 0.f) < 0.f) o.fail(key, "must not be negative");
+  if (!(m.ior > 0.f)) o.fail("ior", "must be positive");
+  if (m.alpha < 0.f || m.alpha > 1.f) o.fail("alpha", "must be in [0, 1]");
+  o.rejectUnknownKeys();
+  return m;
+}
+
+Light readLight(JsonObject o) {
+  Light l;
+  const std::string type = o.requiredString("type");
+  l.name = o.string("name").value_or(o.path());
+  l.color = o.vector3("color", l.color);
+  l.intensity = o.number("intensity", l.intensity);
+  if (l.intensity < 0.f) o.fail("intensity", "must not be negative");
+  l.castsShadows = o.boolean("casts_shadows", true);
+  auto direction = [&](const char* key) {
+    const vec3 d = o.requiredVector3(key);
+    if (glm::length(d) == 0.f) o.fail(key, "must not be the zero vector");
+    return glm::normalize(d);
+  };
+  if (type == "point" || type == "spot") {
+    l.type = type == "point" ? LightType::Point : LightType::Spot;
+    l.position = o.requiredVector3("position");
+    l.range = o.number("range", 0.f);
+    if (l.range < 0.f) o.fail("range", "must not be negative");
+    if (l.type == LightType::Spot) {
+      l.direction = direction("direction");
+      l.innerConeAngle = glm::radians(o.number("inner_cone", 0.f));
+      l.outerConeAngle = glm::radians(o.number("outer_cone", 45.f));
+      if (!(l.outerConeAngle > 0.f && l.outerConeAngle <= glm::radians(90.f)))
+        o.fail("outer_cone", "must be in (0, 90] degrees");
+      if (l.innerConeAngle < 0.f || l.innerConeAngle > l.outerConeAngle)
+        o.fail("inner_cone", "must be in [0, outer_cone] degrees");
+    }
+  } else if (type == "directional") {
+    l.type = LightType::Directional;
+    l.direction = direction("direction");
+  } else if (type == "quad") {
+    l.type = LightType::QuadArea;
+    l.position = o.requiredVector3("position");
+    l.edgeU = o.requiredVector3("edge_u");
+    l.edgeV = o.requiredVector3("edge_v");
+    const vec3 n = glm::cross(l.edgeU, l.edgeV);
+    if (glm::length(n) == 0.f) o.fail("edge_v", "edge_u and edge_v span no area");
+    l.direction = glm::normalize(n);  // emits on the side of cross(edge_u, edge_v)
+  } else if (type == "disc") {
+    l.type = LightType::DiscArea;
+    l.position = o.requiredVector3("position");
+    l.direction = direction("normal");
+    l.radius = positive(o, "radius", 0.f);
+  } else if (type == "sphere") {
+    l.type = LightType::SphereArea;
+    l.position = o.requiredVector3("position");
+    l.radius = positive(o, "radius", 0.f);
+  } else {
+    o.fail("type",
+           "unknown light type '" + type + "' (point, directional, spot, quad, disc, sphere)");
+  }
+  o.rejectUnknownKeys();
+  return l;
+}
+
+// "vertices": [[x,y,z], ...], "faces": [[i, j, k, ...], ...] (polygons, fan-triangulated,
+// counter-clockwise from the front), optional "normals" and "uvs" per vertex.
+Mesh readPolygonMesh(JsonObject& o, const Context& ctx) {
+  Mesh mesh;
+  auto list = [&](const char* key, bool required) -> const json* {
+    const json* v = o.find(key);
+    if (!v && required) o.fail(key, "required array is missing");
+    if (v && !v->is_array()) o.fail(key, "expected an array");
+    return v;
+  };
+  const json& vertices = *list("vertices", true);
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    mesh.positions.push_back(toVector3(vertices[i], indexed(o.pathOf("vertices"), i), ctx.file));
+  if (const json* normals = list("normals", false)) {
+    for (std::size_t i = 0; i < normals->size(); ++i)
+      mesh.normals.push_back(toVector3((*normals)[i], indexed(o.pathOf("normals"), i), ctx.file));
+    if (mesh.normals.size() != mesh.positions.size()) o.fail("normals", "needs one per vertex");
+  }
+  if (const json* uvs = list("uvs", false)) {
+    for (std::size_t i = 0; i < uvs->size(); ++i)
+      mesh.uvs.push_back(toVector2((*uvs)[i], indexed(o.pathOf("uvs"), i), ctx.file));
+    if (mesh.uvs.size() != mesh.positions.size()) o.fail("uvs", "needs one per vertex");
+  }
+  const json& faces = *list("faces", true);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const std::string place = indexed(o.pathOf("faces"), f);
+    if (!faces[f].is_array() || faces[f].size() < 3)
+      throw InputError(ctx.file, place, "a face needs at least 3 vertex indices");
+    std::vector<std::uint32_t> poly;
+    for (std::size_t k = 0; k < faces[f].size(); ++k) {
+      const json& v = faces[f][k];
+      if (!v.is_number_integer() || v.get<long long>() < 0 ||
+          v.get<long long>() >= (long long)mesh.positions.size())
+        throw InputError(ctx.file, indexed(place, k),
+                         "vertex index " + v.dump() + " is out of range (" +
+                             std::to_string(mesh.positions.size()) + " vertices)");
+      poly.push_back(v.get<std::uint32_t>());
+    }
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k)
+      mesh.indices.insert(mesh.indices.end(), {poly[0], poly[k], poly[k + 1]});
+  }
+  return mesh;
+}
+
+Mesh readShape(JsonObject& o, const std::string& type, const Context& ctx) {
+  if (type == "plane") {
+    const json* size = o.find("size");
+    const vec2 extent = size ? toVector2(*size, o.pathOf("size"), ctx.file) : vec2(1.f);
+    if (!(extent.x > 0.f && extent.y > 0.f)) o.fail("size", "must be positive");
+    return makePlane(extent, segmentPair(o, "segments", ivec2(1), ivec2(1)));
+  }
+  if (type == "quad") {
+    const json* corners = o.find("corners");
+    if (!corners || !corners->is_array() || corners->size() != 4)
+      o.fail("corners", "expected 4 corner points [[x,y,z], ...]");
+    std::array<vec3, 4> p;
+    for (int i = 0; i < 4; ++i)
+      p[i] = toVector3((*corners)[i], indexed(o.pathOf("corners"), i), ctx.file);
+    return makeQuad(p);
+  }
+  if (type == "box") {
+    const vec3 size = o.vector3("size", vec3(1.f));
+    if (!(size.x > 0.f && size.y > 0.f && size.z > 0.f)) o.fail("size", "must be positive");
+    return makeBox(size);
+  }
+  if (type == "sphere") {
+    const float radius = positive(o, "radius", 1.f);
+    const ivec2 seg = segmentPair(o, "segments", ivec2(64, 32), ivec2(3, 2));
+    return makeUvSphere(radius, seg.x, seg.y);
+  }
+  if (type == "disc")
+    return makeDisc(positive(o, "radius", 1.f), segmentCount(o, "segments", 64, 3));
+  if (type == "cylinder" || type == "cone") {
+    const float radius = positive(o, "radius", 1.f), height = positive(o, "height", 1.f);
+    const int slices = segmentCount(o, "segments", 64, 3);
+    const bool capped = o.boolean("capped", true);
+    return type == "cylinder" ? makeCylinder(radius, height, slices, capped)
+                              : makeCone(radius, height, slices, capped);
+  }
+  if (type == "mesh") return readPolygonMesh(o, ctx);
+  o.fail("type", "unknown object type '" + type +
+                     "' (plane, quad, box, sphere, disc, cylinder, cone, mesh, gltf)");
+}
+
+int lookupMaterial(const Context& ctx, JsonObject& o, const std::string& key,
+                   const std::string& name) {
+  auto it = ctx.materialIndex.find(name);
+  if (it == ctx.materialIndex.end()) o.fail(key, "unknown material '" + name + "'");
+  return it->second;
+}
+
+// Appends an included glTF scene: its materials and textures (re-indexed, or replaced by
+// overrides), meshes, instances under `transform`, lights and camera when asked for.
+void includeGltf(JsonObject& o, const mat4& transform, const Context& ctx, Scene& scene) {
+  const std::string relative = o.requiredString("file");
+  const std::filesystem::path path = resolvePath(ctx, o, "file", relative);
+  const bool useCamera = o.boolean("use_camera", true);
+  const bool useLights = o.boolean("use_lights", true);
+  const std::optional<std::string> allMaterial = o.string("material");
+  std::map<std::string, int> overrides;
+  if (auto table = o.object("material_overrides")) {
+    const json& raw = *o.find("material_overrides");
+    for (auto it = raw.begin(); it != raw.end(); ++it) {
+      const std::string ours = table->requiredString(it.key());
+      overrides[it.key()] = lookupMaterial(ctx, *table, it.key(), ours);
+    }
+  }
+  Scene part;
+  try {
+    part = loadGltfUnvalidated(path);
+  } catch (const InputError& e) {
+    o.fail("file", e.what());
+  }
+  for (const auto& [gltfName, ours] : overrides) {
+    bool found = false;
+    for (const Material& m : part.materials) found = found || m.name == gltfName;
+    if (!found)
+      o.fail("material_overrides." + gltfName, "'" + relative + "' has no material of that name");
+  }
+  const int textureBase = int(scene.textures.size());
+  const int materialBase = int(scene.materials.size());
+  const int meshBase = int(scene.meshes.size());
+  for (Texture& t : part.textures) scene.textures.push_back(std::move(t));
+  for (Material m : part.materials) {
+    if (m.colorTexture >= 0) m.colorTexture += textureBase;
+    if (m.emissionTexture >= 0) m.emissionTexture += textureBase;
+    scene.materials.push_back(std::move(m));
+  }
+  const int allIndex = allMaterial ? lookupMaterial(ctx, o, "material", *allMaterial) : -2;
+  for (Mesh mesh : part.meshes) {
+    if (allIndex != -2) {
+      mesh.material = allIndex;
+    } else if (mesh.material >= 0) {
+      auto it = overrides.find(part.materials[mesh.material].name);
+      mesh.material = it != overrides.end() ? it->second : mesh.material + materialBase;
+    }
+    mesh.name = o.path() + " (" + relative + ") " + mesh.name;
+    scene.meshes.push_back(std::move(mesh));
+  }
+  for (Instance inst : part.instances) {
+    inst.mesh += meshBase;
+    inst.transform = transform * inst.transform;
+    scene.instances.push_back(std::move(inst));
+  }
+  const mat3 linear(transform);
+  auto moveDirection = [&](const vec3& d) {
+    const vec3 moved = linear * d;
+    return glm::length(moved) > 0.f ? glm::normalize(moved) : d;
+  };
+  if (useLights) {
+    for (Light l : part.lights) {
+      l.position = vec3(transform * vec4(l.position, 1.f));
+      l.direction = moveDirection(l.direction);
+      scene.lights.push_back(std::move(l));
+    }
+  }
+  if (useCamera && part.hasCamera && !ctx.jsonCamera && !scene.hasCamera) {
+    scene.camera = part.camera;
+    scene.camera.position = vec3(transform * vec4(part.camera.position, 1.f));
+    scene.camera.target = vec3(transform * vec4(part.camera.target, 1.f));
+    scene.camera.up = moveDirection(part.camera.up);
+    scene.hasCamera = true;
+  }
+  scene.warnings.insert(scene.warnings.end(), part.warnings.begin(), part.warnings.end());
+}
+
+void readObject(JsonObject o, Context& ctx, Scene& scene) {
+  const std::string type = o.requiredString("type");
+  const mat4 transform = readTransform(o, ctx);
+  if (type == "gltf") {
+    includeGltf(o, transform, ctx, scene);
+  } else {
+    Mesh mesh = readShape(o, type, ctx);
+    const std::string name = o.string("name").value_or(type);
+    mesh.name = o.path() + " '" + name + "'";
+    if (auto material = o.string("material"))
+      mesh.material = lookupMaterial(ctx, o, "material", *material);
+    scene.meshes.push_back(std::move(mesh));
+    scene.instances.push_back({name, int(scene.meshes.size()) - 1, transform});
+  }
+  o.rejectUnknownKeys();
+}
+
+void readCamera(JsonObject o, Scene& scene) {
+  Camera& c = scene.camera;
+  c.position = o.requiredVector3("position");
+  c.target = o.requiredVector3("target");
+  c.up = o.vector3("up", c.up);
+  const float fov = o.number("fov", 45.f);
+  if (!(fov > 0.f && fov < 180.f)) o.fail("fov", "must be in (0, 180) degrees");
+  c.verticalFov = glm::radians(fov);
+  c.aperture = o.number("aperture", 0.f);
+  if (c.aperture < 0.f) o.fail("aperture", "must not be negative");
+  c.focusDistance = o.number("focus_distance", glm::length(c.target - c.position));
+  if (!(c.focusDistance > 0.f)) o.fail("focus_distance", "must be positive");
+  c.znear = o.number("near", c.znear);
+  c.zfar = o.number("far", c.zfar);
+  if (!(c.znear > 0.f && c.zfar > c.znear)) o.fail("near", "need 0 < near < far");
+  if (c.position == c.target) o.fail("target", "equals position");
+  if (glm::length(glm::cross(c.target - c.position, c.up)) == 0.f)
+    o.fail("up", "is zero or parallel to the viewing direction");
+  o.rejectUnknownKeys();
+  scene.hasCamera = true;
+}
+
+void readEnvironment(JsonObject o, const Context& ctx, Scene& scene) {
+  Environment& env = scene.environment;
+  env.color = o.vector3("color", env.color);
+  env.intensity = o.number("intensity", 1.f);
+  if (env.intensity < 0.f) o.fail("intensity", "must not be negative");
+  const auto equirect = o.string("equirect");
+  const json* cube = o.find("cube");
+  if (equirect && cube) o.fail("cube", "give either equirect or cube, not both");
+  if (equirect) {
+    env.type = EnvironmentType::Equirect;
+    env.equirect = readImageAt(ctx, o, "equirect", *equirect);
+    env.source = (ctx.folder / *equirect).string();
+  } else if (cube) {
+    if (!cube->is_array() || cube->size() != 6)
+      o.fail("cube", "expected 6 image paths in the order +x, -x, +y, -y, +z, -z");
+    env.type = EnvironmentType::Cube;
+    for (int f = 0; f < 6; ++f) {
+      const std::string key = "cube[" + std::to_string(f) + "]";
+      if (!(*cube)[f].is_string()) o.fail(key, "expected an image path");
+      env.cubeFaces[f] = readImageAt(ctx, o, key, (*cube)[f].get<std::string>());
+      const Image& face = env.cubeFaces[f];
+      if (face.width != face.height || face.width != env.cubeFaces[0].width)
+        o.fail(key, "cube faces must be square and all the same size");
+      env.source += (f ? ", " : "") + (ctx.folder / (*cube)[f].get<std::string>()).string();
+    }
+  }
+  o.rejectUnknownKeys();
+}
+
+json parseFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "", "cannot open file");
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return json::parse(text.str());
+  } catch (const json::exception& e) {
+    // Syntax errors carry line and column; a number literal that overflows a double (1e999) is
+    // rejected here by nlohmann ("number overflow"), before any path is known.
+    throw InputError(path.string(), "", std::string("malformed JSON: ") + e.what());
+  }
+}
+
+}  // namespace
+
+Scene loadJsonSceneUnvalidated(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path.string(), "", "file not found");
+  Context ctx{path.string(), path.parent_path(), {}, false};
+  const json document = parseFile(path);
+  JsonObject top(document, "", ctx.file);
+  Scene scene;
+  scene.sourcePath = ctx.file;
+  top.string("description");
+  scene.ambient = top.vector3("ambient", vec3(0.f));
+  if (auto materials = top.object("materials")) {
+    const json& raw = *top.find("materials");
+    for (auto it = raw.begin(); it != raw.end(); ++it) {
+      auto material = materials->object(it.key());
+      ctx.materialIndex[it.key()] = int(scene.materials.size());
+      scene.materials.push_back(readMaterial(std::move(*material), it.key()));
+    }
+  }
+  if (auto camera = top.object("camera")) {
+    readCamera(std::move(*camera), scene);
+    ctx.jsonCamera = true;
+  }
+  if (auto environment = top.object("environment"))
+    readEnvironment(std::move(*environment), ctx, scene);
+  auto array = [&](const char* key) -> const json* {
+    const json* v = top.find(key);
+    if (v && !v->is_array()) top.fail(key, "expected an array");
+    return v;
+  };
+  if (const json* lights = array("lights"))
+    for (std::size_t i = 0; i < lights->size(); ++i)
+      scene.lights.push_back(readLight(JsonObject((*lights)[i], indexed("lights", i), ctx.file)));
+  if (const json* objects = array("objects"))
+    for (std::size_t i = 0; i < objects->size(); ++i)
+      readObject(JsonObject((*objects)[i], indexed("objects", i), ctx.file), ctx, scene);
+  top.rejectUnknownKeys();
+  return scene;
+}
+
+}  // namespace diptych

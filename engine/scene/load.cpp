@@ -1,0 +1,33 @@
+#include "engine/scene/load.h"
+
+#include <algorithm>
+
+#include "engine/core/error.h"
+#include "engine/scene/camera_math.h"
+#include "engine/scene/validate.h"
+
+namespace diptych {
+
+Scene loadScene(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  Scene scene;
+  if (ext == ".gltf" || ext == ".glb")
+    scene = loadGltfUnvalidated(path);
+  else if (ext == ".json")
+    scene = loadJsonSceneUnvalidated(path);
+  else
+    throw InputError(path.string(), "",
+                     "unknown scene format '" + ext + "' (expected .gltf, .glb or .json)");
+  scene.sourcePath = path.string();
+  // Frame the geometry before validating so that the automatic camera is checked too.
+  if (!scene.hasCamera) {
+    const Aabb box = scene.bounds();
+    if (!box.empty() && allFinite(box.lo) && allFinite(box.hi)) scene.camera = frameBounds(box);
+  }
+  validateScene(scene);
+  return scene;
+}
+
+}  // namespace diptych

@@ -1,0 +1,20 @@
+#pragma once
+// Scene input. Every loader either returns a complete, validated scene or throws InputError
+// naming the file and the element ("FILE: meshes[2].primitives[0].indices: ..."); it never
+// returns a half-loaded scene. Recoveries (e.g. a recomputed zero normal, a skipped line
+// primitive) are listed in Scene::warnings. The JSON format is docs/scene-format.md.
+#include <filesystem>
+
+#include "engine/scene/scene.h"
+
+namespace diptych {
+
+// Dispatches on the extension: .gltf/.glb -> glTF 2.0, .json -> Diptych JSON scene. Validates
+// the result (validateScene) and frames a camera from the bounds when the scene has none.
+Scene loadScene(const std::filesystem::path& path);
+
+// The individual loaders, unvalidated: loadScene is what programs should call.
+Scene loadGltfUnvalidated(const std::filesystem::path& path);
+Scene loadJsonSceneUnvalidated(const std::filesystem::path& path);
+
+}  // namespace diptych
