@@ -41,8 +41,6 @@ class Preprocessor {
     out_.files.push_back(file);
     stack_.push_back(canonical);
 
-    // GLSL 4.50 §3.3: after "#line L S" the next line is line L of source string S.
-    out_.text += "#line 1 " + std::to_string(id) + "\n";
     static const std::regex includeLine(R"(^\s*#\s*include\s+"([^"]+)\"\s*(//.*)?$)");
     static const std::regex versionLine(R"(^\s*#\s*version\b.*$)");
     std::istringstream in(readFile(file));
@@ -53,13 +51,13 @@ class Preprocessor {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       std::smatch m;
       if (std::regex_match(line, m, includeLine)) {
-        expand(resolve(file, m[1].str(), number));
-        out_.text += "#line " + std::to_string(number + 1) + " " + std::to_string(id) + "\n";
-      } else if (std::regex_match(line, versionLine)) {
-        out_.text += "\n";  // the loader owns #version; keep the line count
-      } else {
-        out_.text += line + "\n";
+        expand(resolve(file, m[1].str(), number));  // replaces the directive line
+        continue;
       }
+      // The loader owns #version; a file's own is blanked, keeping the line count.
+      out_.text += std::regex_match(line, versionLine) ? std::string() : line;
+      out_.text += "\n";
+      out_.lines.push_back({id, number});
     }
     stack_.pop_back();
   }
@@ -119,6 +117,9 @@ ShaderSource preprocessShader(const fs::path& file, const std::vector<ShaderDefi
   ShaderSource out;
   out.text = "#version 450 core\n";
   for (const ShaderDefine& d : defines) out.text += "#define " + d.name + " " + d.value + "\n";
+  // From here on, line L of source string 0 is out.lines[L - 1] (GLSL 4.50 §3.3: after
+  // "#line L" the next line is line L).
+  out.text += "#line 1 0\n";
   Preprocessor(root, out).expand(file.is_absolute() ? file : root / file);
   return out;
 }
@@ -131,10 +132,14 @@ std::string mapShaderLog(const std::string& log, const ShaderSource& source) {
   for (std::sregex_iterator it(log.begin(), log.end(), location), end; it != end; ++it) {
     const std::smatch& m = *it;
     out.append(begin, m[0].first);
-    const std::size_t file = std::stoul(m[2].str());
-    const std::string line = m[3].matched ? m[3].str() : m[4].str();
     out += m[1].str();
-    out += (file < source.files.size() ? source.files[file].string() : m[2].str()) + ":" + line;
+    const std::size_t line = std::stoul(m[3].matched ? m[3].str() : m[4].str());
+    if (line >= 1 && line <= source.lines.size()) {
+      const ShaderSource::Line& origin = source.lines[line - 1];
+      out += source.files[std::size_t(origin.file)].string() + ":" + std::to_string(origin.line);
+    } else {
+      out += m[0].str().substr(m[1].length());  // outside the table (e.g. a define): as given
+    }
     begin = m[0].second;
   }
   out.append(begin, log.cend());

@@ -1,10 +1,13 @@
 #pragma once
 // GLSL loading with #include. A stage file (.vert, .frag, .comp) is read from the shader
 // directory, `#include "path"` lines are expanded recursively (each file at most once per stage,
-// like #pragma once; an include cycle is an error naming the chain), `#line L S` directives keep
-// every line attributed to its file, and `#version 450 core` plus the defines are prepended.
-// Compile and link errors are rethrown as Error with the driver's "S:L" locations replaced by
-// "file:line" of the original files.
+// like #pragma once; an include cycle is an error naming the chain), and `#version 450 core`,
+// the defines and a `#line 1 0` are prepended. Compile errors are rethrown as Error with the
+// driver's "0:L" locations replaced by "file:line" of the original files.
+//
+// Why one line table instead of a `#line L S` per include: Mesa reports some errors (e.g. an
+// undeclared identifier) with source string 0 whatever #line said, so source-string numbers
+// cannot be trusted; the global line number in string 0 always is.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,11 +24,16 @@ struct ShaderDefine {
   std::string value;  // may be empty: "#define NAME"
 };
 
-// The expanded text of one stage and its include table: GLSL source-string number i in #line
-// directives (and therefore in driver logs) is files[i]; files[0] is the stage file.
+// The expanded text of one stage and its include table: line L of the text after the
+// `#line 1 0` directive is line lines[L-1].line of files[lines[L-1].file]; files[0] is the stage.
 struct ShaderSource {
+  struct Line {
+    int file;
+    int line;
+  };
   std::string text;
   std::vector<std::filesystem::path> files;
+  std::vector<Line> lines;
 };
 
 // `#include "p"` is looked up beside the including file first, then under `root`.
@@ -33,7 +41,7 @@ ShaderSource preprocessShader(const std::filesystem::path& file,
                               const std::vector<ShaderDefine>& defines = {},
                               const std::filesystem::path& root = shaderDirectory());
 
-// Rewrites "S:L(C)" (Mesa) and "S(L)" (NVIDIA, AMD) locations in a driver log to "file:L".
+// Rewrites "S:L(C)" (Mesa) and "S(L)" (NVIDIA, AMD) locations in a driver log to "file:line".
 std::string mapShaderLog(const std::string& log, const ShaderSource& source);
 
 // Stage files are relative to `root` (or absolute): loadProgram({"gbuffer.vert",
