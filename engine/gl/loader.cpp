@@ -25,7 +25,16 @@ GlFunctionTable loadGlFunctions(const ProcAddressFn& getProcAddress, const char*
   return table;
 }
 
+namespace {
+thread_local const GlFunctionTable* installed = nullptr;
+}
+
+const GlFunctionTable* installedGlFunctions() {
+  return installed;
+}
+
 void installGlFunctions(const GlFunctionTable* table) {
+  installed = table;
   static const GlFunctionTable empty;
   const GlFunctionTable& t = table ? *table : empty;
 #define DIPTYCH_GL_FUNCTION(type, name) name = t.name;

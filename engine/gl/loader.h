@@ -30,6 +30,8 @@ GlFunctionTable loadGlFunctions(const ProcAddressFn& getProcAddress, const char*
 
 // Makes `table` the calling thread's GL functions (nullptr clears them).
 void installGlFunctions(const GlFunctionTable* table);
+// The table last installed on the calling thread (nullptr when none).
+const GlFunctionTable* installedGlFunctions();
 
 // The calling thread's GL functions, e.g. gl::glClear(...). Inside namespace diptych::gl they
 // are found unqualified and hide any ::gl* prototype.
