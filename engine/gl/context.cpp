@@ -1,0 +1,80 @@
+#include "engine/gl/context.h"
+
+#include <cstdio>
+
+#include "engine/core/error.h"
+#include "engine/core/log.h"
+#include "engine/gl/debug.h"
+#include "engine/gl/loader.h"
+
+namespace diptych::gl {
+
+// Defined in osmesa_context.cpp and glfw_context.cpp (which include the native headers that
+// must not meet loader.h).
+std::unique_ptr<GlContext> createOsmesaContext(int width, int height);
+std::unique_ptr<GlContext> createGlfwContext(int width, int height, bool visible);
+
+std::string_view contextKindName(ContextKind kind) {
+  return kind == ContextKind::Osmesa ? "osmesa" : "glfw";
+}
+
+ContextKind parseContextKind(std::string_view name) {
+  if (name == "osmesa") return ContextKind::Osmesa;
+  if (name == "glfw") return ContextKind::Glfw;
+  throw Error("unknown GL context kind '" + std::string(name) + "' (expected osmesa or glfw)");
+}
+
+GlContext::GlContext() = default;
+
+GlContext::~GlContext() {
+  installGlFunctions(nullptr);
+}
+
+void GlContext::makeCurrent() {
+  makeCurrentNative();
+  installGlFunctions(functions_.get());
+}
+
+namespace {
+std::string glString(GLenum which) {
+  const GLubyte* s = glGetString(which);
+  return s ? reinterpret_cast<const char*>(s) : "";
+}
+}  // namespace
+
+void GlContext::initialize() {
+  const std::string contextName(name());
+  functions_ = std::make_unique<GlFunctionTable>(
+      loadGlFunctions([this](const char* fn) { return getProcAddress(fn); }, contextName.c_str()));
+  installGlFunctions(functions_.get());
+
+  info_.version = glString(GL_VERSION);
+  info_.renderer = glString(GL_RENDERER);
+  info_.vendor = glString(GL_VENDOR);
+  info_.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
+  glGetIntegerv(GL_MAJOR_VERSION, &info_.major);
+  glGetIntegerv(GL_MINOR_VERSION, &info_.minor);
+  GLint profile = 0, flags = 0;
+  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+  glGetIntegerv(GL_CONTEXT_FLAGS, &flags);
+  info_.coreProfile = (profile & GL_CONTEXT_CORE_PROFILE_BIT) != 0;
+  info_.debugContext = (flags & GL_CONTEXT_FLAG_DEBUG_BIT) != 0;
+  if (info_.major * 10 + info_.minor < 45 || !info_.coreProfile) {
+    throw Error("OpenGL context '" + contextName + "' is '" + info_.version + "' (" +
+                (info_.coreProfile ? "core" : "not core") + "); Diptych needs 4.5 core");
+  }
+  enableDebugOutput();
+  log().info("GL context {}: {} | {} | GLSL {}{}", contextName, info_.renderer, info_.version,
+             info_.glslVersion, info_.debugContext ? " | debug" : "");
+}
+
+std::unique_ptr<GlContext> createContext(ContextKind kind, int width, int height, bool visible) {
+  if (width <= 0 || height <= 0) {
+    throw Error("GL context size must be positive, got " + std::to_string(width) + "x" +
+                std::to_string(height));
+  }
+  return kind == ContextKind::Osmesa ? createOsmesaContext(width, height)
+                                     : createGlfwContext(width, height, visible);
+}
+
+}  // namespace diptych::gl

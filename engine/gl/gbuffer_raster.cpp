@@ -1,0 +1,108 @@
+#include "engine/gl/gbuffer_raster.h"
+
+#include "engine/core/error.h"
+#include "engine/gl/debug.h"
+#include "engine/gl/shader.h"
+#include "engine/scene/camera_math.h"
+
+namespace diptych::gl {
+
+GBufferTextures GBufferTextures::allocate(int width, int height) {
+  GBufferTextures t;
+  t.visibility = Texture::create2D(TextureFormat::RGBA32UI, width, height);
+  t.normal = Texture::create2D(TextureFormat::RGBA32F, width, height);
+  t.depth = Texture::create2D(TextureFormat::D32F, width, height);
+  t.visibility.setLabel("gbuffer.visibility");
+  t.normal.setLabel("gbuffer.normal");
+  t.depth.setLabel("gbuffer.depth");
+  return t;
+}
+
+GBufferRasterizer::GBufferRasterizer()
+    : program_(loadProgram({"gbuffer.vert", "gbuffer.frag"})),
+      framebuffer_(Framebuffer::create()) {}
+
+namespace {
+
+void checkTargets(const GBufferTextures& t) {
+  const auto expect = [&](const Texture& tex, TextureFormat format, const char* what) {
+    if (!tex || tex.format() != format || tex.kind() != TextureKind::Tex2D ||
+        tex.width() != t.width() || tex.height() != t.height()) {
+      throw Error(std::string("G-buffer target '") + what + "' must be a " +
+                  std::string(formatInfo(format).name) + " 2D texture of " +
+                  std::to_string(t.width()) + "x" + std::to_string(t.height()));
+    }
+  };
+  expect(t.visibility, TextureFormat::RGBA32UI, "visibility");
+  expect(t.normal, TextureFormat::RGBA32F, "normal");
+  expect(t.depth, TextureFormat::D32F, "depth");
+}
+
+}  // namespace
+
+void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
+                               GBufferTextures& targets) {
+  ScopedGlLabel label("gbuffer");
+  checkTargets(targets);
+  const int width = targets.width(), height = targets.height();
+  framebuffer_.attachColor(0, targets.visibility);
+  framebuffer_.attachColor(1, targets.normal);
+  framebuffer_.attachDepth(targets.depth);
+  framebuffer_.checkComplete("gbuffer");
+  framebuffer_.bind();
+
+  // Reversed-Z (camera_math.h): depth = near / -z_view in [0, 1], nearer is greater.
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glViewport(0, 0, width, height);
+  const GLuint zeroU[4] = {0, 0, 0, 0};
+  const GLfloat zeroF[4] = {0.f, 0.f, 0.f, 0.f};
+  glClearNamedFramebufferuiv(framebuffer_.id(), GL_COLOR, 0, zeroU);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 1, zeroF);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zeroF);
+
+  // The ray frame is built as in primaryRay() so both sides trace the same pixel-centre ray.
+  const float aspect = float(width) / float(height);
+  const vec3 forward = glm::normalize(camera.target - camera.position);
+  const vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  const vec3 up = glm::cross(right, forward);
+  program_.set("uViewProjection", reversedZProjection(camera, aspect) * viewMatrix(camera));
+  program_.set("uCameraPosition", camera.position);
+  program_.set("uForward", forward);
+  program_.set("uRight", right);
+  program_.set("uUp", up);
+  program_.set("uAspect", aspect);
+  program_.set("uTanHalfFov", std::tan(0.5f * camera.verticalFov));
+  program_.set("uViewportSize", vec2(float(width), float(height)));
+
+  program_.use();
+  scene.vertexArray.bind();
+  scene.bindStorage();
+  for (const GlMeshRange& mesh : scene.meshes) {
+    if (mesh.triangleCount == 0) continue;
+    program_.set("uInstance", std::uint32_t(mesh.instance));
+    program_.set("uFirstTriangle", mesh.firstTriangle);
+    program_.set("uMaterial", float(mesh.material));
+    // gl_PrimitiveID restarts at 0 for each draw, so it is the primitive index within the mesh.
+    glDrawElements(GL_TRIANGLES, GLsizei(3 * mesh.triangleCount), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));
+  }
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void rasterizeGBuffer(const GlSceneBuffers& scene, const Camera& camera, int width, int height,
+                      GBufferTextures& targets) {
+  if (!targets.visibility || targets.width() != width || targets.height() != height) {
+    targets = GBufferTextures::allocate(width, height);
+  }
+  GBufferRasterizer().render(scene, camera, targets);
+}
+
+}  // namespace diptych::gl

@@ -1,0 +1,70 @@
+#include "engine/gl/scene_buffers.h"
+
+#include <limits>
+
+#include "engine/core/error.h"
+
+namespace diptych::gl {
+
+GlSceneBuffers uploadScene(const WorldGeometry& geometry) {
+  std::vector<float> positions, normals, uvs;
+  std::vector<std::uint32_t> indices;
+  GlSceneBuffers out;
+  for (std::size_t m = 0; m < geometry.meshes.size(); ++m) {
+    const WorldMesh& mesh = geometry.meshes[m];
+    const std::size_t base = positions.size() / 3;
+    if (mesh.normals.size() != mesh.positions.size() ||
+        (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()) ||
+        mesh.indices.size() % 3 != 0) {
+      throw Error("world mesh " + std::to_string(m) + " (instance " +
+                  std::to_string(mesh.instance) + ") has inconsistent attribute counts");
+    }
+    if (base + mesh.positions.size() > std::numeric_limits<std::uint32_t>::max()) {
+      throw Error("scene has more vertices than 32-bit indices can address");
+    }
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      positions.insert(positions.end(),
+                       {mesh.positions[v].x, mesh.positions[v].y, mesh.positions[v].z});
+      normals.insert(normals.end(), {mesh.normals[v].x, mesh.normals[v].y, mesh.normals[v].z});
+      const vec2 uv = mesh.uvs.empty() ? vec2(0.f) : mesh.uvs[v];
+      uvs.insert(uvs.end(), {uv.x, uv.y});
+    }
+    GlMeshRange range;
+    range.instance = mesh.instance;
+    range.material = mesh.material;
+    range.firstTriangle = std::uint32_t(indices.size() / 3);
+    range.triangleCount = std::uint32_t(mesh.indices.size() / 3);
+    for (std::uint32_t i : mesh.indices) {
+      if (i >= mesh.positions.size()) {
+        throw Error("world mesh " + std::to_string(m) + " has index " + std::to_string(i) +
+                    " past its " + std::to_string(mesh.positions.size()) + " vertices");
+      }
+      indices.push_back(std::uint32_t(base + i));
+    }
+    out.meshes.push_back(range);
+  }
+  out.vertexCount = positions.size() / 3;
+  out.triangleCount = indices.size() / 3;
+  out.positions = Buffer::create(positions.size() * 4, positions.data());
+  out.normals = Buffer::create(normals.size() * 4, normals.data());
+  out.uvs = Buffer::create(uvs.size() * 4, uvs.data());
+  out.indices = Buffer::create(indices.size() * 4, indices.data());
+
+  out.vertexArray = VertexArray::create();
+  const GLuint vao = out.vertexArray.id();
+  glVertexArrayVertexBuffer(vao, 0, out.positions.id(), 0, 3 * sizeof(float));
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao, 0, 0);
+  glVertexArrayElementBuffer(vao, out.indices.id());
+  return out;
+}
+
+void GlSceneBuffers::bindStorage() const {
+  positions.bindBase(GL_SHADER_STORAGE_BUFFER, kScenePositionsBinding);
+  normals.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneNormalsBinding);
+  uvs.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneUvsBinding);
+  indices.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneIndicesBinding);
+}
+
+}  // namespace diptych::gl

@@ -1,0 +1,44 @@
+#pragma once
+// A WorldGeometry on the GPU. All meshes share one set of buffers; mesh m's triangles are
+// triangles [firstTriangle, firstTriangle + triangleCount) of the shared index buffer, whose
+// indices are already offset to the shared vertex arrays. The buffers are tightly packed float
+// and uint arrays, so shaders read them as std430 `float[]`/`uint[]` SSBOs (a vec3[] would have
+// a 16-byte stride) as well as vertex attributes.
+#include <cstdint>
+#include <vector>
+
+#include "engine/gl/objects.h"
+#include "engine/scene/world_geometry.h"
+
+namespace diptych::gl {
+
+struct GlMeshRange {
+  int instance = 0;   // WorldMesh::instance
+  int material = -1;  // WorldMesh::material, -1 = default material
+  std::uint32_t firstTriangle = 0;
+  std::uint32_t triangleCount = 0;
+};
+
+// SSBO binding points used by shaders that read the scene (see shaders/common/scene_buffers.glsl).
+inline constexpr GLuint kScenePositionsBinding = 0;
+inline constexpr GLuint kSceneNormalsBinding = 1;
+inline constexpr GLuint kSceneUvsBinding = 2;
+inline constexpr GLuint kSceneIndicesBinding = 3;
+
+struct GlSceneBuffers {
+  Buffer positions;                 // 3 floats per vertex, world space
+  Buffer normals;                   // 3 floats per vertex, world space, unit
+  Buffer uvs;                       // 2 floats per vertex; (0, 0) for meshes without uvs
+  Buffer indices;                   // 3 uints per triangle, into the shared vertex arrays
+  VertexArray vertexArray;          // attribute 0 = position, element buffer = indices
+  std::vector<GlMeshRange> meshes;  // same order as WorldGeometry::meshes
+  std::size_t vertexCount = 0;
+  std::size_t triangleCount = 0;
+
+  // Binds the four buffers to the kScene*Binding SSBO points.
+  void bindStorage() const;
+};
+
+GlSceneBuffers uploadScene(const WorldGeometry& geometry);
+
+}  // namespace diptych::gl

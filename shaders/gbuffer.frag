@@ -1,0 +1,48 @@
+// G-buffer raster: visibility (instance+1, primitive, u, v) and shading normal + material.
+// Layout and method: engine/gl/gbuffer_raster.h and docs/gl.md.
+#include "gl/scene_buffers.glsl"
+#include "gl/ray_triangle.glsl"
+
+// Camera frame exactly as diptych::primaryRay builds it (camera_math.cpp).
+uniform vec3 uCameraPosition;
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uAspect;
+uniform float uTanHalfFov;
+uniform vec2 uViewportSize;
+
+uniform uint uInstance;
+uniform uint uFirstTriangle;
+uniform float uMaterial;
+
+layout(location = 0) out uvec4 outVisibility;
+layout(location = 1) out vec4 outNormal;
+
+void main() {
+  // gl_FragCoord.xy is the pixel centre with y up; primaryRay's image y runs down, so its
+  // ndcY = 1 - 2 (H - fragY) / H = 2 fragY / H - 1, the same form as x.
+  vec2 ndc = 2.0 * gl_FragCoord.xy / uViewportSize - 1.0;
+  vec3 dir = uForward + (ndc.x * uAspect * uTanHalfFov) * uRight + (ndc.y * uTanHalfFov) * uUp;
+
+  uint triangle = uFirstTriangle + uint(gl_PrimitiveID);
+  uvec3 idx = sceneTriangle(triangle);
+  vec3 p0 = scenePosition(idx.x);
+  vec3 p1 = scenePosition(idx.y);
+  vec3 p2 = scenePosition(idx.z);
+  vec2 uv;
+  if (!rayTriangleBarycentrics(uCameraPosition, dir, p0, p1, p2, uv)) {
+    // Only an edge-on triangle gets here; its centroid is a point of it, and no NaN escapes.
+    uv = vec2(1.0 / 3.0);
+  }
+
+  float w = 1.0 - uv.x - uv.y;
+  vec3 n = w * sceneNormal(idx.x) + uv.x * sceneNormal(idx.y) + uv.y * sceneNormal(idx.z);
+  float len = length(n);
+  // Same fallback as interpolateNormal(): the geometric normal when the blend cancels out.
+  n = len > 0.0 ? n / len : normalize(cross(p1 - p0, p2 - p0));
+
+  outVisibility = uvec4(uInstance + 1u, uint(gl_PrimitiveID), floatBitsToUint(uv.x),
+                        floatBitsToUint(uv.y));
+  outNormal = vec4(n, uMaterial);
+}

@@ -1,0 +1,21 @@
+// The scene as uploaded by engine/gl/scene_buffers.cpp: tightly packed float/uint arrays (std430
+// `float[]`, since a vec3[] would be padded to 16 bytes). Bindings match kScene*Binding.
+layout(std430, binding = 0) readonly buffer ScenePositions { float scenePositions[]; };
+layout(std430, binding = 1) readonly buffer SceneNormals { float sceneNormals[]; };
+layout(std430, binding = 2) readonly buffer SceneUvs { float sceneUvs[]; };
+layout(std430, binding = 3) readonly buffer SceneIndices { uint sceneIndices[]; };
+
+uvec3 sceneTriangle(uint triangle) {
+  return uvec3(sceneIndices[3u * triangle], sceneIndices[3u * triangle + 1u],
+               sceneIndices[3u * triangle + 2u]);
+}
+
+vec3 scenePosition(uint vertex) {
+  return vec3(scenePositions[3u * vertex], scenePositions[3u * vertex + 1u],
+              scenePositions[3u * vertex + 2u]);
+}
+
+vec3 sceneNormal(uint vertex) {
+  return vec3(sceneNormals[3u * vertex], sceneNormals[3u * vertex + 1u],
+              sceneNormals[3u * vertex + 2u]);
+}
