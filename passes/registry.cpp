@@ -9,7 +9,8 @@ namespace diptych {
 const PassRegistry& builtinPasses() {
   static const PassRegistry registry = [] {
     PassRegistry r;
-    r.add<GBufferPass>("gbuffer", "rasterized visibility buffer, normals and reversed-Z depth (GL)");
+    r.add<GBufferPass>("gbuffer",
+                       "rasterized visibility buffer, normals and reversed-Z depth (GL)");
     r.add<RtShadowsPass>("rt_shadows", "exact light visibility by Embree shadow rays (CPU)");
     r.add<ShadePass>("shade", "the lecture's illumination model from the G-buffer (CPU)");
     return r;
@@ -22,8 +23,12 @@ Recipe defaultHybridRecipe() {
   recipe.file = "<built-in hybrid recipe>";
   recipe.passes = {
       {.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
-      {.name = "shadows", .type = "rt_shadows", .inputs = {{"visibility", "gbuffer.visibility"}}, .place = "passes[1]"},
-      {.name = "shade", .type = "shade",
+      {.name = "shadows",
+       .type = "rt_shadows",
+       .inputs = {{"visibility", "gbuffer.visibility"}},
+       .place = "passes[1]"},
+      {.name = "shade",
+       .type = "shade",
        .inputs = {{"visibility", "gbuffer.visibility"}, {"light_visibility", "shadows.visibility"}},
        .place = "passes[2]"},
   };

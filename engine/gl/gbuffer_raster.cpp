@@ -24,30 +24,37 @@ GBufferRasterizer::GBufferRasterizer()
 
 namespace {
 
-void checkTargets(const GBufferTextures& t) {
+void checkTargets(const Texture& visibility, const Texture& normal, const Texture& depth) {
+  const int width = visibility.width(), height = visibility.height();
   const auto expect = [&](const Texture& tex, TextureFormat format, const char* what) {
     if (!tex || tex.format() != format || tex.kind() != TextureKind::Tex2D ||
-        tex.width() != t.width() || tex.height() != t.height()) {
+        tex.width() != width || tex.height() != height) {
       throw Error(std::string("G-buffer target '") + what + "' must be a " +
-                  std::string(formatInfo(format).name) + " 2D texture of " +
-                  std::to_string(t.width()) + "x" + std::to_string(t.height()));
+                  std::string(formatInfo(format).name) + " 2D texture of " + std::to_string(width) +
+                  "x" + std::to_string(height));
     }
   };
-  expect(t.visibility, TextureFormat::RGBA32UI, "visibility");
-  expect(t.normal, TextureFormat::RGBA32F, "normal");
-  expect(t.depth, TextureFormat::D32F, "depth");
+  expect(visibility, TextureFormat::RGBA32UI, "visibility");
+  expect(normal, TextureFormat::RGBA32F, "normal");
+  expect(depth, TextureFormat::D32F, "depth");
 }
 
 }  // namespace
 
 void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
                                GBufferTextures& targets) {
+  render(scene, camera, targets.visibility, targets.normal, targets.depth);
+}
+
+void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
+                               const Texture& visibility, const Texture& normal,
+                               const Texture& depth) {
   ScopedGlLabel label("gbuffer");
-  checkTargets(targets);
-  const int width = targets.width(), height = targets.height();
-  framebuffer_.attachColor(0, targets.visibility);
-  framebuffer_.attachColor(1, targets.normal);
-  framebuffer_.attachDepth(targets.depth);
+  checkTargets(visibility, normal, depth);
+  const int width = visibility.width(), height = visibility.height();
+  framebuffer_.attachColor(0, visibility);
+  framebuffer_.attachColor(1, normal);
+  framebuffer_.attachDepth(depth);
   framebuffer_.checkComplete("gbuffer");
   framebuffer_.bind();
 

@@ -37,6 +37,9 @@ class GBufferRasterizer {
   // viewport follows their size). Sets its own GL state: clip control lower-left/zero-to-one,
   // depth GREATER with clear 0, no culling, no blending.
   void render(const GlSceneBuffers& scene, const Camera& camera, GBufferTextures& targets);
+  // The same, into textures owned elsewhere (the frame graph's pool).
+  void render(const GlSceneBuffers& scene, const Camera& camera, const Texture& visibility,
+              const Texture& normal, const Texture& depth);
 
  private:
   Program program_;

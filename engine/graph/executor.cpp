@@ -1,9 +1,13 @@
 #include "engine/graph/executor.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "engine/core/error.h"
 #include "engine/core/timing.h"
+#include "engine/gl/context.h"
+#include "engine/gl/debug.h"
+#include "engine/graph/render_world.h"
 
 namespace diptych {
 
@@ -16,9 +20,8 @@ class ExecutionContext final : public PassContext {
 
   const Surface& cpuRead(ResourceId id) override { return cpuSlot(id, false); }
   Surface& cpuWrite(ResourceId id) override { return cpuSlot(id, true); }
-  unsigned glTexture(ResourceId id) override {
-    const int slot = slotOf(id, Domain::Gl, true);
-    return ex_.glSlots_[slot];
+  const gl::Texture& glTexture(ResourceId id) override {
+    return ex_.gl_->texture(ex_.glSlots_[slotOf(id, Domain::Gl, true)]);
   }
   const ResourceDesc& desc(ResourceId id) const override {
     check(id, false);
@@ -61,12 +64,14 @@ class ExecutionContext final : public PassContext {
   NodeTiming& timing_;
 };
 
-GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world, GlBackend* gl)
-    : graph_(graph), world_(world), gl_(gl), timings_(graph.nodes.size()) {
-  if (graph.usesGl() && !gl_)
-    throw Error("the frame graph has GL work but no GL context was created");
+GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world)
+    : graph_(graph), world_(world), timings_(graph.nodes.size()) {
+  if (graph.usesGl()) {
+    world_.glContext().makeCurrent();
+    gl_ = std::make_unique<GlBackend>();
+  }
   cpuSlots_.resize(graph.pool.size());
-  glSlots_.assign(graph.pool.size(), 0u);
+  glSlots_.assign(graph.pool.size(), -1);
   for (std::size_t i = 0; i < graph.pool.size(); ++i) {
     if (graph.pool[i].domain == Domain::Cpu)
       cpuSlots_[i] = Surface(graph.pool[i].desc);
@@ -76,8 +81,8 @@ GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world, GlB
 }
 
 GraphExecutor::~GraphExecutor() {
-  for (unsigned t : glSlots_)
-    if (t) gl_->destroyTexture(t);
+  // Pooled GL textures must be destroyed while their context is current.
+  if (gl_) world_.glContext().makeCurrent();
 }
 
 void GraphExecutor::clearTimings() {
@@ -91,7 +96,11 @@ void GraphExecutor::runFrame() {
     timing.counters.clear();
     const bool glWork = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
                         node.kind == NodeKind::Upload;
-    if (glWork) gl_->beginTimer(node.name);
+    std::optional<gl::ScopedGlLabel> label;
+    if (glWork) {
+      label.emplace(node.name);
+      gl_->beginTimer();
+    }
     Stopwatch clock;
     auto slotOf = [&](int storage) { return graph_.storages[storage].poolSlot; };
     switch (node.kind) {
@@ -114,7 +123,7 @@ void GraphExecutor::runFrame() {
         if (node.domain == Domain::Cpu)
           cpuSlots_[slot].fill(res.fallback);
         else
-          gl_->fill(glSlots_[slot], res.desc, res.fallback);
+          gl_->fill(glSlots_[slot], res.fallback);
         break;
       }
     }

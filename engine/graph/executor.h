@@ -8,21 +8,9 @@
 #include <vector>
 
 #include "engine/graph/frame_graph.h"
+#include "engine/graph/gl_backend.h"
 
 namespace diptych {
-
-// What the executor needs from OpenGL; implemented in engine/graph/gl_backend.cpp.
-class GlBackend {
- public:
-  virtual ~GlBackend() = default;
-  virtual unsigned createTexture(const ResourceDesc& desc) = 0;
-  virtual void destroyTexture(unsigned texture) = 0;
-  virtual void readback(unsigned texture, Surface& into) = 0;
-  virtual void upload(const Surface& from, unsigned texture) = 0;
-  virtual void fill(unsigned texture, const ResourceDesc& desc, const vec4& value) = 0;
-  virtual void beginTimer(const std::string& label) = 0;
-  virtual double endTimerMs() = 0;  // GPU time since beginTimer (waits for the result)
-};
 
 struct NodeTiming {
   std::vector<double> cpuMs;               // wall time on the CPU, one sample per frame
@@ -32,8 +20,9 @@ struct NodeTiming {
 
 class GraphExecutor {
  public:
-  // `gl` may be null when the graph has no GL node; `world` is handed to passes.
-  GraphExecutor(const CompiledGraph& graph, RenderWorld& world, GlBackend* gl);
+  // `world` is handed to passes. GL storage is created on world.glContext() when the graph has
+  // GL work (which then needs a context); a CPU-only graph never touches OpenGL.
+  GraphExecutor(const CompiledGraph& graph, RenderWorld& world);
   ~GraphExecutor();
   GraphExecutor(const GraphExecutor&) = delete;
   GraphExecutor& operator=(const GraphExecutor&) = delete;
@@ -47,9 +36,9 @@ class GraphExecutor {
   friend class ExecutionContext;
   const CompiledGraph& graph_;
   RenderWorld& world_;
-  GlBackend* gl_;
+  std::unique_ptr<GlBackend> gl_;
   std::vector<Surface> cpuSlots_;
-  std::vector<unsigned> glSlots_;
+  std::vector<int> glSlots_;
   std::vector<NodeTiming> timings_;
 };
 

@@ -15,7 +15,9 @@
 namespace diptych {
 
 class RenderWorld;  // engine/graph/render_world.h: scene, world geometry, Embree and GL caches
-class GlBackend;
+namespace gl {
+class Texture;
+}
 
 using ResourceId = int;
 constexpr ResourceId kNoResource = -1;
@@ -51,7 +53,7 @@ class PassContext {
   virtual ~PassContext() = default;
   virtual const Surface& cpuRead(ResourceId id) = 0;
   virtual Surface& cpuWrite(ResourceId id) = 0;
-  virtual unsigned glTexture(ResourceId id) = 0;  // GL texture name, for read or write
+  virtual const gl::Texture& glTexture(ResourceId id) = 0;  // GL-domain passes, read or write
   virtual const ResourceDesc& desc(ResourceId id) const = 0;
   virtual RenderWorld& world() = 0;
   virtual const FrameSettings& frame() const = 0;

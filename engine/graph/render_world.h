@@ -2,8 +2,9 @@
 // Per-scene state shared by the passes of a frame: the scene, its world-space triangles, and
 // the Embree scene and GL buffers built from them on first use (so a frame that needs no ray
 // tracing never builds a BVH, and a CPU-only frame never touches OpenGL).
+#include <map>
 #include <memory>
-#include <mutex>
+#include <typeindex>
 
 #include "engine/rt/rt_device.h"
 #include "engine/rt/rt_scene.h"
@@ -24,17 +25,32 @@ class RenderWorld {
   ~RenderWorld();
   const Scene& scene() const { return scene_; }
   const WorldGeometry& geometry() const { return world_; }
-  const RtScene& rtScene();               // Embree BVH, built on first call
-  const gl::GlSceneBuffers& glScene();    // uploaded on first call; needs a context
-  gl::GlContext& glContext();             // throws Error when there is none
+  const RtScene& rtScene();             // Embree BVH, built on first call
+  const gl::GlSceneBuffers& glScene();  // uploaded on first call; needs a context
+  gl::GlContext& glContext();           // throws Error when there is none
+
+  // One T per world (a compiled program, a framebuffer...), built on first use with the context
+  // current and destroyed with it current. Passes keep GL state here, never in themselves,
+  // because a compiled graph may outlive the context it ran on.
+  template <class T>
+  T& glCached() {
+    auto& slot = glCache_[std::type_index(typeid(T))];
+    if (!slot) {
+      makeContextCurrent();
+      slot = std::make_shared<T>();
+    }
+    return *static_cast<T*>(slot.get());
+  }
 
  private:
+  void makeContextCurrent();
   const Scene& scene_;
   WorldGeometry world_;
   gl::GlContext* context_ = nullptr;
   std::unique_ptr<RtDevice> device_;
   std::unique_ptr<RtScene> rt_;
   std::unique_ptr<gl::GlSceneBuffers> glScene_;
+  std::map<std::type_index, std::shared_ptr<void>> glCache_;
 };
 
 }  // namespace diptych

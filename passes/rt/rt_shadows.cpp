@@ -13,7 +13,8 @@ void RtShadowsPass::setup(PassBuilder& b) {
   b.needs(SceneNeed::ShadowCastingLight);
   gbuffer_ = b.read("visibility", Format::RGBA32UI);
   const int layers = std::max<int>(1, int(b.scene().lights.size()));
-  visibility_ = b.write("visibility", {Format::R32F, b.frame().width, b.frame().height, layers}, vec4(1.f));
+  visibility_ =
+      b.write("visibility", {Format::R32F, b.frame().width, b.frame().height, layers}, vec4(1.f));
 }
 
 void RtShadowsPass::execute(PassContext& c) {

@@ -24,7 +24,8 @@ void ShadePass::execute(PassContext& c) {
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
   const Surface& gbuffer = c.cpuRead(gbuffer_);
-  const Surface* visibility = lightVisibility_ == kNoResource ? nullptr : &c.cpuRead(lightVisibility_);
+  const Surface* visibility =
+      lightVisibility_ == kNoResource ? nullptr : &c.cpuRead(lightVisibility_);
   const Surface* reflection = reflection_ == kNoResource ? nullptr : &c.cpuRead(reflection_);
   const Surface* transmission = transmission_ == kNoResource ? nullptr : &c.cpuRead(transmission_);
   Surface& out = c.cpuWrite(color_);
@@ -52,7 +53,8 @@ void ShadePass::execute(PassContext& c) {
           const shading::LightSample s = shading::sampleLight(lights[i], sp.position);
           radiance += shading::lightContribution(sp.resolved, sp.shadingNormal, v, s, vis);
         }
-        radiance += shading::secondaryTerms(sp.resolved, rgb(reflection, x, y), rgb(transmission, x, y));
+        radiance +=
+            shading::secondaryTerms(sp.resolved, rgb(reflection, x, y), rgb(transmission, x, y));
       }
       for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, radiance[ch]);
       out.setF(x, y, 3, 1.f);

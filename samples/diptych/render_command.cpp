@@ -11,9 +11,9 @@
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/core/timing.h"
+#include "engine/gl/context.h"
 #include "engine/graph/executor.h"
 #include "engine/graph/export.h"
-#include "engine/graph/gl_backend.h"
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
@@ -35,7 +35,8 @@ std::pair<int, int> parseSize(const std::string& text) {
   char x = 0, extra = 0;
   if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
       w <= 0 || h <= 0 || w > 16384 || h > 16384)
-    throw InputError("--size", "", "expected WIDTHxHEIGHT with each in 1..16384, got '" + text + "'");
+    throw InputError("--size", "",
+                     "expected WIDTHxHEIGHT with each in 1..16384, got '" + text + "'");
   return {w, h};
 }
 
@@ -54,56 +55,62 @@ void writeText(const std::string& path, const std::string& text) {
 }
 
 void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const RenderOptions& o) {
-  std::printf("per-node timings: median of %d frames after %d warm-up frames (CPU: steady_clock; GPU: GL_TIME_ELAPSED)\n",
-              o.frames, o.warmup);
-  std::printf("%-34s %-9s %-4s %11s %11s %14s\n", "node", "kind", "dom", "cpu ms", "gpu ms", "Mrays/s");
+  std::printf(
+      "per-node timings: median of %d frames after %d warm-up frames (CPU: steady_clock; GPU: "
+      "GL_TIME_ELAPSED)\n",
+      o.frames, o.warmup);
+  std::printf("%-34s %-9s %-4s %11s %11s %14s\n", "node", "kind", "dom", "cpu ms", "gpu ms",
+              "Mrays/s");
   double total = 0;
   for (std::size_t n = 0; n < g.nodes.size(); ++n) {
     const NodeTiming& t = ex.timings()[n];
     const double cpu = summarize(t.cpuMs).median;
     total += cpu;
-    const std::string gpu = t.gpuMs.empty() ? "-" : fmt::format("{:.3f}", summarize(t.gpuMs).median);
+    const std::string gpu =
+        t.gpuMs.empty() ? "-" : fmt::format("{:.3f}", summarize(t.gpuMs).median);
     std::string rate = "-";
     if (auto it = t.counters.find("rays"); it != t.counters.end() && cpu > 0)
       rate = fmt::format("{:.2f}", it->second / (cpu * 1e3));
-    std::printf("%-34s %-9s %-4s %11.3f %11s %14s\n", g.nodes[n].name.c_str(), nodeKindName(g.nodes[n].kind),
-                domainName(g.nodes[n].domain), cpu, gpu.c_str(), rate.c_str());
+    std::printf("%-34s %-9s %-4s %11.3f %11s %14s\n", g.nodes[n].name.c_str(),
+                nodeKindName(g.nodes[n].kind), domainName(g.nodes[n].domain), cpu, gpu.c_str(),
+                rate.c_str());
   }
   std::printf("%-34s %-9s %-4s %11.3f\n", "total (sum of medians)", "", "", total);
   for (const GraphPass& p : g.passes)
-    if (p.culled) std::printf("culled: %s (%s): %s\n", p.name.c_str(), p.type.c_str(), p.cullReason.c_str());
+    if (p.culled)
+      std::printf("culled: %s (%s): %s\n", p.name.c_str(), p.type.c_str(), p.cullReason.c_str());
 }
 
 void runRender(const RenderOptions& o) {
   if (o.verbose) setLogLevel(spdlog::level::debug);
-  if (o.frames < 1 || o.warmup < 0) throw InputError("--frames", "", "need at least one measured frame");
+  if (o.frames < 1 || o.warmup < 0)
+    throw InputError("--frames", "", "need at least one measured frame");
   const std::string outExt = extensionOf(o.out);
   if (outExt != ".png" && outExt != ".exr" && outExt != ".hdr" && outExt != ".jpg")
-    throw InputError("--out", "", "unsupported image extension '" + outExt + "' (use .png, .exr, .hdr or .jpg)");
-  if (!o.graphOut.empty() && extensionOf(o.graphOut) != ".dot" && extensionOf(o.graphOut) != ".json")
+    throw InputError("--out", "",
+                     "unsupported image extension '" + outExt + "' (use .png, .exr, .hdr or .jpg)");
+  if (!o.graphOut.empty() && extensionOf(o.graphOut) != ".dot" &&
+      extensionOf(o.graphOut) != ".json")
     throw InputError("--graph-out", "", "expected a .dot or .json file name");
   const auto [width, height] = parseSize(o.size);
-  ContextKind contextKind = ContextKind::Osmesa;
-  if (o.context == "glfw") contextKind = ContextKind::Glfw;
-  else if (o.context != "osmesa") throw InputError("--context", "", "expected osmesa or glfw");
+  if (o.context != "glfw" && o.context != "osmesa")
+    throw InputError("--context", "", "expected osmesa or glfw");
+  const gl::ContextKind contextKind = gl::parseContextKind(o.context);
 
   const Scene scene = loadScene(o.scene);
   for (const std::string& w : scene.warnings) log().warn("{}", w);
   const Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);
-  FrameSettings frame{.width = width, .height = height,
+  FrameSettings frame{.width = width,
+                      .height = height,
                       .camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
   std::vector<std::string> outputs;
   if (!o.output.empty()) outputs.push_back(o.output);
   const CompiledGraph graph = compileGraph(recipe, builtinPasses(), scene, frame, outputs);
 
-  std::unique_ptr<GlContext> context;
-  std::unique_ptr<GlBackend> backend;
-  if (graph.usesGl()) {
-    context = createContext(contextKind, width, height);
-    backend = makeGlBackend();
-  }
+  std::unique_ptr<gl::GlContext> context;
+  if (graph.usesGl()) context = gl::createContext(contextKind, width, height);
   RenderWorld world(scene, context.get());
-  GraphExecutor executor(graph, world, backend.get());
+  GraphExecutor executor(graph, world);
   const bool tty = isatty(fileno(stderr));
   const int total = o.warmup + o.frames;
   for (int f = 0; f < total; ++f) {
@@ -115,19 +122,23 @@ void runRender(const RenderOptions& o) {
   const std::string outputName = graph.resources[graph.outputs.front()].name;
   const Surface& result = executor.output(outputName);
   if (formatIsInteger(result.desc.format))
-    throw InputError("--output", "", "'" + outputName + "' holds integers and cannot be written as an image");
+    throw InputError("--output", "",
+                     "'" + outputName + "' holds integers and cannot be written as an image");
   writeImage(o.out, result.toImage(), ToneMap{o.exposure});
   std::printf("wrote %s (%s, %dx%d)\n", o.out.c_str(), outputName.c_str(), width, height);
 
   if (!o.graphOut.empty()) {
-    writeText(o.graphOut, extensionOf(o.graphOut) == ".dot" ? graphToDot(graph, &executor.timings())
-                                                            : graphToJson(graph, &executor.timings()).dump(2));
+    writeText(o.graphOut, extensionOf(o.graphOut) == ".dot"
+                              ? graphToDot(graph, &executor.timings())
+                              : graphToJson(graph, &executor.timings()).dump(2));
     std::printf("wrote %s\n", o.graphOut.c_str());
   }
   if (!o.timingsOut.empty()) {
     nlohmann::json j = graphToJson(graph, &executor.timings());
-    j["method"] = fmt::format("median of {} frames after {} warm-up frames; CPU wall clock (steady_clock) "
-                              "per node, GL_TIME_ELAPSED queries for GL nodes and transfers", o.frames, o.warmup);
+    j["method"] = fmt::format(
+        "median of {} frames after {} warm-up frames; CPU wall clock (steady_clock) "
+        "per node, GL_TIME_ELAPSED queries for GL nodes and transfers",
+        o.frames, o.warmup);
     j["scene"] = o.scene;
     writeText(o.timingsOut, j.dump(2));
     std::printf("wrote %s\n", o.timingsOut.c_str());
@@ -141,16 +152,25 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene through a frame-graph recipe");
   cmd->add_option("scene", options->scene, "Scene file (.json, .gltf, .glb)")->required();
-  cmd->add_option("--recipe", options->recipe, "Frame-graph recipe (JSON); default: the hybrid frame");
+  cmd->add_option("--recipe", options->recipe,
+                  "Frame-graph recipe (JSON); default: the hybrid frame");
   cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_option("--out", options->out, "Output image (.png sRGB tone-mapped, .exr/.hdr linear)")->capture_default_str();
-  cmd->add_option("--output", options->output, "Graph resource to write (default: the recipe's first output)");
+  cmd->add_option("--out", options->out, "Output image (.png sRGB tone-mapped, .exr/.hdr linear)")
+      ->capture_default_str();
+  cmd->add_option("--output", options->output,
+                  "Graph resource to write (default: the recipe's first output)");
   cmd->add_option("--graph-out", options->graphOut, "Write the compiled graph (.dot or .json)");
   cmd->add_option("--timings", options->timingsOut, "Write per-node timings and the graph as JSON");
-  cmd->add_option("--frames", options->frames, "Measured frames (median reported)")->capture_default_str();
-  cmd->add_option("--warmup", options->warmup, "Warm-up frames before measuring")->capture_default_str();
-  cmd->add_option("--exposure", options->exposure, "PNG tone map: multiply by 2^exposure, clamp, sRGB")->capture_default_str();
-  cmd->add_option("--context", options->context, "OpenGL context: osmesa (headless) or glfw (window)")->capture_default_str();
+  cmd->add_option("--frames", options->frames, "Measured frames (median reported)")
+      ->capture_default_str();
+  cmd->add_option("--warmup", options->warmup, "Warm-up frames before measuring")
+      ->capture_default_str();
+  cmd->add_option("--exposure", options->exposure,
+                  "PNG tone map: multiply by 2^exposure, clamp, sRGB")
+      ->capture_default_str();
+  cmd->add_option("--context", options->context,
+                  "OpenGL context: osmesa (headless) or glfw (window)")
+      ->capture_default_str();
   cmd->add_flag("-v,--verbose", options->verbose, "Log debug messages");
   cmd->callback([options, &exitCode] {
     runRender(*options);

@@ -152,7 +152,7 @@ TEST(FrameGraph, ExecutesInDependencyOrderAndProducesOutput) {
   ASSERT_EQ(g.nodes.size(), 3u);
   EXPECT_EQ(g.nodes.back().name, "sum");
   RenderWorld world(scene);
-  GraphExecutor ex(g, world, nullptr);
+  GraphExecutor ex(g, world);
   ex.runFrame();
   EXPECT_FLOAT_EQ(ex.output("sum.out").f(3, 2, 0), 3.f);
   EXPECT_EQ(ex.timings().size(), g.nodes.size());
@@ -183,7 +183,7 @@ TEST(FrameGraph, SceneDrivenCullingFeedsConsumersTheDefault) {
   ASSERT_EQ(g.nodes.size(), 2u);
   EXPECT_EQ(g.nodes[0].kind, NodeKind::Default);
   RenderWorld world(noGlass);
-  GraphExecutor ex(g, world, nullptr);
+  GraphExecutor ex(g, world);
   ex.runFrame();
   EXPECT_FLOAT_EQ(ex.output("sum.out").f(0, 0, 0), 0.25f);  // the declared fallback
 
@@ -191,7 +191,7 @@ TEST(FrameGraph, SceneDrivenCullingFeedsConsumersTheDefault) {
   const auto g2 = compileGraph(recipe(json), testRegistry(), glass, smallFrame());
   EXPECT_FALSE(g2.passes[0].culled);
   RenderWorld world2(glass);
-  GraphExecutor ex2(g2, world2, nullptr);
+  GraphExecutor ex2(g2, world2);
   ex2.runFrame();
   EXPECT_FLOAT_EQ(ex2.output("sum.out").f(0, 0, 0), 100.f);
 }
@@ -266,7 +266,7 @@ TEST(FrameGraph, UndeclaredAccessAtExecuteIsAnError) {
     "outputs": ["sum.out"]})"),
                               testRegistry(), scene, smallFrame());
   RenderWorld world(scene);
-  GraphExecutor ex(g, world, nullptr);
+  GraphExecutor ex(g, world);
   const std::string e = errorOf([&] { ex.runFrame(); });
   EXPECT_NE(e.find("pass 's' read resource 'one.out' without declaring it"), std::string::npos)
       << e;
@@ -293,7 +293,7 @@ TEST(FrameGraph, LifetimesAllowPoolReuse) {
                     g.storages[j].lastNode < g.storages[i].firstNode);
       }
   RenderWorld world(scene);
-  GraphExecutor ex(g, world, nullptr);
+  GraphExecutor ex(g, world);
   ex.runFrame();
   EXPECT_FLOAT_EQ(ex.output("a3.out").f(1, 1, 0), 2.f);  // reuse did not clobber live data
 }
@@ -308,7 +308,7 @@ TEST(FrameGraph, InPlaceModifyCreatesANewVersionOnTheSameStorage) {
   EXPECT_EQ(g.resources[out].version, 1);
   EXPECT_EQ(g.storageOf.at({in, Domain::Cpu}), g.storageOf.at({out, Domain::Cpu}));
   RenderWorld world(scene);
-  GraphExecutor ex(g, world, nullptr);
+  GraphExecutor ex(g, world);
   ex.runFrame();
   EXPECT_FLOAT_EQ(ex.output("twice.out").f(0, 0, 0), 6.f);
 }
@@ -324,7 +324,7 @@ TEST(FrameGraph, CrossDomainEdgesGetTransferNodes) {
   EXPECT_EQ(g.nodes[1].name, "readback:raster.out");
   EXPECT_TRUE(g.usesGl());
   RenderWorld world(scene);
-  EXPECT_THROW(GraphExecutor(g, world, nullptr), Error);  // GL work needs a context
+  EXPECT_THROW(GraphExecutor(g, world), Error);  // GL work needs a context
 }
 
 TEST(FrameGraph, ExportsDotAndJsonWithCullReasonsMemoryAndTimings) {
@@ -334,7 +334,7 @@ TEST(FrameGraph, ExportsDotAndJsonWithCullReasonsMemoryAndTimings) {
     "outputs": ["sum.out"]})"),
                               testRegistry(), scene, smallFrame());
   RenderWorld world(scene);
-  GraphExecutor ex(g, world, nullptr);
+  GraphExecutor ex(g, world);
   ex.runFrame();
   ex.runFrame();
   const nlohmann::json j = graphToJson(g, &ex.timings());

@@ -1,0 +1,82 @@
+#include "engine/graph/gl_backend.h"
+
+#include <algorithm>
+#include <bit>
+
+#include "engine/core/error.h"
+#include "engine/gl/loader.h"
+#include "engine/gl/transfer.h"
+
+namespace diptych {
+
+gl::TextureFormat toGlFormat(Format f) {
+  switch (f) {
+    case Format::R32F:
+      return gl::TextureFormat::R32F;
+    case Format::RG32F:
+      return gl::TextureFormat::RG32F;
+    case Format::RGBA32F:
+      return gl::TextureFormat::RGBA32F;
+    case Format::R32UI:
+      return gl::TextureFormat::R32UI;
+    case Format::RGBA32UI:
+      return gl::TextureFormat::RGBA32UI;
+    case Format::D32F:
+      return gl::TextureFormat::D32F;
+  }
+  throw Error("unknown resource format");
+}
+
+GlBackend::GlBackend() : timer_(gl::TimerQuery::create()) {}
+GlBackend::~GlBackend() = default;
+
+int GlBackend::createTexture(const ResourceDesc& d) {
+  const gl::TextureFormat f = toGlFormat(d.format);
+  textures_.push_back(d.layers > 1 ? gl::Texture::create2DArray(f, d.width, d.height, d.layers)
+                                   : gl::Texture::create2D(f, d.width, d.height));
+  descs_.push_back(d);
+  return int(textures_.size() - 1);
+}
+
+void GlBackend::readback(int handle, Surface& into) {
+  const ResourceDesc& d = descs_.at(handle);
+  if (!(into.desc == d))
+    throw Error("readback into a surface of another description: " + describe(into.desc));
+  const std::size_t layerWords = std::size_t(d.width) * d.height * formatChannels(d.format);
+  for (int layer = 0; layer < d.layers; ++layer) {
+    const std::vector<std::uint32_t> words = gl::readTexture(textures_[handle], layer);
+    std::copy(words.begin(), words.end(), into.words.begin() + std::ptrdiff_t(layer * layerWords));
+  }
+}
+
+void GlBackend::upload(const Surface& from, int handle) {
+  const ResourceDesc& d = descs_.at(handle);
+  if (!(from.desc == d))
+    throw Error("upload from a surface of another description: " + describe(from.desc));
+  const std::size_t layerWords = std::size_t(d.width) * d.height * formatChannels(d.format);
+  for (int layer = 0; layer < d.layers; ++layer) {
+    const auto first = from.words.begin() + std::ptrdiff_t(layer * layerWords);
+    gl::uploadTexture(textures_[handle],
+                      std::vector<std::uint32_t>(first, first + std::ptrdiff_t(layerWords)), layer);
+  }
+}
+
+void GlBackend::fill(int handle, const vec4& value) {
+  const ResourceDesc& d = descs_.at(handle);
+  const gl::FormatInfo& info = gl::formatInfo(toGlFormat(d.format));
+  std::uint32_t words[4];
+  for (int c = 0; c < 4; ++c)
+    words[c] = formatIsInteger(d.format) ? std::uint32_t(value[c])
+                                         : std::bit_cast<std::uint32_t>(value[c]);
+  gl::glClearTexImage(textures_[handle].id(), 0, info.pixelFormat, info.pixelType, words);
+}
+
+void GlBackend::beginTimer() {
+  timer_.begin();
+}
+double GlBackend::endTimerMs() {
+  timer_.end();
+  return timer_.milliseconds();
+}
+
+}  // namespace diptych

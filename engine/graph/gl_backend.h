@@ -1,0 +1,34 @@
+#pragma once
+// The frame graph's OpenGL side: pooled textures, readback/upload transfer nodes, default
+// fills and GL_TIME_ELAPSED timing. Needs a current context (engine/gl/context.h).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/gl/objects.h"
+#include "engine/graph/resource.h"
+
+namespace diptych {
+
+class GlBackend {
+ public:
+  GlBackend();
+  ~GlBackend();
+  // A texture for `desc` (2D, or a 2D array when layers > 1); returns its handle.
+  int createTexture(const ResourceDesc& desc);
+  const gl::Texture& texture(int handle) const { return textures_.at(handle); }
+  void readback(int handle, Surface& into);
+  void upload(const Surface& from, int handle);
+  void fill(int handle, const vec4& value);
+  void beginTimer();
+  double endTimerMs();  // waits for the query result
+
+ private:
+  std::vector<gl::Texture> textures_;
+  std::vector<ResourceDesc> descs_;
+  gl::TimerQuery timer_;
+};
+
+gl::TextureFormat toGlFormat(Format format);
+
+}  // namespace diptych

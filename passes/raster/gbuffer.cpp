@@ -1,0 +1,22 @@
+#include "passes/raster/gbuffer.h"
+
+#include "engine/gl/gbuffer_raster.h"
+#include "engine/graph/render_world.h"
+
+namespace diptych {
+
+void GBufferPass::setup(PassBuilder& b) {
+  b.needs(SceneNeed::Geometry);
+  const int w = b.frame().width, h = b.frame().height;
+  visibility_ = b.write("visibility", {Format::RGBA32UI, w, h}, vec4(0.f));
+  normal_ = b.write("normal", {Format::RGBA32F, w, h}, vec4(0.f));
+  depth_ = b.write("depth", {Format::D32F, w, h}, vec4(0.f));
+}
+
+void GBufferPass::execute(PassContext& c) {
+  const gl::GlSceneBuffers& scene = c.world().glScene();
+  c.world().glCached<gl::GBufferRasterizer>().render(
+      scene, c.frame().camera, c.glTexture(visibility_), c.glTexture(normal_), c.glTexture(depth_));
+}
+
+}  // namespace diptych
