@@ -93,39 +93,48 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
 
 std::string graphToDot(const CompiledGraph& g, const std::vector<NodeTiming>* timings) {
   std::string dot = "digraph frame {\n  rankdir=LR;\n  node [fontname=\"Helvetica\"];\n";
-  std::vector<double> medians(g.nodes.size(), -1.0);
-  if (timings)
-    for (std::size_t n = 0; n < g.nodes.size() && n < timings->size(); ++n)
-      medians[n] = summarize((*timings)[n].cpuMs).median;
-  auto nodeIndexOfPass = [&](int pass) {
-    for (std::size_t n = 0; n < g.nodes.size(); ++n)
-      if (g.nodes[n].kind == NodeKind::Pass && g.nodes[n].pass == pass) return int(n);
-    return -1;
+  auto medianOf = [&](std::size_t n) {
+    return timings && n < timings->size() ? summarize((*timings)[n].cpuMs).median : -1.0;
   };
-  for (std::size_t p = 0; p < g.passes.size(); ++p) {
-    const GraphPass& pass = g.passes[p];
-    std::string label = pass.name + "\\n(" + pass.type + ", " + domainName(pass.domain) + ")";
-    if (pass.culled) label += "\\nculled: " + pass.cullReason;
-    const int n = nodeIndexOfPass(int(p));
-    if (n >= 0 && medians[n] >= 0) label += fmt::format("\\n{:.3f} ms", medians[n]);
-    dot += fmt::format("  \"{}\" [shape=box, style=\"{}\", label=\"{}\"];\n", dotEscape(pass.name),
-                       pass.culled ? "dashed" : (pass.domain == Domain::Gl ? "filled" : "rounded"),
-                       dotEscape(label));
-  }
+  // Executed nodes: passes as boxes (GL filled), transfers and defaults as dotted ellipses.
   for (std::size_t n = 0; n < g.nodes.size(); ++n) {
     const GraphNode& node = g.nodes[n];
-    if (node.kind == NodeKind::Pass) continue;
-    std::string label = node.name;
-    if (medians[n] >= 0) label += fmt::format("\\n{:.3f} ms", medians[n]);
-    dot += fmt::format("  \"{}\" [shape=ellipse, style=dotted, label=\"{}\"];\n",
-                       dotEscape(node.name), dotEscape(label));
+    std::string label = dotEscape(node.name);  // escaped parts joined by DOT's \n
+    std::string shape = "shape=ellipse, style=dotted";
+    if (node.kind == NodeKind::Pass) {
+      const GraphPass& pass = g.passes[node.pass];
+      label += "\\n(" + dotEscape(pass.type) + ", " + domainName(pass.domain) + ")";
+      shape = pass.domain == Domain::Gl ? "shape=box, style=filled" : "shape=box, style=rounded";
+    }
+    if (medianOf(n) >= 0) label += fmt::format("\\n{:.3f} ms", medianOf(n));
+    dot += fmt::format("  \"{}\" [{}, label=\"{}\"];\n", dotEscape(node.name), shape, label);
+  }
+  // Culled passes, dashed, with the reason; their recipe edges are dashed too.
+  for (const GraphPass& pass : g.passes) {
+    if (!pass.culled) continue;
+    dot += fmt::format("  \"{}\" [shape=box, style=dashed, label=\"{}\\n({})\\nculled: {}\"];\n",
+                       dotEscape(pass.name), dotEscape(pass.name), dotEscape(pass.type),
+                       dotEscape(pass.cullReason));
   }
   for (const GraphResource& r : g.resources) {
-    const std::string edgeLabel = r.name + "\\n" + describe(r.desc);
-    for (int reader : r.readers)
-      dot +=
-          fmt::format("  \"{}\" -> \"{}\" [label=\"{}\"];\n", dotEscape(g.passes[r.producer].name),
-                      dotEscape(g.passes[reader].name), dotEscape(edgeLabel));
+    for (int reader : r.readers) {
+      if (!g.passes[r.producer].culled && !g.passes[reader].culled) continue;
+      dot += fmt::format("  \"{}\" -> \"{}\" [style=dashed, label=\"{}\"];\n",
+                         dotEscape(g.passes[r.producer].name), dotEscape(g.passes[reader].name),
+                         dotEscape(r.name));
+    }
+  }
+  // Executed edges: from the node that last wrote a storage to each node that reads it.
+  std::vector<int> lastWriter(g.storages.size(), -1);
+  for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+    for (int s : g.nodes[n].storagesRead) {
+      if (lastWriter[s] < 0) continue;
+      const GraphStorage& st = g.storages[s];
+      dot += fmt::format("  \"{}\" -> \"{}\" [label=\"{}\\n{}\"];\n",
+                         dotEscape(g.nodes[lastWriter[s]].name), dotEscape(g.nodes[n].name),
+                         dotEscape(g.resources[st.resource].name), dotEscape(describe(st.desc)));
+    }
+    for (int s : g.nodes[n].storagesWritten) lastWriter[s] = int(n);
   }
   dot += fmt::format("  label=\"pool: {} bytes with reuse, {} without\";\n}}\n", g.bytesWithReuse(),
                      g.bytesWithoutReuse());
