@@ -3,6 +3,7 @@
 #include "engine/core/error.h"
 #include "engine/gl/context.h"
 #include "engine/gl/scene_buffers.h"
+#include "engine/gl/shading_buffers.h"
 
 namespace diptych {
 
@@ -13,6 +14,7 @@ RenderWorld::~RenderWorld() {
   if (!context_) return;
   context_->makeCurrent();  // GL objects die with their context current
   glCache_.clear();
+  glShading_.reset();
   glScene_.reset();
 }
 
@@ -41,4 +43,14 @@ const gl::GlSceneBuffers& RenderWorld::glScene() {
   return *glScene_;
 }
 
+}  // namespace diptych
+
+namespace diptych {
+const gl::GlShadingBuffers& RenderWorld::glShading() {
+  if (!glShading_) {
+    const gl::GlSceneBuffers& geometry = glScene();
+    glShading_ = std::make_unique<gl::GlShadingBuffers>(gl::uploadShading(scene_, geometry));
+  }
+  return *glShading_;
+}
 }  // namespace diptych

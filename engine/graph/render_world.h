@@ -16,6 +16,7 @@ namespace diptych {
 namespace gl {
 class GlContext;
 class GlSceneBuffers;
+class GlShadingBuffers;
 }  // namespace gl
 
 class RenderWorld {
@@ -25,9 +26,10 @@ class RenderWorld {
   ~RenderWorld();
   const Scene& scene() const { return scene_; }
   const WorldGeometry& geometry() const { return world_; }
-  const RtScene& rtScene();             // Embree BVH, built on first call
-  const gl::GlSceneBuffers& glScene();  // uploaded on first call; needs a context
-  gl::GlContext& glContext();           // throws Error when there is none
+  const RtScene& rtScene();                 // Embree BVH, built on first call
+  const gl::GlSceneBuffers& glScene();      // uploaded on first call; needs a context
+  const gl::GlShadingBuffers& glShading();  // materials, lights, instances; uploaded on first call
+  gl::GlContext& glContext();               // throws Error when there is none
 
   // One T per world (a compiled program, a framebuffer...), built on first use with the context
   // current and destroyed with it current. Passes keep GL state here, never in themselves,
@@ -50,6 +52,7 @@ class RenderWorld {
   std::unique_ptr<RtDevice> device_;
   std::unique_ptr<RtScene> rt_;
   std::unique_ptr<gl::GlSceneBuffers> glScene_;
+  std::unique_ptr<gl::GlShadingBuffers> glShading_;
   std::map<std::type_index, std::shared_ptr<void>> glCache_;
 };
 
