@@ -1,6 +1,7 @@
 #include "passes/registry.h"
 
 #include "passes/raster/gbuffer.h"
+#include "passes/rt/rt_secondary.h"
 #include "passes/rt/rt_shadows.h"
 #include "passes/rt/shade.h"
 
@@ -12,6 +13,10 @@ const PassRegistry& builtinPasses() {
     r.add<GBufferPass>("gbuffer",
                        "rasterized visibility buffer, normals and reversed-Z depth (GL)");
     r.add<RtShadowsPass>("rt_shadows", "exact light visibility by Embree shadow rays (CPU)");
+    r.add<RtReflectionPass>("rt_reflection",
+                            "exact reflection: recursive Whitted reflection rays (CPU)");
+    r.add<RtTransmissionPass>("rt_transmission",
+                              "exact transmission: recursive refraction rays (CPU)");
     r.add<ShadePass>("shade", "the lecture's illumination model from the G-buffer (CPU)");
     return r;
   }();
@@ -21,16 +26,22 @@ const PassRegistry& builtinPasses() {
 Recipe defaultHybridRecipe() {
   Recipe recipe;
   recipe.file = "<built-in hybrid recipe>";
+  const std::map<std::string, std::string> fromGbuffer = {{"visibility", "gbuffer.visibility"}};
   recipe.passes = {
       {.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
-      {.name = "shadows",
-       .type = "rt_shadows",
-       .inputs = {{"visibility", "gbuffer.visibility"}},
-       .place = "passes[1]"},
+      {.name = "shadows", .type = "rt_shadows", .inputs = fromGbuffer, .place = "passes[1]"},
+      {.name = "reflection", .type = "rt_reflection", .inputs = fromGbuffer, .place = "passes[2]"},
+      {.name = "transmission",
+       .type = "rt_transmission",
+       .inputs = fromGbuffer,
+       .place = "passes[3]"},
       {.name = "shade",
        .type = "shade",
-       .inputs = {{"visibility", "gbuffer.visibility"}, {"light_visibility", "shadows.visibility"}},
-       .place = "passes[2]"},
+       .inputs = {{"visibility", "gbuffer.visibility"},
+                  {"light_visibility", "shadows.visibility"},
+                  {"reflection", "reflection.reflection"},
+                  {"transmission", "transmission.transmission"}},
+       .place = "passes[4]"},
   };
   recipe.outputs = {"shade.color"};
   return recipe;

@@ -4,18 +4,24 @@
 
 #include <limits>
 
+#include "engine/rt/light_sampling.h"
 #include "engine/rt/ray_offset.h"
 
 namespace diptych {
 
 OcclusionRay makeShadowRay(const Light& light, const ShadowReceiver& receiver) {
+  return makeShadowRayTo(light, receiver, light.position);
+}
+
+OcclusionRay makeShadowRayTo(const Light& light, const ShadowReceiver& receiver,
+                             const vec3& target) {
   OcclusionRay ray;
   ray.tnear = 0.f;
   ray.tfar = -1.f;  // inactive until proven otherwise
   if (!light.castsShadows) return ray;
 
   const bool directional = light.type == LightType::Directional;
-  const vec3 towardLight = directional ? -light.direction : light.position - receiver.position;
+  const vec3 towardLight = directional ? -light.direction : target - receiver.position;
   // Leave from the side of the surface that faces the light.
   const vec3 n = glm::dot(receiver.geometricNormal, towardLight) >= 0.f ? receiver.geometricNormal
                                                                         : -receiver.geometricNormal;
@@ -27,23 +33,62 @@ OcclusionRay makeShadowRay(const Light& light, const ShadowReceiver& receiver) {
     ray.tfar = std::numeric_limits<float>::infinity();
     return ray;
   }
-  const ShadowSegment segment = shadowSegmentTo(ray.origin, light.position);
+  const ShadowSegment segment = shadowSegmentTo(ray.origin, target);
   ray.direction = segment.direction;
   ray.tfar = segment.tfar;  // < 0 (inactive) when the origin is at the light
   return ray;
 }
 
+int shadowRaysPerReceiver(const Light& light, int areaSamples) {
+  return isAreaLight(light) && areaSamples > 1 ? stratifiedSampleCount(areaSamples) : 1;
+}
+
+OcclusionRay makeShadowSample(const Light& light, const ShadowReceiver& receiver, int sample,
+                              int count, std::uint32_t seed) {
+  if (count <= 1) return makeShadowRay(light, receiver);
+  const vec2 s = stratifiedSample(sample, count, seed);
+  return makeShadowRayTo(light, receiver, areaLightPoint(light, s, receiver.position));
+}
+
+float lightVisibility(const RtScene& rt, const Light& light, const ShadowReceiver& receiver,
+                      int areaSamples, std::uint32_t seed) {
+  const int count = shadowRaysPerReceiver(light, areaSamples);
+  int visible = 0;
+  for (int s = 0; s < count; ++s) {
+    const OcclusionRay r = makeShadowSample(light, receiver, s, count, seed);
+    visible += (r.tnear > r.tfar || !rt.occluded(r.origin, r.direction, r.tnear, r.tfar)) ? 1 : 0;
+  }
+  return float(visible) / float(count);
+}
+
 std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lights,
-                                   std::span<const ShadowReceiver> receivers) {
+                                   std::span<const ShadowReceiver> receivers, int areaSamples) {
   const std::size_t n = receivers.size();
-  std::vector<OcclusionRay> rays(lights.size() * n);
-  tbb::parallel_for(std::size_t(0), rays.size(), [&](std::size_t i) {
-    rays[i] = makeShadowRay(lights[i / n], receivers[i % n]);
-  });
-  std::vector<std::uint8_t> occluded(rays.size());
-  rt.occludedBatch(rays, occluded);
-  std::vector<float> visibility(rays.size());
-  for (std::size_t i = 0; i < rays.size(); ++i) visibility[i] = occluded[i] ? 0.f : 1.f;
+  std::vector<float> visibility(lights.size() * n, 1.f);
+  // One light at a time, in chunks, so that many area samples do not need all rays at once.
+  constexpr std::size_t kChunkRays = std::size_t(1) << 20;
+  for (std::size_t l = 0; l < lights.size(); ++l) {
+    const int count = shadowRaysPerReceiver(lights[l], areaSamples);
+    const std::size_t receiversPerChunk = std::max<std::size_t>(1, kChunkRays / std::size_t(count));
+    std::vector<OcclusionRay> rays;
+    std::vector<std::uint8_t> occluded;
+    for (std::size_t first = 0; first < n; first += receiversPerChunk) {
+      const std::size_t last = std::min(n, first + receiversPerChunk);
+      rays.resize((last - first) * std::size_t(count));
+      tbb::parallel_for(first, last, [&](std::size_t p) {
+        for (int s = 0; s < count; ++s)
+          rays[(p - first) * count + s] =
+              makeShadowSample(lights[l], receivers[p], s, count, std::uint32_t(p));
+      });
+      occluded.assign(rays.size(), 0);
+      rt.occludedBatch(rays, occluded);
+      tbb::parallel_for(first, last, [&](std::size_t p) {
+        int visible = 0;
+        for (int s = 0; s < count; ++s) visible += occluded[(p - first) * count + s] ? 0 : 1;
+        visibility[l * n + p] = float(visible) / float(count);
+      });
+    }
+  }
   return visibility;
 }
 

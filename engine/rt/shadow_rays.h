@@ -30,10 +30,30 @@ struct ShadowReceiver {
 // (tnear > tfar), which counts as visible.
 OcclusionRay makeShadowRay(const Light& light, const ShadowReceiver& receiver);
 
+// The same toward an explicit point on the light (an area-light sample).
+OcclusionRay makeShadowRayTo(const Light& light, const ShadowReceiver& receiver,
+                             const vec3& target);
+
+// Rays per receiver for this light: stratifiedSampleCount(areaSamples) for area lights with
+// areaSamples > 1, else 1 (punctual lights, or area lights approximated by their centre).
+int shadowRaysPerReceiver(const Light& light, int areaSamples);
+
+// Ray `sample` of `count` for a receiver; area lights use stratified points on the light
+// (engine/rt/light_sampling.h) jittered by `seed`.
+OcclusionRay makeShadowSample(const Light& light, const ShadowReceiver& receiver, int sample,
+                              int count, std::uint32_t seed);
+
+// V_i for one receiver: the fraction of unoccluded rays (single-ray queries; for recursive
+// tracers). Same rays as traceShadowRays for the same seed.
+float lightVisibility(const RtScene& rt, const Light& light, const ShadowReceiver& receiver,
+                      int areaSamples, std::uint32_t seed);
+
 // visibility[l * receivers.size() + p] in {0, 1} for light l and receiver p (fractions once
 // area lights are sampled). One ray per receiver per light, traced in parallel tiles through
 // RtScene::occludedBatch (Embree ray streams, TBB).
+// With areaSamples > 1, area lights are sampled with that many stratified rays per receiver
+// (seed = receiver index) and the visibility is the unoccluded fraction.
 std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lights,
-                                   std::span<const ShadowReceiver> receivers);
+                                   std::span<const ShadowReceiver> receivers, int areaSamples = 1);
 
 }  // namespace diptych

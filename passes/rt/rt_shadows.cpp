@@ -11,6 +11,7 @@ namespace diptych {
 
 void RtShadowsPass::setup(PassBuilder& b) {
   b.needs(SceneNeed::ShadowCastingLight);
+  areaSamples_ = b.params().integer("area_samples", 16, 1, 4096);
   gbuffer_ = b.read("visibility", Format::RGBA32UI);
   const int layers = std::max<int>(1, int(b.scene().lights.size()));
   visibility_ =
@@ -43,7 +44,7 @@ void RtShadowsPass::execute(PassContext& c) {
       pixelOf.push_back(y * w + x);
     }
   }
-  const std::vector<float> visibility = traceShadowRays(rt, lights, receivers);
+  const std::vector<float> visibility = traceShadowRays(rt, lights, receivers, areaSamples_);
   out.fill(vec4(1.f));
   const std::size_t n = receivers.size();
   tbb::parallel_for(std::size_t(0), lights.size(), [&](std::size_t l) {
@@ -51,7 +52,8 @@ void RtShadowsPass::execute(PassContext& c) {
       out.setF(pixelOf[i] % w, pixelOf[i] / w, 0, visibility[l * n + i], int(l));
   });
   std::size_t active = 0;
-  for (const Light& light : lights) active += light.castsShadows ? n : 0;
+  for (const Light& light : lights)
+    active += light.castsShadows ? n * std::size_t(shadowRaysPerReceiver(light, areaSamples_)) : 0;
   c.count("rays", double(active));
 }
 

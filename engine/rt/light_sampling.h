@@ -1,0 +1,33 @@
+#pragma once
+// Points on area lights for stratified shadow rays (the distributed-ray-tracing estimate of
+// the lecture's visibility V_i in [0,1]: the fraction of the light's samples a point sees).
+#include <cstdint>
+
+#include "engine/scene/scene.h"
+
+namespace diptych {
+
+// The number of strata actually used for a request of n samples: k x k with
+// k = max(1, round(sqrt(n))), so that the strata tile the unit square.
+int stratifiedSampleCount(int requested);
+
+// Sample `index` of a k x k jittered grid in [0,1)^2 (k^2 = stratifiedSampleCount), jittered
+// by a hash of (seed, index) so that a pixel's pattern is reproducible frame after frame.
+vec2 stratifiedSample(int index, int count, std::uint32_t seed);
+
+// A point on the light for the unit-square sample s, as seen from `receiver`:
+//  quad: position + (s.x - 1/2) edgeU + (s.y - 1/2) edgeV;
+//  disc: Shirley & Chiu's concentric map ("A Low Distortion Map Between Disk and Square",
+//        JGT 1997) onto the disc of `radius` perpendicular to `direction`;
+//  sphere: uniform on the hemisphere of the sphere facing the receiver (cos theta = s.x,
+//          phi = 2 pi s.y), which is where every visible point of the sphere lies;
+//  point/spot: the light's position. Directional lights have no position: not to be called.
+vec3 areaLightPoint(const Light& light, vec2 s, const vec3& receiver);
+
+bool isAreaLight(const Light& light);
+
+// A hash that decorrelates per-pixel sample patterns (Jarzynski & Olano, "Hash Functions for
+// GPU Rendering", JCGT 2020: PCG-style 32-bit permutation).
+std::uint32_t pcgHash(std::uint32_t v);
+
+}  // namespace diptych

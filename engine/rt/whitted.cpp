@@ -1,0 +1,78 @@
+#include "engine/rt/whitted.h"
+
+#include <limits>
+
+#include "engine/rt/light_sampling.h"
+#include "engine/rt/ray_offset.h"
+#include "engine/rt/shading.h"
+#include "engine/rt/shadow_rays.h"
+#include "engine/scene/environment.h"
+
+namespace diptych {
+namespace {
+
+// Leaves the surface on the side `direction` points to, offset along the geometric normal.
+Ray spawn(const SurfacePoint& p, const vec3& direction) {
+  const vec3 n =
+      glm::dot(direction, p.geometricNormal) >= 0.f ? p.geometricNormal : -p.geometricNormal;
+  return {offsetRayOrigin(p.position, n, p.positionMagnitude), direction};
+}
+
+}  // namespace
+
+WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
+                             WhittedSettings settings)
+    : scene_(scene), world_(world), rt_(rt), settings_(settings) {}
+
+vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed) const {
+  if (depth > settings_.maxDepth) return vec3(0.f);
+  rays_.fetch_add(1, std::memory_order_relaxed);
+  const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
+  if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
+  const SurfacePoint p = makeSurfacePoint(
+      scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v}, ray.direction);
+  return shade(p, -ray.direction, depth, pcgHash(seed + std::uint32_t(depth)));
+}
+
+vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
+  vec3 sum(0.f);
+  const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
+  for (const Light& light : scene_.lights) {
+    const shading::LightSample s = shading::sampleLight(shading::toShadingLight(light), p.position);
+    if (s.radiance == vec3(0.f)) continue;  // no contribution: skip its shadow rays
+    const float visibility = lightVisibility(rt_, light, receiver, settings_.areaSamples, seed);
+    rays_.fetch_add(std::uint64_t(shadowRaysPerReceiver(light, settings_.areaSamples)),
+                    std::memory_order_relaxed);
+    sum += shading::lightContribution(p.resolved, p.shadingNormal, v, s, visibility);
+  }
+  return sum;
+}
+
+vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth,
+                          std::uint32_t seed) const {
+  const shading::ShadingMaterial& m = p.resolved;
+  vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + direct(p, v, seed);
+  if (m.kt > 0.f) rad += m.kt * m.transmitColor * transmitted(p, v, depth, seed);
+  if (m.kps > 0.f) rad += m.kps * m.mirrorColor * reflected(p, v, depth, seed);
+  return rad;
+}
+
+vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth,
+                              std::uint32_t seed) const {
+  if (depth >= settings_.maxDepth) return vec3(0.f);
+  const vec3 r = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
+  return radiance(spawn(p, r), depth + 1, seed);
+}
+
+vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth,
+                                std::uint32_t seed) const {
+  if (depth >= settings_.maxDepth) return vec3(0.f);
+  // Entering through the front face goes from air (1) into the material (ior); leaving goes
+  // back out. Nested media are told apart by face orientation only (no medium stack).
+  const float ior = scene_.material(p.material).ior;
+  const float eta = p.frontFacing ? 1.f / ior : ior;
+  const shading::Refraction t = shading::refractLecture(v, p.shadingNormal, eta);
+  return radiance(spawn(p, t.t), depth + 1, seed);
+}
+
+}  // namespace diptych

@@ -1,0 +1,52 @@
+#pragma once
+// The lecture's recursive ray tracer (Tema 5, RAYTRACING / EVALUAMILREC / DIRECTA), sharing the
+// shading code of the hybrid passes (shaders/common/shading.glsl through engine/rt/shading.h):
+//   RAYTRACING(o, u, n): n > max -> 0; miss -> environment radiance along u;
+//                        hit p -> EVALUAMILREC(p, -u, n)
+//   EVALUAMILREC: M_E + A_G + sum_i V_i S_i DIRECTA(p, v, l_i)
+//                 + k_t M_T RAYTRACING(p, t, n + 1)  (if k_t > 0 and n < max)
+//                 + k_ps M_PS RAYTRACING(p, r, n + 1) (if k_ps > 0 and n < max)
+// V_i is traced with shadow rays (area lights: stratified samples). Depth counts as in the
+// lecture: the primary ray has n = 1, and a surface at depth n spawns secondary rays only when
+// n < maxDepth.
+#include <atomic>
+#include <cstdint>
+
+#include "engine/rt/rt_scene.h"
+#include "engine/rt/surface.h"
+#include "engine/scene/camera_math.h"
+
+namespace diptych {
+
+struct WhittedSettings {
+  int maxDepth = 5;      // the lecture's max
+  int areaSamples = 16;  // stratified shadow rays per area light
+};
+
+class WhittedTracer {
+ public:
+  WhittedTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
+                WhittedSettings settings);
+
+  // RAYTRACING(o, u, depth); the caller offsets o if it leaves a surface.
+  vec3 radiance(const Ray& ray, int depth, std::uint32_t seed) const;
+  // EVALUAMILREC at a known surface point seen from direction v (unit, toward the viewer).
+  vec3 shade(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed) const;
+  // The secondary radiances of EVALUAMILREC, without their k M factors: L_in(p, r) and
+  // L_in(p, t). Each returns 0 when depth >= maxDepth.
+  vec3 reflected(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed) const;
+  vec3 transmitted(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed) const;
+
+  std::uint64_t raysTraced() const { return rays_.load(std::memory_order_relaxed); }
+  const WhittedSettings& settings() const { return settings_; }
+
+ private:
+  vec3 direct(const SurfacePoint& point, const vec3& v, std::uint32_t seed) const;
+  const Scene& scene_;
+  const WorldGeometry& world_;
+  const RtScene& rt_;
+  WhittedSettings settings_;
+  mutable std::atomic<std::uint64_t> rays_{0};
+};
+
+}  // namespace diptych

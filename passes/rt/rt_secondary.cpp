@@ -1,0 +1,52 @@
+#include "passes/rt/rt_secondary.h"
+
+#include <tbb/parallel_for.h>
+
+#include "engine/graph/render_world.h"
+#include "engine/rt/whitted.h"
+#include "passes/common/visibility_texel.h"
+
+namespace diptych {
+
+void RtSecondaryPass::setup(PassBuilder& b) {
+  const bool reflection = kind_ == Kind::Reflection;
+  b.needs(reflection ? SceneNeed::ReflectiveMaterial : SceneNeed::TransmissiveMaterial);
+  maxDepth_ = b.params().integer("depth", 5, 2, 64);
+  areaSamples_ = b.params().integer("area_samples", 16, 1, 4096);
+  gbuffer_ = b.read("visibility", Format::RGBA32UI);
+  signal_ = b.write(reflection ? "reflection" : "transmission",
+                    {Format::RGBA32F, b.frame().width, b.frame().height}, vec4(0.f));
+}
+
+void RtSecondaryPass::execute(PassContext& c) {
+  RenderWorld& world = c.world();
+  const Scene& scene = world.scene();
+  const FrameSettings& frame = c.frame();
+  const Surface& gbuffer = c.cpuRead(gbuffer_);
+  Surface& out = c.cpuWrite(signal_);
+  const WhittedTracer tracer(scene, world.geometry(), world.rtScene(), {maxDepth_, areaSamples_});
+  const bool reflection = kind_ == Kind::Reflection;
+
+  tbb::parallel_for(0, frame.height, [&](int y) {
+    for (int x = 0; x < frame.width; ++x) {
+      vec3 radiance(0.f);
+      if (const auto hit = visibilityTexel(gbuffer, x, y)) {
+        const Material& m =
+            scene.material(scene.meshes[scene.instances[hit->instance].mesh].material);
+        if (reflection ? m.kps > 0.f : m.kt > 0.f) {
+          const Ray eye = primaryRay(frame.camera, frame.width, frame.height, x + 0.5f, y + 0.5f);
+          const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
+          const std::uint32_t seed = std::uint32_t(y * frame.width + x);
+          // The G-buffer point is the lecture's depth 1; its secondary rays are depth 2.
+          radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed)
+                                : tracer.transmitted(p, -eye.direction, 1, seed);
+        }
+      }
+      for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, radiance[ch]);
+      out.setF(x, y, 3, 1.f);
+    }
+  });
+  c.count("rays", double(tracer.raysTraced()));
+}
+
+}  // namespace diptych

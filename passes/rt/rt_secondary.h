@@ -1,0 +1,36 @@
+#pragma once
+// The exact producers of the reflection and transmission slots: from each G-buffer point whose
+// material has k_ps > 0 (reflection) or k_t > 0 (transmission), the radiance arriving along the
+// mirror or refracted direction, traced recursively by the Whitted tracer (engine/rt/whitted.h)
+// with the same shading as everything else. Other pixels get 0.
+#include "engine/graph/pass.h"
+
+namespace diptych {
+
+class RtSecondaryPass : public Pass {
+ public:
+  enum class Kind { Reflection, Transmission };
+  explicit RtSecondaryPass(Kind kind) : kind_(kind) {}
+  Domain domain() const override { return Domain::Cpu; }
+  void setup(PassBuilder& builder) override;
+  void execute(PassContext& context) override;
+
+ private:
+  Kind kind_;
+  int maxDepth_ = 5, areaSamples_ = 16;
+  ResourceId gbuffer_ = kNoResource, signal_ = kNoResource;
+};
+
+// Recursive reflection rays; params: depth (lecture's max, default 5), area_samples (16).
+class RtReflectionPass : public RtSecondaryPass {
+ public:
+  RtReflectionPass() : RtSecondaryPass(Kind::Reflection) {}
+};
+
+// Recursive refraction rays (Snell, total internal reflection); same params.
+class RtTransmissionPass : public RtSecondaryPass {
+ public:
+  RtTransmissionPass() : RtSecondaryPass(Kind::Transmission) {}
+};
+
+}  // namespace diptych
