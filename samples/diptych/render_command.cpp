@@ -18,6 +18,7 @@
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
 #include "passes/registry.h"
+#include "passes/slots.h"
 
 namespace diptych::cli {
 namespace {
@@ -25,6 +26,7 @@ namespace {
 struct RenderOptions {
   std::string scene, recipe, size = "640x480", out = "out.png", graphOut, timingsOut, output;
   std::string context = "osmesa";
+  std::vector<std::string> slots;
   int frames = 5, warmup = 2;
   float exposure = 0.f;
   bool verbose = false;
@@ -99,7 +101,8 @@ void runRender(const RenderOptions& o) {
 
   const Scene scene = loadScene(o.scene);
   for (const std::string& w : scene.warnings) log().warn("{}", w);
-  const Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);
+  Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);
+  for (const std::string& text : o.slots) applySlotOverride(recipe, parseSlotOverride(text), builtinPasses());
   FrameSettings frame{.width = width,
                       .height = height,
                       .camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
@@ -157,6 +160,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--out", options->out, "Output image (.png sRGB tone-mapped, .exr/.hdr linear)")
       ->capture_default_str();
+  cmd->add_option("--slot", options->slots,
+                  "Override a technique slot: SLOT=TYPE[:key=value,...] (see docs/technique-slots.md)");
   cmd->add_option("--output", options->output,
                   "Graph resource to write (default: the recipe's first output)");
   cmd->add_option("--graph-out", options->graphOut, "Write the compiled graph (.dot or .json)");
