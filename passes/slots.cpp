@@ -71,8 +71,11 @@ SlotOverride parseSlotOverride(const std::string& text) {
 
 void applySlotOverride(Recipe& recipe, const SlotOverride& o, const PassRegistry& registry) {
   const auto& slots = techniqueSlots();
-  const auto slot = std::find_if(slots.begin(), slots.end(), [&](const SlotInfo& s) { return s.slot == o.slot; });
-  if (slot == slots.end()) throw InputError("--slot", o.text, "unknown slot '" + o.slot + "' (slots: visibility, reflection, transmission)");
+  const auto slot =
+      std::find_if(slots.begin(), slots.end(), [&](const SlotInfo& s) { return s.slot == o.slot; });
+  if (slot == slots.end())
+    throw InputError("--slot", o.text,
+                     "unknown slot '" + o.slot + "' (slots: visibility, reflection, transmission)");
   if (!registry.find(o.type)) {
     std::string known;
     for (const std::string& n : registry.names()) known += (known.empty() ? "" : ", ") + n;
@@ -91,10 +94,15 @@ void applySlotOverride(Recipe& recipe, const SlotOverride& o, const PassRegistry
     return;
   }
   const RecipePass* gbuffer = findPassOfType(recipe, "gbuffer");
-  if (!gbuffer) throw InputError(recipe.file, "passes", "--slot needs a recipe with a 'gbuffer' pass");
+  if (!gbuffer)
+    throw InputError(recipe.file, "passes", "--slot needs a recipe with a 'gbuffer' pass");
   if (findPass(recipe, o.slot))
-    throw InputError(recipe.file, "passes", "a pass is already named '" + o.slot + "' but does not feed shade's '" + slot->shadeInput + "'");
-  RecipePass added{.name = o.slot, .type = o.type, .params = o.params,
+    throw InputError(recipe.file, "passes",
+                     "a pass is already named '" + o.slot + "' but does not feed shade's '" +
+                         slot->shadeInput + "'");
+  RecipePass added{.name = o.slot,
+                   .type = o.type,
+                   .params = o.params,
                    .inputs = {{"visibility", gbuffer->name + ".visibility"}},
                    .place = "--slot " + o.text};
   const std::string gbufferName = gbuffer->name;

@@ -127,8 +127,12 @@ void GraphExecutor::runFrame() {
         break;
       }
     }
-    if (glWork) timing.gpuMs.push_back(gl_->endTimerMs());
-    timing.cpuMs.push_back(clock.milliseconds());
+    const double gpuMs = glWork ? gl_->endTimerMs() : 0.0;
+    const double cpuMs = clock.milliseconds();
+    // The CPU clock waits for the query result, so GL time cannot exceed it; llvmpipe returns
+    // a garbage value (an absolute timestamp) for a query started before its first scene.
+    if (glWork && gpuMs <= cpuMs) timing.gpuMs.push_back(gpuMs);
+    timing.cpuMs.push_back(cpuMs);
   }
 }
 

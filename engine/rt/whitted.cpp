@@ -28,6 +28,7 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed) cons
   if (depth > settings_.maxDepth) return vec3(0.f);
   rays_.fetch_add(1, std::memory_order_relaxed);
   const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
+  if (observer_) observer_({ray, depth, hit});
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
   const SurfacePoint p = makeSurfacePoint(
       scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v}, ray.direction);

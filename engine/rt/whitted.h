@@ -11,12 +11,21 @@
 // n < maxDepth.
 #include <atomic>
 #include <cstdint>
+#include <functional>
+#include <optional>
 
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface.h"
 #include "engine/scene/camera_math.h"
 
 namespace diptych {
+
+// One node of the lecture's ray tree: a ray cast at some depth and what it hit.
+struct RayTreeEvent {
+  Ray ray;
+  int depth = 1;
+  std::optional<Hit> hit;
+};
 
 struct WhittedSettings {
   int maxDepth = 5;      // the lecture's max
@@ -38,6 +47,11 @@ class WhittedTracer {
   vec3 transmitted(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed) const;
 
   std::uint64_t raysTraced() const { return rays_.load(std::memory_order_relaxed); }
+  // Called for every RAYTRACING call (not shadow rays), for inspecting or testing the ray tree.
+  // Must be thread-safe if the tracer is used from several threads.
+  void setRayObserver(std::function<void(const RayTreeEvent&)> observer) {
+    observer_ = std::move(observer);
+  }
   const WhittedSettings& settings() const { return settings_; }
 
  private:
@@ -47,6 +61,7 @@ class WhittedTracer {
   const RtScene& rt_;
   WhittedSettings settings_;
   mutable std::atomic<std::uint64_t> rays_{0};
+  std::function<void(const RayTreeEvent&)> observer_;
 };
 
 }  // namespace diptych

@@ -26,31 +26,36 @@ void RtShadowsPass::execute(PassContext& c) {
   const auto& lights = world.scene().lights;
   const RtScene& rt = world.rtScene();
 
-  // Receivers for covered pixels only; background pixels stay fully visible.
-  std::vector<int> pixelOf;
-  std::vector<ShadowReceiver> receivers;
-  pixelOf.reserve(std::size_t(w) * h);
-  receivers.reserve(std::size_t(w) * h);
-  for (int y = 0; y < h; ++y) {
+  // Receivers for covered pixels only, built in parallel per row, then compacted in order.
+  std::vector<int> rowCount(h + 1, 0);
+  tbb::parallel_for(0, h, [&](int y) {
+    for (int x = 0; x < w; ++x) rowCount[y + 1] += gbuffer.u(x, y, 0) != 0u ? 1 : 0;
+  });
+  for (int y = 0; y < h; ++y) rowCount[y + 1] += rowCount[y];
+  const std::size_t n = std::size_t(rowCount[h]);
+  std::vector<int> pixelOf(n);
+  std::vector<ShadowReceiver> receivers(n);
+  tbb::parallel_for(0, h, [&](int y) {
+    std::size_t i = std::size_t(rowCount[y]);
     for (int x = 0; x < w; ++x) {
       const auto hit = visibilityTexel(gbuffer, x, y);
       if (!hit) continue;
       const WorldMesh& mesh = world.geometry().meshes.at(hit->instance);
       const std::uint32_t* tri = &mesh.indices.at(3 * std::size_t(hit->primitive));
-      receivers.push_back({interpolatePosition(mesh, hit->primitive, hit->u, hit->v),
-                           geometricNormal(mesh, hit->primitive),
-                           vertexMagnitude(mesh.positions[tri[0]], mesh.positions[tri[1]],
-                                           mesh.positions[tri[2]])});
-      pixelOf.push_back(y * w + x);
+      receivers[i] = {
+          interpolatePosition(mesh, hit->primitive, hit->u, hit->v),
+          geometricNormal(mesh, hit->primitive),
+          vertexMagnitude(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]])};
+      pixelOf[i++] = y * w + x;
     }
-  }
+  });
   const std::vector<float> visibility = traceShadowRays(rt, lights, receivers, areaSamples_);
   out.fill(vec4(1.f));
-  const std::size_t n = receivers.size();
-  tbb::parallel_for(std::size_t(0), lights.size(), [&](std::size_t l) {
-    for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t l = 0; l < lights.size(); ++l) {
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
       out.setF(pixelOf[i] % w, pixelOf[i] / w, 0, visibility[l * n + i], int(l));
-  });
+    });
+  }
   std::size_t active = 0;
   for (const Light& light : lights)
     active += light.castsShadows ? n * std::size_t(shadowRaysPerReceiver(light, areaSamples_)) : 0;
