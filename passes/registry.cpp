@@ -3,6 +3,7 @@
 #include "passes/raster/gbuffer.h"
 #include "passes/rt/rt_secondary.h"
 #include "passes/rt/rt_shadows.h"
+#include "passes/rt/rt_whitted.h"
 #include "passes/rt/shade.h"
 
 namespace diptych {
@@ -17,6 +18,8 @@ const PassRegistry& builtinPasses() {
                             "exact reflection: recursive Whitted reflection rays (CPU)");
     r.add<RtTransmissionPass>("rt_transmission",
                               "exact transmission: recursive refraction rays (CPU)");
+    r.add<RtWhittedPass>("rt_whitted",
+                         "full ray tracing: the Whitted reference from primary rays (CPU)");
     r.add<ShadePass>("shade", "the lecture's illumination model from the G-buffer (CPU)");
     return r;
   }();

@@ -62,7 +62,8 @@ float lightVisibility(const RtScene& rt, const Light& light, const ShadowReceive
 }
 
 std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lights,
-                                   std::span<const ShadowReceiver> receivers, int areaSamples) {
+                                   std::span<const ShadowReceiver> receivers, int areaSamples,
+                                   std::span<const std::uint32_t> seeds) {
   const std::size_t n = receivers.size();
   std::vector<float> visibility(lights.size() * n, 1.f);
   // One light at a time, in chunks, so that many area samples do not need all rays at once.
@@ -77,8 +78,8 @@ std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lig
       rays.resize((last - first) * std::size_t(count));
       tbb::parallel_for(first, last, [&](std::size_t p) {
         for (int s = 0; s < count; ++s)
-          rays[(p - first) * count + s] =
-              makeShadowSample(lights[l], receivers[p], s, count, std::uint32_t(p));
+          rays[(p - first) * count + s] = makeShadowSample(
+              lights[l], receivers[p], s, count, seeds.empty() ? std::uint32_t(p) : seeds[p]);
       });
       occluded.assign(rays.size(), 0);
       rt.occludedBatch(rays, occluded);

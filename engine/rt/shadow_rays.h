@@ -52,8 +52,11 @@ float lightVisibility(const RtScene& rt, const Light& light, const ShadowReceive
 // area lights are sampled). One ray per receiver per light, traced in parallel tiles through
 // RtScene::occludedBatch (Embree ray streams, TBB).
 // With areaSamples > 1, area lights are sampled with that many stratified rays per receiver
-// (seed = receiver index) and the visibility is the unoccluded fraction.
+// and the visibility is the unoccluded fraction. seeds[p] jitters receiver p's pattern (the
+// receiver index when empty); passes use the pixel index, as the Whitted tracer does, so that
+// the hybrid and the reference trace the same shadow rays.
 std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lights,
-                                   std::span<const ShadowReceiver> receivers, int areaSamples = 1);
+                                   std::span<const ShadowReceiver> receivers, int areaSamples = 1,
+                                   std::span<const std::uint32_t> seeds = {});
 
 }  // namespace diptych

@@ -32,7 +32,7 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed) cons
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
   const SurfacePoint p = makeSurfacePoint(
       scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v}, ray.direction);
-  return shade(p, -ray.direction, depth, pcgHash(seed + std::uint32_t(depth)));
+  return shade(p, -ray.direction, depth, seed);
 }
 
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
@@ -62,7 +62,7 @@ vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth,
                               std::uint32_t seed) const {
   if (depth >= settings_.maxDepth) return vec3(0.f);
   const vec3 r = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
-  return radiance(spawn(p, r), depth + 1, seed);
+  return radiance(spawn(p, r), depth + 1, pcgHash(seed ^ 0x52454646u));  // "REFF"
 }
 
 vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth,
@@ -73,7 +73,7 @@ vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth,
   const float ior = scene_.material(p.material).ior;
   const float eta = p.frontFacing ? 1.f / ior : ior;
   const shading::Refraction t = shading::refractLecture(v, p.shadingNormal, eta);
-  return radiance(spawn(p, t.t), depth + 1, seed);
+  return radiance(spawn(p, t.t), depth + 1, pcgHash(seed ^ 0x5452414eu));  // "TRAN"
 }
 
 }  // namespace diptych

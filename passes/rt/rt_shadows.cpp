@@ -33,7 +33,7 @@ void RtShadowsPass::execute(PassContext& c) {
   });
   for (int y = 0; y < h; ++y) rowCount[y + 1] += rowCount[y];
   const std::size_t n = std::size_t(rowCount[h]);
-  std::vector<int> pixelOf(n);
+  std::vector<std::uint32_t> pixelOf(n);  // pixel index: also the area-light sample seed
   std::vector<ShadowReceiver> receivers(n);
   tbb::parallel_for(0, h, [&](int y) {
     std::size_t i = std::size_t(rowCount[y]);
@@ -46,14 +46,15 @@ void RtShadowsPass::execute(PassContext& c) {
           interpolatePosition(mesh, hit->primitive, hit->u, hit->v),
           geometricNormal(mesh, hit->primitive),
           vertexMagnitude(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]])};
-      pixelOf[i++] = y * w + x;
+      pixelOf[i++] = std::uint32_t(y * w + x);
     }
   });
-  const std::vector<float> visibility = traceShadowRays(rt, lights, receivers, areaSamples_);
+  const std::vector<float> visibility =
+      traceShadowRays(rt, lights, receivers, areaSamples_, pixelOf);
   out.fill(vec4(1.f));
   for (std::size_t l = 0; l < lights.size(); ++l) {
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
-      out.setF(pixelOf[i] % w, pixelOf[i] / w, 0, visibility[l * n + i], int(l));
+      out.setF(int(pixelOf[i] % w), int(pixelOf[i] / w), 0, visibility[l * n + i], int(l));
     });
   }
   std::size_t active = 0;
