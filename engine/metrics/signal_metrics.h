@@ -1,0 +1,47 @@
+#pragma once
+// Per-slot signal metrics (docs/metrics.md): a producer's slot signal against the exact
+// ray-traced signal on the same G-buffer pixels.
+#include <cstdint>
+#include <vector>
+
+#include "engine/core/image.h"
+
+namespace diptych {
+
+// Light visibility of one light: classification of each receiver pixel against the exact
+// visibility, with visibility >= 0.5 counting as lit. Pixels within `band` pixels (Chebyshev
+// distance) of an exact shadow boundary are counted separately, because a pixel-exact boundary
+// is not expected of any raster technique.
+struct VisibilityConfusion {
+  int band = 2;
+  long long receivers = 0;  // pixels with a surface (mask true)
+  long long falseShadowOutside = 0, falseLitOutside = 0, correctOutside = 0;
+  long long falseShadowInside = 0, falseLitInside = 0, correctInside = 0;
+  // Mean signed displacement of the approximate boundary from the exact one, in pixels, along
+  // the exact visibility gradient: > 0 when the shadow grows (acne, over-darkening), < 0 when
+  // it shrinks (peter-panning, leaks). Measured on exact-boundary pixels by walking up to
+  // `band` * 4 pixels across the boundary until the approximate classification changes.
+  double meanBoundaryDisplacement = 0;
+  long long boundarySamples = 0;
+
+  double falseShadowRate() const;  // outside the band, over receivers outside the band
+  double falseLitRate() const;
+};
+
+// `mask[i]` true where a surface is seen (G-buffer coverage); visibilities are one value per
+// pixel, row-major, width x height.
+VisibilityConfusion compareVisibility(const std::vector<float>& approximate,
+                                      const std::vector<float>& exact,
+                                      const std::vector<std::uint8_t>& mask, int width, int height,
+                                      int band = 2);
+
+// Radiance error of a reflection/transmission signal over the pixels where the slot contributes
+// (mask true): RMSE and relative RMSE sqrt(sum |a - e|^2 / sum |e|^2), on RGB.
+struct SignalError {
+  long long pixels = 0;
+  double rmse = 0, relativeRmse = 0;
+};
+SignalError compareRadiance(const Image& approximate, const Image& exact,
+                            const std::vector<std::uint8_t>& mask);
+
+}  // namespace diptych
