@@ -102,7 +102,8 @@ void runRender(const RenderOptions& o) {
   const Scene scene = loadScene(o.scene);
   for (const std::string& w : scene.warnings) log().warn("{}", w);
   Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);
-  for (const std::string& text : o.slots) applySlotOverride(recipe, parseSlotOverride(text), builtinPasses());
+  for (const std::string& text : o.slots)
+    applySlotOverride(recipe, parseSlotOverride(text), builtinPasses());
   FrameSettings frame{.width = width,
                       .height = height,
                       .camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
@@ -160,8 +161,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--out", options->out, "Output image (.png sRGB tone-mapped, .exr/.hdr linear)")
       ->capture_default_str();
-  cmd->add_option("--slot", options->slots,
-                  "Override a technique slot: SLOT=TYPE[:key=value,...] (see docs/technique-slots.md)");
+  cmd->add_option(
+      "--slot", options->slots,
+      "Override a technique slot: SLOT=TYPE[:key=value,...] (see docs/technique-slots.md)");
   cmd->add_option("--output", options->output,
                   "Graph resource to write (default: the recipe's first output)");
   cmd->add_option("--graph-out", options->graphOut, "Write the compiled graph (.dot or .json)");

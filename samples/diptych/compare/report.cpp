@@ -1,0 +1,213 @@
+#include "samples/diptych/compare/report.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include "engine/core/error.h"
+#include "engine/core/log.h"
+
+namespace diptych::cli {
+namespace {
+
+// The sRGB display version of a linear image, as the PNG writer would encode it (for panels).
+Image display(const Image& linear) {
+  Image out(linear.width, linear.height, 3);
+  for (int y = 0; y < linear.height; ++y)
+    for (int x = 0; x < linear.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float v = linear.channels > c ? linear.at(x, y, c) : linear.at(x, y, 0);
+        out.at(x, y, c) = std::isfinite(v) ? std::clamp(v, 0.f, 1.f) : 0.f;
+      }
+  return out;
+}
+
+// variant | reference | heat map, side by side (linear values; the PNG writer encodes sRGB).
+Image panel(const Image& variant, const Image& reference, const Image& heatmap) {
+  const Image parts[3] = {display(variant), display(reference), heatmap};
+  const int gap = 4;
+  Image out(3 * variant.width + 2 * gap, variant.height, 3, 1.f);
+  for (int p = 0; p < 3; ++p)
+    for (int y = 0; y < variant.height; ++y)
+      for (int x = 0; x < variant.width; ++x)
+        for (int c = 0; c < 3; ++c)
+          out.at(p * (variant.width + gap) + x, y, c) =
+              parts[p].at(x, y, std::min(c, parts[p].channels - 1));
+  return out;
+}
+
+std::string html(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::string number(const nlohmann::json& v) {
+  return v.is_number() ? fmt::format("{:.4g}", v.get<double>()) : "-";
+}
+
+const char* kStyle =
+    R"(body{font-family:system-ui,sans-serif;margin:24px;color:#222;max-width:1400px}
+table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:3px 7px;text-align:right}
+th{background:#f3f3f3}td:first-child{text-align:left}tr.pareto td:first-child{font-weight:bold;color:#b00}
+.variant{display:flex;gap:16px;align-items:flex-start;margin:18px 0}.split{position:relative;display:inline-block}
+.split img{display:block}.split img.top{position:absolute;top:0;left:0;clip-path:inset(0 calc(100% - var(--pos)) 0 0)}
+.split input{width:100%}.caption{font-size:12px;color:#555}img.plot{max-width:100%})";
+
+}  // namespace
+
+std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlohmann::json& header,
+                                     const Image& reference, std::vector<ReportVariant>& variants,
+                                     const std::string& plotMetric) {
+  std::vector<std::string> written;
+  auto image = [&](const std::string& rel, const Image& img) {
+    writeImage(dir / rel, img);
+    written.push_back(rel);
+  };
+  image("images/reference.exr", reference);
+  image("images/reference.png", reference);
+  nlohmann::json results = header;
+  results["variants"] = nlohmann::json::array();
+  for (ReportVariant& v : variants) {
+    image("images/" + v.name + ".exr", v.image);
+    image("images/" + v.name + ".png", v.image);
+    image("heatmaps/" + v.name + ".png", v.heatmap);
+    image("panels/" + v.name + ".png", panel(v.image, reference, v.heatmap));
+    const std::string graphFile = "graphs/" + v.name + ".json";
+    std::filesystem::create_directories(dir / "graphs");
+    std::ofstream(dir / graphFile) << v.result["graph"].dump(2);
+    written.push_back(graphFile);
+    v.result["files"] = {{"exr", "images/" + v.name + ".exr"},
+                         {"png", "images/" + v.name + ".png"},
+                         {"heatmap", "heatmaps/" + v.name + ".png"},
+                         {"panel", "panels/" + v.name + ".png"},
+                         {"graph", graphFile}};
+    nlohmann::json entry = v.result;
+    entry.erase("graph");  // kept in its own file
+    results["variants"].push_back(entry);
+  }
+  std::ofstream(dir / "results.json") << results.dump(2);
+  written.push_back("results.json");
+
+  // CSV: one row per variant; per-pass columns are the union over variants.
+  std::vector<std::string> metricNames, passNames;
+  for (const auto& v : results["variants"]) {
+    for (const auto& [k, _] : v["metrics"].items())
+      if (std::find(metricNames.begin(), metricNames.end(), k) == metricNames.end())
+        metricNames.push_back(k);
+    for (const auto& [k, _] : v["pass_ms"].items())
+      if (std::find(passNames.begin(), passNames.end(), k) == passNames.end())
+        passNames.push_back(k);
+  }
+  std::ofstream csv(dir / "results.csv");
+  csv << "variant,total_ms,rays,pareto";
+  for (const auto& m : metricNames) csv << "," << m;
+  for (const auto& p : passNames) csv << ",ms:" << p;
+  csv << "\n";
+  for (const auto& v : results["variants"]) {
+    csv << v["name"].get<std::string>() << "," << v["total_ms"].get<double>() << ","
+        << v["rays"].get<double>() << "," << (v["pareto"].get<bool>() ? 1 : 0);
+    for (const auto& m : metricNames)
+      csv << "," << (v["metrics"].contains(m) ? v["metrics"][m].dump() : "");
+    for (const auto& p : passNames)
+      csv << "," << (v["pass_ms"].contains(p) ? v["pass_ms"][p].dump() : "");
+    csv << "\n";
+  }
+  csv.close();
+  written.push_back("results.csv");
+
+  const std::string script = std::string(DIPTYCH_TOOLS_DIR) + "/plot_error_vs_time.py";
+  const std::string command =
+      fmt::format("/usr/bin/python3 '{}' '{}' '{}' '{}'", script, (dir / "results.json").string(),
+                  plotMetric, (dir / "plot").string());
+  if (std::system(command.c_str()) != 0)
+    throw Error(
+        "the error-vs-time plot failed (needs /usr/bin/python3 with matplotlib: Debian "
+        "python3-matplotlib): " +
+        command);
+  written.push_back("plot.svg");
+  written.push_back("plot.png");
+
+  std::string page =
+      "<!doctype html><html><head><meta charset=\"utf-8\"><title>Diptych "
+      "comparison</title><style>" +
+      std::string(kStyle) + "</style></head><body>\n";
+  page += fmt::format(
+      "<h1>Diptych comparison: {}</h1>\n<p>Reference: <b>{}</b> ({:.1f} ms{}). {}x{}. {}</p>\n",
+      html(header["scene"].get<std::string>()),
+      html(header["reference"]["spec"].get<std::string>()), header["reference"]["ms"].get<double>(),
+      header["reference"]["cached"].get<bool>() ? ", cached" : "",
+      header["size"]["width"].get<int>(), header["size"]["height"].get<int>(),
+      html(header["method"].get<std::string>()));
+  page +=
+      "<h2>Error against time</h2>\n<img class=\"plot\" src=\"plot.svg\" alt=\"error versus time "
+      "plot\">\n";
+  page +=
+      "<h2>Results</h2>\n<table id=\"results\"><tr><th>variant</th><th>total "
+      "ms</th><th>speed-up</th><th>rays</th>";
+  const std::vector<std::string> shown = {"rmse", "relmse",    "psnr",
+                                          "ssim", "flip_mean", "flip_p95"};
+  for (const auto& m : shown) page += "<th>" + m + "</th>";
+  page += "<th>signal error</th></tr>\n";
+  for (const auto& v : results["variants"]) {
+    std::string signal;
+    if (v["signals"].contains("visibility"))
+      for (const auto& l : v["signals"]["visibility"])
+        signal +=
+            fmt::format("light {}: false shadow {:.2f}%, false lit {:.2f}%, boundary {:+.2f} px; ",
+                        l["light"].get<int>(), 100 * l["false_shadow_rate"].get<double>(),
+                        100 * l["false_lit_rate"].get<double>(),
+                        l["mean_boundary_displacement_px"].get<double>());
+    for (const char* slot : {"reflection", "transmission"})
+      if (v["signals"].contains(slot))
+        signal += fmt::format("{} rel. RMSE {:.3g}; ", slot,
+                              v["signals"][slot]["relative_rmse"].get<double>());
+    page +=
+        fmt::format("<tr class=\"{}\"><td>{}</td><td>{:.2f}</td><td>{:.2f}x</td><td>{:.0f}</td>",
+                    v["pareto"].get<bool>() ? "pareto" : "", html(v["name"].get<std::string>()),
+                    v["total_ms"].get<double>(), v["speedup_vs_reference"].get<double>(),
+                    v["rays"].get<double>());
+    for (const auto& m : shown)
+      page += "<td>" + number(v["metrics"].value(m, nlohmann::json())) + "</td>";
+    page += "<td style=\"text-align:left\">" + html(signal) + "</td></tr>\n";
+  }
+  page += "</table>\n<p class=\"caption\">Bold red: on the Pareto front of time and " +
+          html(plotMetric) +
+          ". Files: <a href=\"results.json\">results.json</a>, <a "
+          "href=\"results.csv\">results.csv</a>.</p>\n";
+  page +=
+      "<h2>Images</h2>\n<p class=\"caption\">Drag a slider: left of it the variant, right of it "
+      "the reference. "
+      "Beside it, the FLIP error heat map.</p>\n";
+  for (const auto& v : results["variants"]) {
+    const std::string name = html(v["name"].get<std::string>());
+    page += fmt::format(
+        "<div class=\"variant\"><div><div class=\"caption\">{0}</div><div class=\"split\" "
+        "style=\"--pos:50%\">"
+        "<img src=\"images/reference.png\" alt=\"reference\"><img class=\"top\" "
+        "src=\"images/{0}.png\" alt=\"{0}\">"
+        "<input type=\"range\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"split position\" "
+        "oninput=\"this.parentElement.style.setProperty('--pos', this.value + '%')\"></div></div>"
+        "<div><div class=\"caption\">FLIP error</div><img src=\"heatmaps/{0}.png\" alt=\"{0} heat "
+        "map\"></div></div>\n",
+        name);
+  }
+  page += "</body></html>\n";
+  std::ofstream(dir / "report.html") << page;
+  written.push_back("report.html");
+  return written;
+}
+
+}  // namespace diptych::cli

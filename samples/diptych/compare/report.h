@@ -1,0 +1,26 @@
+#pragma once
+// Files a comparison writes: images (EXR + PNG), heat maps, side-by-side panels, graphs,
+// results.json / results.csv, the error-versus-time plot (matplotlib) and report.html.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/core/image.h"
+
+namespace diptych::cli {
+
+struct ReportVariant {
+  std::string name;
+  Image image, heatmap;
+  nlohmann::json result;  // the variant's entry of results.json (metrics, timings, signals...)
+};
+
+// Writes every file under `dir` and returns the paths written (relative to dir).
+std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlohmann::json& header,
+                                     const Image& reference, std::vector<ReportVariant>& variants,
+                                     const std::string& plotMetric);
+
+}  // namespace diptych::cli

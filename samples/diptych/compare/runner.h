@@ -1,0 +1,30 @@
+#pragma once
+// Runs one recipe for a comparison: warm-up frames, measured frames, and copies of the
+// requested outputs.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "engine/graph/executor.h"
+#include "engine/graph/frame_graph.h"
+#include "engine/graph/render_world.h"
+
+namespace diptych::cli {
+
+struct GraphRun {
+  CompiledGraph graph;
+  std::vector<NodeTiming> timings;
+  std::map<std::string, Surface> outputs;
+  double totalMs = 0;  // sum over nodes of each node's median CPU time
+  double rays = 0;     // rays counted by the passes in the last frame
+  nlohmann::json passMs = nlohmann::json::object();  // node name -> median CPU ms
+};
+
+GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings& frame,
+                  const std::vector<std::string>& outputs, int warmup, int frames);
+
+// The resource that feeds shade's input for `slot` ("visibility" -> "shadows.visibility"),
+// or empty when the recipe has no producer for it.
+std::string slotSignal(const Recipe& recipe, const std::string& slot);
+
+}  // namespace diptych::cli

@@ -1,0 +1,33 @@
+#pragma once
+// Variants of a comparison: a recipe plus slot overrides. The default set covers every
+// registered producer of every slot (docs/compare.md).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/graph/recipe.h"
+#include "engine/graph/registry.h"
+
+namespace diptych::cli {
+
+struct Variant {
+  std::string name;
+  std::string recipeFile;                            // empty: the built-in hybrid recipe
+  std::vector<std::string> slots;                    // --slot overrides, "SLOT=TYPE[:k=v,...]"
+  Recipe build(const PassRegistry& registry) const;  // recipe with the overrides applied
+};
+
+std::vector<Variant> defaultVariants(const PassRegistry& registry);
+// A .json file ({"variants": [{"name", "recipe"?, "slots"?}]}) or comma-separated names from
+// the default set. Throws InputError naming the file/element or the unknown name.
+std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& registry);
+
+// The reference: "whitted", "distributed:SPP" or "path:SPP" -> a one-pass recipe.
+struct ReferenceSpec {
+  std::string text, passType;
+  int spp = 1;
+  Recipe recipe() const;
+};
+ReferenceSpec parseReference(const std::string& text, const PassRegistry& registry);
+
+}  // namespace diptych::cli

@@ -1,0 +1,290 @@
+#include "samples/diptych/compare_command.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <functional>
+
+#include "engine/core/error.h"
+#include "engine/core/timing.h"
+#include "engine/gl/context.h"
+#include "engine/graph/export.h"
+#include "engine/metrics/metrics.h"
+#include "engine/metrics/signal_metrics.h"
+#include "engine/scene/camera_math.h"
+#include "engine/scene/load.h"
+#include "passes/registry.h"
+#include "samples/diptych/compare/report.h"
+#include "samples/diptych/compare/runner.h"
+#include "samples/diptych/compare/variants.h"
+
+namespace diptych::cli {
+namespace {
+
+struct CompareOptions {
+  std::string scene, variants, reference = "whitted", out = "out", size = "640x480",
+                               metric = "flip_mean";
+  int frames = 3, warmup = 1;
+};
+
+// One line of progress: a bar on a terminal, a plain line otherwise (logs, CI).
+void progress(int done, int total, const std::string& what) {
+  if (isatty(fileno(stderr))) {
+    const int width = 30, filled = total ? width * done / total : width;
+    std::fprintf(stderr, "\r[%s%s] %d/%d %-40.40s", std::string(filled, '#').c_str(),
+                 std::string(width - filled, '.').c_str(), done, total, what.c_str());
+    if (done == total) std::fputc('\n', stderr);
+  } else {
+    std::fprintf(stderr, "compare: %d/%d %s\n", done, total, what.c_str());
+  }
+  std::fflush(stderr);
+}
+
+std::vector<std::uint8_t> coverage(const Surface& gbuffer) {
+  std::vector<std::uint8_t> mask(std::size_t(gbuffer.desc.width) * gbuffer.desc.height);
+  for (int y = 0; y < gbuffer.desc.height; ++y)
+    for (int x = 0; x < gbuffer.desc.width; ++x)
+      mask[std::size_t(y) * gbuffer.desc.width + x] = gbuffer.u(x, y, 0) != 0u;
+  return mask;
+}
+
+// Pixels whose material has the coefficient `pick` > 0 (k_ps for reflection, k_t for transmission).
+std::vector<std::uint8_t> materialMask(const Scene& scene, const Surface& gbuffer,
+                                       const std::function<float(const Material&)>& pick) {
+  std::vector<std::uint8_t> mask(std::size_t(gbuffer.desc.width) * gbuffer.desc.height, 0);
+  for (int y = 0; y < gbuffer.desc.height; ++y)
+    for (int x = 0; x < gbuffer.desc.width; ++x) {
+      const std::uint32_t id = gbuffer.u(x, y, 0);
+      if (!id) continue;
+      const Material& m = scene.material(scene.meshes[scene.instances[id - 1].mesh].material);
+      mask[std::size_t(y) * gbuffer.desc.width + x] = pick(m) > 0.f;
+    }
+  return mask;
+}
+
+std::vector<float> layer(const Surface& s, int l) {
+  std::vector<float> v(std::size_t(s.desc.width) * s.desc.height);
+  for (int y = 0; y < s.desc.height; ++y)
+    for (int x = 0; x < s.desc.width; ++x) v[std::size_t(y) * s.desc.width + x] = s.f(x, y, 0, l);
+  return v;
+}
+
+// Each slot's signal against the exact signal on the same G-buffer (docs/metrics.md).
+nlohmann::json signalErrors(const Scene& scene, const GraphRun& run, const Recipe& recipe,
+                            const GraphRun& exact, const Recipe& exactRecipe) {
+  nlohmann::json out = nlohmann::json::object();
+  const Surface& gbuffer = exact.outputs.at("gbuffer.visibility");
+  auto signalPair = [&](const std::string& slot) -> std::pair<const Surface*, const Surface*> {
+    const std::string mine = slotSignal(recipe, slot), ref = slotSignal(exactRecipe, slot);
+    if (mine.empty() || ref.empty() || !run.outputs.count(mine) || !exact.outputs.count(ref))
+      return {nullptr, nullptr};
+    return {&run.outputs.at(mine), &exact.outputs.at(ref)};
+  };
+  if (auto [mine, ref] = signalPair("visibility"); mine && mine->desc == ref->desc) {
+    const auto mask = coverage(gbuffer);
+    for (int l = 0; l < mine->desc.layers; ++l) {
+      const VisibilityConfusion c = compareVisibility(layer(*mine, l), layer(*ref, l), mask,
+                                                      gbuffer.desc.width, gbuffer.desc.height, 2);
+      out["visibility"].push_back({{"light", l},
+                                   {"band_px", c.band},
+                                   {"receivers", c.receivers},
+                                   {"false_shadow_outside", c.falseShadowOutside},
+                                   {"false_lit_outside", c.falseLitOutside},
+                                   {"false_shadow_inside", c.falseShadowInside},
+                                   {"false_lit_inside", c.falseLitInside},
+                                   {"false_shadow_rate", c.falseShadowRate()},
+                                   {"false_lit_rate", c.falseLitRate()},
+                                   {"mean_boundary_displacement_px", c.meanBoundaryDisplacement}});
+    }
+  }
+  const std::pair<const char*, std::function<float(const Material&)>> radianceSlots[] = {
+      {"reflection", [](const Material& m) { return m.kps; }},
+      {"transmission", [](const Material& m) { return m.kt; }}};
+  for (const auto& [slot, pick] : radianceSlots) {
+    auto [mine, ref] = signalPair(slot);
+    if (!mine || !(mine->desc == ref->desc)) continue;
+    const SignalError e =
+        compareRadiance(mine->toImage(), ref->toImage(), materialMask(scene, gbuffer, pick));
+    out[slot] = {{"pixels", e.pixels}, {"rmse", e.rmse}, {"relative_rmse", e.relativeRmse}};
+  }
+  return out;
+}
+
+std::string cacheKey(const std::string& sceneFile, const ReferenceSpec& ref,
+                     const FrameSettings& frame) {
+  std::ifstream in(sceneFile, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string key = bytes + "|" + ref.recipe().passes[0].params.dump() + "|" + ref.passType +
+                          "|" + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                          "|diptych 0.1.0";
+  return fmt::format("{:016x}", std::hash<std::string>{}(key));
+}
+
+void runCompare(const CompareOptions& o) {
+  const std::string sceneFile =
+      o.scene.empty() ? std::string(DIPTYCH_SAMPLES_DIR) + "/scenes/whitted.json" : o.scene;
+  if (o.frames < 1 || o.warmup < 0)
+    throw InputError("--frames", "", "need at least one measured frame");
+  int width = 0, height = 0;
+  char x = 0;
+  if (std::sscanf(o.size.c_str(), "%d%c%d", &width, &x, &height) != 3 || x != 'x' || width <= 0 ||
+      height <= 0 || width > 8192 || height > 8192)
+    throw InputError("--size", "",
+                     "expected WIDTHxHEIGHT with each in 1..8192, got '" + o.size + "'");
+  const PassRegistry& registry = builtinPasses();
+  const ReferenceSpec reference = parseReference(o.reference, registry);
+  std::vector<Variant> variants =
+      o.variants.empty() ? defaultVariants(registry) : loadVariants(o.variants, registry);
+  std::vector<Recipe> recipes;
+  for (const Variant& v : variants) recipes.push_back(v.build(registry));  // errors before any work
+
+  const Scene scene = loadScene(sceneFile);
+  const FrameSettings frame{width, height,
+                            scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
+  auto context = gl::createContext(gl::ContextKind::Osmesa, width, height);
+  RenderWorld world(scene, context.get());
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir / "cache");
+  const int steps = int(variants.size()) + 2;
+  int step = 0;
+
+  // The reference, cached by scene contents + settings.
+  progress(step, steps, "reference " + reference.text);
+  const auto cached =
+      dir / "cache" / ("reference-" + cacheKey(sceneFile, reference, frame) + ".exr");
+  Image referenceImage;
+  double referenceMs = 0;
+  bool referenceCached =
+      std::filesystem::exists(cached) && std::filesystem::exists(cached.string() + ".json");
+  if (referenceCached) {
+    referenceImage = readImage(cached);
+    referenceMs =
+        nlohmann::json::parse(std::ifstream(cached.string() + ".json"))["ms"].get<double>();
+  } else {
+    const GraphRun ref = runGraph(reference.recipe(), world, frame, {"reference.color"}, 0, 1);
+    referenceImage = ref.outputs.at("reference.color").toImage();
+    referenceMs = ref.totalMs;
+    writeImage(cached, referenceImage);
+    std::ofstream(cached.string() + ".json")
+        << nlohmann::json{{"ms", referenceMs}, {"reference", reference.text}}.dump();
+  }
+  progress(++step, steps, "exact slot signals");
+
+  // Exact slot signals on the shared G-buffer: the all-exact hybrid.
+  const Recipe exactRecipe = defaultHybridRecipe();
+  auto signalOutputs = [](const Recipe& r) {
+    std::vector<std::string> outs = {r.outputs.front(), "gbuffer.visibility"};
+    for (const char* slot : {"visibility", "reflection", "transmission"})
+      if (const std::string s = slotSignal(r, slot); !s.empty()) outs.push_back(s);
+    return outs;
+  };
+  const GraphRun exact = runGraph(exactRecipe, world, frame, signalOutputs(exactRecipe), 0, 1);
+  progress(++step, steps, "variants");
+
+  std::vector<ReportVariant> results;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    const Variant& v = variants[i];
+    const Recipe& recipe = recipes[i];
+    if (std::find(recipe.outputs.begin(), recipe.outputs.end(), "shade.color") ==
+            recipe.outputs.end() &&
+        recipe.outputs.empty())
+      throw InputError(v.name, "", "variant recipe has no output");
+    std::vector<std::string> outs = signalOutputs(recipe);
+    const bool hasGbuffer = std::any_of(recipe.passes.begin(), recipe.passes.end(),
+                                        [](const RecipePass& p) { return p.type == "gbuffer"; });
+    if (!hasGbuffer) outs = {recipe.outputs.front()};
+    const GraphRun run = runGraph(recipe, world, frame, outs, o.warmup, o.frames);
+    ReportVariant rv;
+    rv.name = v.name;
+    rv.image = run.outputs.at(recipe.outputs.front()).toImage();
+    const auto metrics = computeMetrics(rv.image, referenceImage);
+    rv.heatmap = heatMap(flipErrorMap(rv.image, referenceImage), 1.f);
+    nlohmann::json culled = nlohmann::json::array();
+    for (const GraphPass& p : run.graph.passes)
+      if (p.culled) culled.push_back({{"pass", p.name}, {"reason", p.cullReason}});
+    rv.result = {{"name", v.name},
+                 {"recipe", v.recipeFile.empty() ? "<built-in hybrid>" : v.recipeFile},
+                 {"slots", v.slots},
+                 {"total_ms", run.totalMs},
+                 {"pass_ms", run.passMs},
+                 {"rays", run.rays},
+                 {"speedup_vs_reference", run.totalMs > 0 ? referenceMs / run.totalMs : 0.0},
+                 {"metrics", metrics},
+                 {"signals", hasGbuffer ? signalErrors(scene, run, recipe, exact, exactRecipe)
+                                        : nlohmann::json::object()},
+                 {"culled", culled},
+                 {"graph", graphToJson(run.graph, &run.timings)}};
+    results.push_back(std::move(rv));
+    progress(++step, steps, v.name);
+  }
+
+  // Pareto front in (time, error): no other variant is at least as fast and as accurate, and
+  // strictly better in one.
+  for (ReportVariant& a : results) {
+    const double ta = a.result["total_ms"], ea = a.result["metrics"].value(o.metric, 0.0);
+    bool dominated = false;
+    for (const ReportVariant& b : results) {
+      const double tb = b.result["total_ms"], eb = b.result["metrics"].value(o.metric, 0.0);
+      if (tb <= ta && eb <= ea && (tb < ta || eb < ea)) dominated = true;
+    }
+    a.result["pareto"] = !dominated;
+  }
+  const nlohmann::json header = {
+      {"scene", sceneFile},
+      {"size", {{"width", width}, {"height", height}}},
+      {"reference", {{"spec", reference.text}, {"ms", referenceMs}, {"cached", referenceCached}}},
+      {"frames", o.frames},
+      {"warmup", o.warmup},
+      {"pareto_metric", o.metric},
+      {"method",
+       fmt::format(
+           "per pass: median of {} frames after {} warm-up frames (steady_clock); total = sum of "
+           "per-pass medians; reference: one frame (or its cached time)",
+           o.frames, o.warmup)}};
+  const auto written = writeReport(dir, header, referenceImage, results, o.metric);
+
+  std::printf("%-36s %10s %9s %10s %10s %8s %s\n", "variant", "total ms", "speedup", "rmse",
+              o.metric.c_str(), "ssim", "pareto");
+  for (const ReportVariant& r : results) {
+    const auto& m = r.result["metrics"];
+    std::printf("%-36s %10.2f %8.2fx %10.4g %10.4g %8.4f %s\n", r.name.c_str(),
+                r.result["total_ms"].get<double>(), r.result["speedup_vs_reference"].get<double>(),
+                m.value("rmse", 0.0), m.value(o.metric, 0.0), m.value("ssim", 0.0),
+                r.result["pareto"].get<bool>() ? "*" : "");
+  }
+  std::printf("reference %s: %.2f ms%s; %s\nwrote %zu files to %s (open %s)\n",
+              reference.text.c_str(), referenceMs, referenceCached ? " (cached)" : "",
+              header["method"].get<std::string>().c_str(), written.size(), dir.string().c_str(),
+              (dir / "report.html").string().c_str());
+}
+
+}  // namespace
+
+void addCompareCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("compare",
+                         "Measure variants against an exact reference: images, error maps, "
+                         "tables, error-vs-time plot, report.html");
+  cmd->add_option("scene", o->scene,
+                  "Scene (.json, .gltf, .glb); default: the built-in Whitted sample");
+  cmd->add_option("--variants", o->variants,
+                  "Variants: a .json file or comma-separated default names");
+  cmd->add_option("--reference", o->reference, "whitted | distributed:SPP | path:SPP")
+      ->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Measured frames per variant (median)")
+      ->capture_default_str();
+  cmd->add_option("--warmup", o->warmup, "Warm-up frames per variant")->capture_default_str();
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
+  cmd->add_option("--pareto-metric", o->metric, "Error metric of the plot and Pareto front")
+      ->capture_default_str();
+  cmd->callback([o, &exitCode] {
+    runCompare(*o);
+    exitCode = 0;
+  });
+}
+
+}  // namespace diptych::cli
