@@ -76,7 +76,8 @@ void BlendTransmissionPass::execute(PassContext& c) {
   // Lines 4-10: transparent polygons in Z order, I = I_m + k_t M_t I, depth-tested, not written.
   gl::ForwardOptions transparent;
   transparent.instances = gl::InstanceSet::Transparent;
-  if (sorted_) transparent.order = transparentBackToFront(world.scene(), world.geometry(), view.view);
+  if (sorted_)
+    transparent.order = transparentBackToFront(world.scene(), world.geometry(), view.view);
   transparent.clear = false;
   transparent.depthWrite = false;
   transparent.blend = true;

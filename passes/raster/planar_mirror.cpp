@@ -52,7 +52,8 @@ std::vector<MirrorPlane> findPlanarMirrors(const Scene& scene, const WorldGeomet
     const float d = -glm::dot(n, anchor);
     const float tolerance = 64.f * FLT_EPSILON * (magnitude + glm::length(box.hi - box.lo));
     bool planar = true;
-    for (const vec3& p : mesh.positions) planar = planar && std::abs(glm::dot(n, p) + d) <= tolerance;
+    for (const vec3& p : mesh.positions)
+      planar = planar && std::abs(glm::dot(n, p) + d) <= tolerance;
     if (planar) mirrors.push_back({mesh.instance, n, d});
   }
   return mirrors;
@@ -81,7 +82,8 @@ void PlanarMirrorPass::execute(PassContext& c) {
   const gl::Texture& out = c.glTexture(reflection_);
   auto& cache = world.glCached<MirrorCache>();
   cache.ensure(out.width(), out.height());
-  if (!cache.found) cache.mirrors = findPlanarMirrors(world.scene(), world.geometry()), cache.found = true;
+  if (!cache.found)
+    cache.mirrors = findPlanarMirrors(world.scene(), world.geometry()), cache.found = true;
   auto& renderer = world.glCached<gl::ForwardRenderer>();
   const gl::ForwardView eyeView = gl::cameraView(camera, float(out.width()) / float(out.height()));
 
@@ -95,7 +97,8 @@ void PlanarMirrorPass::execute(PassContext& c) {
     const mat4 r = reflectionMatrix(n, d);
     // The symmetric camera: world point x appears where the eye sees its mirror image R x,
     // and the pixel ray of the mirrored view, mapped back by R, is the reflected ray.
-    gl::ForwardView mirrored{eyeView.view * r, eyeView.projection, vec3(r * vec4(camera.position, 1.f))};
+    gl::ForwardView mirrored{eyeView.view * r, eyeView.projection,
+                             vec3(r * vec4(camera.position, 1.f))};
     gl::ForwardOptions options;
     options.excludeInstance = mirror.instance;
     options.clipPlane = vec4(n, d);

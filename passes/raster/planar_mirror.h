@@ -25,7 +25,7 @@ class PlanarMirrorPass : public Pass {
 
 struct MirrorPlane {
   int instance = -1;
-  vec3 normal{0.f};  // unit, the face normal of the largest triangle (either side may face you)
+  vec3 normal{0.f};    // unit, the face normal of the largest triangle (either side may face you)
   float offset = 0.f;  // plane: dot(normal, x) + offset = 0
 };
 
