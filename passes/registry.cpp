@@ -1,6 +1,9 @@
 #include "passes/registry.h"
 
+#include "passes/raster/blend_transmission.h"
+#include "passes/raster/dynamic_cube.h"
 #include "passes/raster/gbuffer.h"
+#include "passes/raster/planar_mirror.h"
 #include "passes/rt/rt_secondary.h"
 #include "passes/rt/rt_shadows.h"
 #include "passes/rt/rt_whitted.h"
@@ -13,6 +16,13 @@ const PassRegistry& builtinPasses() {
     PassRegistry r;
     r.add<GBufferPass>("gbuffer",
                        "rasterized visibility buffer, normals and reversed-Z depth (GL)");
+    r.add<SortedBlendPass>("sorted_blend",
+                           "transmission by the lecture's Z-buffer blending, back to front (GL)");
+    r.add<UnsortedBlendPass>("unsorted_blend",
+                             "transmission by Z-buffer blending in scene order (GL)");
+    r.add<PlanarMirrorPass>("planar_mirror", "reflection by the camera mirrored about planes (GL)");
+    r.add<DynamicCubePass>("env_dynamic_cube",
+                           "reflection by a cube map captured from the object's centre (GL)");
     r.add<RtShadowsPass>("rt_shadows", "exact light visibility by Embree shadow rays (CPU)");
     r.add<RtReflectionPass>("rt_reflection",
                             "exact reflection: recursive Whitted reflection rays (CPU)");

@@ -1,0 +1,176 @@
+#include "engine/gl/forward_renderer.h"
+
+#include "engine/gl/debug.h"
+#include "engine/gl/scene_buffers.h"
+#include "engine/gl/shader.h"
+#include "engine/gl/shading_buffers.h"
+#include "engine/gl/transfer.h"
+#include "engine/graph/render_world.h"
+#include "engine/scene/camera_math.h"
+#include "engine/scene/environment.h"
+
+namespace diptych::gl {
+
+vec3 cubeFaceDirection(int face, float a, float b) {
+  // Inverse of table 8.19 (major axis, sc, tc) with |ma| = 1, a = sc, b = tc.
+  switch (face) {
+    case 0:
+      return {1.f, -b, -a};
+    case 1:
+      return {-1.f, -b, a};
+    case 2:
+      return {a, 1.f, b};
+    case 3:
+      return {a, -1.f, -b};
+    case 4:
+      return {a, -b, 1.f};
+    default:
+      return {-a, -b, -1.f};
+  }
+}
+
+ForwardView cubeFaceView(const vec3& centre, int face, float znear) {
+  // The face camera looks at the face centre; window x and y (GL texel s and t of the face)
+  // grow along the face's a and b axes, which lookAt reproduces from forward and up.
+  const vec3 forward = cubeFaceDirection(face, 0.f, 0.f);
+  const vec3 up = cubeFaceDirection(face, 0.f, 1.f) - forward;
+  Camera c;
+  c.position = centre;
+  c.target = centre + forward;
+  c.up = up;
+  c.verticalFov = glm::radians(90.f);
+  c.znear = znear;
+  return cameraView(c, 1.f);
+}
+
+ForwardView cameraView(const Camera& camera, float aspect) {
+  return {viewMatrix(camera), reversedZProjection(camera, aspect), camera.position};
+}
+
+ForwardRenderer::ForwardRenderer()
+    : surface_(loadProgram({"forward.vert", "forward.frag"})),
+      background_(loadProgram({"fullscreen.vert", "forward_background.frag"})),
+      framebuffer_(Framebuffer::create()),
+      empty_(VertexArray::create()) {}
+
+void ForwardRenderer::ensureEnvironment(const Scene& scene) {
+  if (environment_) return;
+  // Resampled with the CPU lookup so that every environment type (colour, equirect, cube) is
+  // one cube texture here. Engine rows run top down, GL texel rows (t) bottom up.
+  const int n = kEnvironmentCubeSize;
+  environment_ = Texture::createCube(TextureFormat::RGBA32F, n);
+  environment_.setLabel("forward.environment");
+  std::vector<float> texels(std::size_t(n) * n * 4);
+  for (int face = 0; face < 6; ++face) {
+    for (int y = 0; y < n; ++y) {
+      const float b = 2.f * (float(n - 1 - y) + 0.5f) / float(n) - 1.f;
+      for (int x = 0; x < n; ++x) {
+        const float a = 2.f * (float(x) + 0.5f) / float(n) - 1.f;
+        const vec3 c = sampleEnvironment(scene.environment, cubeFaceDirection(face, a, b));
+        float* t = &texels[(std::size_t(y) * n + x) * 4];
+        t[0] = c.x, t[1] = c.y, t[2] = c.z, t[3] = 1.f;
+      }
+    }
+    uploadTextureFloats(environment_, texels, face);
+  }
+}
+
+namespace {
+
+std::vector<int> drawList(const Scene& scene, const GlSceneBuffers& buffers,
+                          const ForwardOptions& o) {
+  if (!o.order.empty()) return o.order;
+  std::vector<int> list;
+  for (int i = 0; i < int(buffers.meshes.size()); ++i) {
+    const bool transparent = scene.material(buffers.meshes[i].material).kt > 0.f;
+    if (o.instances == InstanceSet::All || transparent == (o.instances == InstanceSet::Transparent))
+      list.push_back(i);
+  }
+  return list;
+}
+
+void setCamera(const Program& p, const ForwardView& view, const mat4& viewProjection, int width,
+               int height) {
+  p.set("uInverseViewProjection", glm::inverse(viewProjection));
+  p.set("uEye", view.eye);
+  p.set("uViewportSize", vec2(float(width), float(height)));
+}
+
+}  // namespace
+
+void ForwardRenderer::render(RenderWorld& world, const ForwardView& view, const Texture& color,
+                             const Texture& depth, const ForwardOptions& o, int layer) {
+  ScopedGlLabel label("forward");
+  const Scene& scene = world.scene();
+  const GlSceneBuffers& buffers = world.glScene();
+  const GlShadingBuffers& shading = world.glShading();
+  ensureEnvironment(scene);
+
+  framebuffer_.attachColor(0, color, 0, layer);
+  framebuffer_.attachDepth(depth);
+  framebuffer_.checkComplete("forward");
+  framebuffer_.bind();
+  const int width = depth.width(), height = depth.height();
+  const mat4 viewProjection = view.projection * view.view;
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glViewport(0, 0, width, height);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+
+  if (o.clear) {
+    const GLfloat zero[4] = {0.f, 0.f, 0.f, 0.f};
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    setCamera(background_, view, viewProjection, width, height);
+    background_.use();
+    glBindTextureUnit(1, environment_.id());
+    empty_.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(o.depthWrite ? GL_TRUE : GL_FALSE);
+  if (o.blend) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_SRC1_COLOR);  // I = I_m + (k_t M_T) I
+  } else {
+    glDisable(GL_BLEND);
+  }
+  if (o.clipPlane) glEnable(GL_CLIP_DISTANCE0);
+  surface_.set("uViewProjection", viewProjection);
+  setCamera(surface_, view, viewProjection, width, height);
+  surface_.set("uClipPlane", o.clipPlane.value_or(vec4(0.f, 0.f, 0.f, 1.f)));
+  surface_.set("uAmbient", scene.ambient);
+  surface_.set("uLightCount", shading.lightCount);
+  surface_.set("uBlend", o.blend ? 1 : 0);
+  surface_.set("uBehind", o.behindVisibility ? 1 : 0);
+  if (o.behindVisibility) glBindTextureUnit(0, o.behindVisibility->id());
+  surface_.use();
+  buffers.vertexArray.bind();
+  buffers.bindStorage();
+  shading.bindStorage();
+  for (const int i : drawList(scene, buffers, o)) {
+    const GlMeshRange& mesh = buffers.meshes[std::size_t(i)];
+    if (mesh.triangleCount == 0 || mesh.instance == o.excludeInstance) continue;
+    surface_.set("uInstance", std::uint32_t(mesh.instance));
+    surface_.set("uFirstTriangle", mesh.firstTriangle);
+    surface_.set("uMaterial", mesh.material);
+    glDrawElements(GL_TRIANGLES, GLsizei(3 * mesh.triangleCount), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));
+  }
+  glDisable(GL_CLIP_DISTANCE0);
+  glDisable(GL_BLEND);
+  // Mesa rejects draws into several colour buffers while a dual-source factor is set, even with
+  // blending disabled (the G-buffer has two): restore the default factors.
+  glBlendFunc(GL_ONE, GL_ZERO);
+  glDepthMask(GL_TRUE);
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace diptych::gl

@@ -1,0 +1,89 @@
+#pragma once
+// A forward renderer of the shaded scene, for the raster producers of the reflection and
+// transmission slots (sorted blending, planar mirror, dynamic cube capture).
+//
+// Every fragment is shaded with the shared model (shaders/common/shading.glsl) on the SSBO
+// materials and lights (shaders/gl/scene_shading.glsl):
+//   L = M_E + A_G + sum_i S_i L_dir,i
+// with V_i = 1 (no shadows) and the secondary terms k_ps M_PS L_refl and k_t M_T L_trans left
+// out (0): a forward-shaded surface is one bounce of the lecture's model, no recursion.
+// The surface point is not interpolated: like the G-buffer (docs/gl.md), the fragment shader
+// intersects the pixel-centre ray of the given camera with the fragment's triangle, so a
+// forward-shaded hit is the point a ray tracer finds on the same ray, shaded the same way.
+//
+// Background: the environment resampled once per world into a cube map (kEnvironmentCubeSize)
+// with sampleEnvironment() and looked up along the pixel ray. A solid colour is exact; image
+// environments are bilinear on the resampled cube (an approximation of the CPU lookup).
+//
+// Depth: reversed-Z (clip control lower-left / zero-to-one, D32F cleared to 0, GL_GREATER), as
+// the G-buffer. Culling is off: both sides of every triangle are drawn.
+#include <optional>
+#include <vector>
+
+#include "engine/gl/objects.h"
+#include "engine/scene/scene.h"
+
+namespace diptych {
+class RenderWorld;
+}
+
+namespace diptych::gl {
+
+inline constexpr int kEnvironmentCubeSize = 64;
+
+// A camera given by matrices: any view and projection (mirrored, oblique, cube faces).
+struct ForwardView {
+  mat4 view{1.f};
+  mat4 projection{1.f};  // maps the visible depth range to [0, 1], nearer greater (reversed-Z)
+  vec3 eye{0.f};         // world-space ray origin of every pixel (the camera's centre)
+};
+
+enum class InstanceSet { Opaque, Transparent, All };  // transparent: material k_t > 0
+
+struct ForwardOptions {
+  InstanceSet instances = InstanceSet::All;
+  // Explicit draw order (mesh indices); empty: scene order filtered by `instances`.
+  std::vector<int> order;
+  int excludeInstance = -1;  // e.g. the reflective object a cube is captured from
+  // World-space plane (n, d): only points with dot(n, x) + d >= 0 are drawn (gl_ClipDistance).
+  std::optional<vec4> clipPlane;
+  // Clear colour and depth, then draw the environment background.
+  bool clear = true;
+  bool depthWrite = true;
+  // Composite each fragment with the lecture's I = I_m + k_t M_T I (dual-source blending,
+  // src = ONE, dst = SRC1_COLOR): I_m is the fragment's shaded colour.
+  bool blend = false;
+  // G-buffer visibility of the same camera and size: draw only fragments strictly behind the
+  // pixel's first visible surface (see docs/forward-producers.md).
+  const Texture* behindVisibility = nullptr;
+};
+
+// Compiled programs, the environment cube and a framebuffer; one per world (glCached).
+class ForwardRenderer {
+ public:
+  ForwardRenderer();
+  // Renders into colour (RGBA32F 2D, or a cube face with `layer`) and depth (D32F, same size).
+  void render(RenderWorld& world, const ForwardView& view, const Texture& color,
+              const Texture& depth, const ForwardOptions& options, int layer = -1);
+
+ private:
+  void ensureEnvironment(const Scene& scene);
+  Program surface_, background_;
+  Framebuffer framebuffer_;
+  VertexArray empty_;
+  Texture environment_;
+};
+
+// World-space direction of the texel (a, b) in [-1, 1]^2 of cube face `face` (+x, -x, +y,
+// -y, +z, -z) in GL's cube-map convention (OpenGL 4.5, table 8.19), with b = 2t - 1 and t
+// growing with GL texel rows (bottom up), i.e. with window y when rendering into the face.
+vec3 cubeFaceDirection(int face, float a, float b);
+
+// The view of cube face `face` seen from `centre` (90 degree fov, reversed-Z with near plane
+// `znear`), such that rendering it into that face stores what a lookup along each direction sees.
+ForwardView cubeFaceView(const vec3& centre, int face, float znear);
+
+// A perspective camera's view (viewMatrix, reversedZProjection) at the given aspect.
+ForwardView cameraView(const Camera& camera, float aspect);
+
+}  // namespace diptych::gl

@@ -1,0 +1,43 @@
+#pragma once
+#include <vector>
+
+#include "engine/graph/pass.h"
+#include "engine/scene/world_geometry.h"
+
+namespace diptych {
+
+// The lecture's Z-buffer algorithm for transparent surfaces (Tema 5, "Z-buffer en superf.
+// transparentes y reflectantes") as a transmission-slot producer: the opaque surfaces first
+// (with depth), then the transparent ones (k_t > 0) strictly behind the pixel's first visible
+// surface, each composited as I = I_m + k_t M_T I. No bending (t = -i): the radiance along the
+// view ray. `sorted` draws the transparent objects back to front by the view depth of their
+// bounds centres (per object, as the lecture sorts polygons); unsorted keeps scene order.
+// Pixels whose first surface has k_t = 0 (or no surface) get 0. docs/forward-producers.md.
+class BlendTransmissionPass : public Pass {
+ public:
+  explicit BlendTransmissionPass(bool sorted) : sorted_(sorted) {}
+  Domain domain() const override { return Domain::Gl; }
+  void setup(PassBuilder& builder) override;
+  void execute(PassContext& context) override;
+
+ private:
+  bool sorted_;
+  ResourceId visibility_ = kNoResource, transmission_ = kNoResource;
+};
+
+class SortedBlendPass : public BlendTransmissionPass {
+ public:
+  SortedBlendPass() : BlendTransmissionPass(true) {}
+};
+
+class UnsortedBlendPass : public BlendTransmissionPass {
+ public:
+  UnsortedBlendPass() : BlendTransmissionPass(false) {}
+};
+
+// Mesh indices of the transparent objects (material k_t > 0), farthest first by the view
+// depth (-z_view) of each object's bounds centre; ties keep scene order.
+std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry& world,
+                                        const mat4& view);
+
+}  // namespace diptych

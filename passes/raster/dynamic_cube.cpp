@@ -1,0 +1,69 @@
+#include "passes/raster/dynamic_cube.h"
+
+#include "engine/gl/debug.h"
+#include "engine/gl/forward_renderer.h"
+#include "engine/gl/shader.h"
+#include "engine/graph/render_world.h"
+#include "passes/raster/fullscreen_resolve.h"
+
+namespace diptych {
+
+namespace {
+
+struct CubeCache {
+  gl::Texture cube, depth;
+  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "cube_resolve.frag"})};
+  void ensure(int size) {
+    if (cube && cube.width() == size) return;
+    cube = gl::Texture::createCube(gl::TextureFormat::RGBA32F, size);
+    depth = gl::Texture::create2D(gl::TextureFormat::D32F, size, size);
+    cube.setLabel("env_dynamic_cube.cube");
+    depth.setLabel("env_dynamic_cube.depth");
+  }
+};
+
+}  // namespace
+
+void DynamicCubePass::setup(PassBuilder& b) {
+  b.needs(SceneNeed::ReflectiveMaterial);
+  resolution_ = b.params().integer("resolution", 256, 1, 8192);
+  visibility_ = b.read("visibility", Format::RGBA32UI);
+  reflection_ =
+      b.write("reflection", {Format::RGBA32F, b.frame().width, b.frame().height}, vec4(0.f));
+}
+
+void DynamicCubePass::execute(PassContext& c) {
+  gl::ScopedGlLabel label("env_dynamic_cube");
+  RenderWorld& world = c.world();
+  const Scene& scene = world.scene();
+  const gl::Texture& visibility = c.glTexture(visibility_);
+  const gl::Texture& out = c.glTexture(reflection_);
+  auto& cache = world.glCached<CubeCache>();
+  cache.ensure(resolution_);
+  auto& renderer = world.glCached<gl::ForwardRenderer>();
+  // Reversed-Z keeps precision at any near distance; a near plane at a small fraction of the
+  // scene size only clips what touches the centre (the excluded object surrounds it anyway).
+  const Aabb bounds = world.geometry().bounds;
+  const float znear = 1e-4f * std::max(glm::length(bounds.hi - bounds.lo), 1e-30f);
+
+  clearToZero(out);
+  for (const WorldMesh& mesh : world.geometry().meshes) {
+    if (mesh.indices.empty() || scene.material(mesh.material).kps <= 0.f) continue;
+    Aabb box;
+    for (const vec3& p : mesh.positions) box.extend(p);
+    gl::ForwardOptions options;
+    options.excludeInstance = mesh.instance;
+    for (int face = 0; face < 6; ++face) {
+      renderer.render(world, gl::cubeFaceView(box.center(), face, znear), cache.cube, cache.depth,
+                      options, face);
+    }
+    gl::glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    gl::glBindTextureUnit(0, visibility.id());
+    gl::glBindTextureUnit(1, cache.cube.id());
+    cache.resolve.program().set("uInstance", mesh.instance);
+    cache.resolve.program().set("uEye", c.frame().camera.position);
+    cache.resolve.draw(world, out);
+  }
+}
+
+}  // namespace diptych

@@ -1,0 +1,25 @@
+#pragma once
+#include "engine/graph/pass.h"
+
+namespace diptych {
+
+// Reflection-slot producer: a dynamic cube (box) map (Tema 5, "Mapas de entorno tipo caja":
+// the environment projected on the six faces of a cube centred on the reflective object),
+// captured every frame by forward-rendering the scene without that object from the centre of
+// its bounds, `resolution` x `resolution` per face (default 256). One capture per reflective
+// instance (material k_ps > 0); its pixels look the cube up along r = reflect(-v, n) at the
+// exact G-buffer point. The lookup treats the captured scene as infinitely far: the parallax
+// error grows with the distance between the surface point and the centre, relative to the
+// distance to what is reflected (docs/forward-producers.md). 0 elsewhere.
+class DynamicCubePass : public Pass {
+ public:
+  Domain domain() const override { return Domain::Gl; }
+  void setup(PassBuilder& builder) override;
+  void execute(PassContext& context) override;
+
+ private:
+  int resolution_ = 256;
+  ResourceId visibility_ = kNoResource, reflection_ = kNoResource;
+};
+
+}  // namespace diptych

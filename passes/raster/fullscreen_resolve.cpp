@@ -1,0 +1,39 @@
+#include "passes/raster/fullscreen_resolve.h"
+
+#include "engine/gl/scene_buffers.h"
+#include "engine/gl/shading_buffers.h"
+#include "engine/graph/render_world.h"
+
+namespace diptych {
+
+FullscreenResolve::FullscreenResolve(gl::Program program)
+    : program_(std::move(program)),
+      framebuffer_(gl::Framebuffer::create()),
+      empty_(gl::VertexArray::create()) {}
+
+void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target) {
+  world.glScene().bindStorage();
+  world.glShading().bindStorage();
+  framebuffer_.attachColor(0, target);
+  framebuffer_.checkComplete("fullscreen resolve");
+  framebuffer_.bind();
+  gl::glViewport(0, 0, target.width(), target.height());
+  gl::glDisable(GL_DEPTH_TEST);
+  gl::glDisable(GL_BLEND);
+  gl::glDisable(GL_CULL_FACE);
+  gl::glDisable(GL_SCISSOR_TEST);
+  gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  program_.set("uViewportSize", vec2(float(target.width()), float(target.height())));
+  program_.use();
+  empty_.bind();
+  gl::glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::glBindVertexArray(0);
+  gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void clearToZero(const gl::Texture& texture) {
+  const float zero[4] = {0.f, 0.f, 0.f, 0.f};
+  gl::glClearTexImage(texture.id(), 0, GL_RGBA, GL_FLOAT, zero);
+}
+
+}  // namespace diptych

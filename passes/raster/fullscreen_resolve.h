@@ -1,0 +1,27 @@
+#pragma once
+// A full-screen triangle drawn into one frame-size texture with a program of the caller's,
+// for the per-pixel steps of the forward producers (mask, resolve). The scene and shading
+// SSBOs are bound so that the fragment shader can rebuild G-buffer points
+// (shaders/gl/scene_shading.glsl, surfaceFromVisibility).
+#include "engine/gl/objects.h"
+
+namespace diptych {
+class RenderWorld;
+
+class FullscreenResolve {
+ public:
+  explicit FullscreenResolve(gl::Program program);
+  const gl::Program& program() const { return program_; }
+  // Draws over all of `target` (no depth, no blending); the caller set uniforms and textures.
+  void draw(RenderWorld& world, const gl::Texture& target);
+
+ private:
+  gl::Program program_;
+  gl::Framebuffer framebuffer_;
+  gl::VertexArray empty_;
+};
+
+// Clears a float colour texture to zero (the slots' "0 elsewhere").
+void clearToZero(const gl::Texture& texture);
+
+}  // namespace diptych

@@ -1,0 +1,114 @@
+#include "passes/raster/planar_mirror.h"
+
+#include <algorithm>
+#include <cfloat>
+
+#include "engine/gl/debug.h"
+#include "engine/gl/forward_renderer.h"
+#include "engine/gl/shader.h"
+#include "engine/graph/render_world.h"
+#include "passes/raster/fullscreen_resolve.h"
+
+namespace diptych {
+
+namespace {
+
+struct MirrorCache {
+  gl::Texture color, depth;  // the mirrored render, frame size
+  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "mirror_resolve.frag"})};
+  bool found = false;
+  std::vector<MirrorPlane> mirrors;
+  void ensure(int width, int height) {
+    if (color && color.width() == width && color.height() == height) return;
+    color = gl::Texture::create2D(gl::TextureFormat::RGBA32F, width, height);
+    depth = gl::Texture::create2D(gl::TextureFormat::D32F, width, height);
+    color.setLabel("planar_mirror.color");
+    depth.setLabel("planar_mirror.depth");
+  }
+};
+
+}  // namespace
+
+std::vector<MirrorPlane> findPlanarMirrors(const Scene& scene, const WorldGeometry& world) {
+  std::vector<MirrorPlane> mirrors;
+  for (const WorldMesh& mesh : world.meshes) {
+    if (mesh.indices.empty() || scene.material(mesh.material).kps <= 0.f) continue;
+    vec3 best(0.f);  // cross product of the largest triangle: the best-conditioned normal
+    vec3 anchor(0.f);
+    Aabb box;
+    float magnitude = 0.f;
+    for (const vec3& p : mesh.positions) {
+      box.extend(p);
+      magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    }
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      const vec3 p0 = mesh.positions[mesh.indices[t]];
+      const vec3 c = glm::cross(mesh.positions[mesh.indices[t + 1]] - p0,
+                                mesh.positions[mesh.indices[t + 2]] - p0);
+      if (glm::dot(c, c) > glm::dot(best, best)) best = c, anchor = p0;
+    }
+    if (!(glm::dot(best, best) > 0.f)) continue;
+    const vec3 n = glm::normalize(best);
+    const float d = -glm::dot(n, anchor);
+    const float tolerance = 64.f * FLT_EPSILON * (magnitude + glm::length(box.hi - box.lo));
+    bool planar = true;
+    for (const vec3& p : mesh.positions)
+      planar = planar && std::abs(glm::dot(n, p) + d) <= tolerance;
+    if (planar) mirrors.push_back({mesh.instance, n, d});
+  }
+  return mirrors;
+}
+
+mat4 reflectionMatrix(const vec3& n, float d) {
+  mat4 r(1.f);  // column-major: r[column][row]
+  for (int col = 0; col < 3; ++col)
+    for (int row = 0; row < 3; ++row) r[col][row] -= 2.f * n[row] * n[col];
+  for (int row = 0; row < 3; ++row) r[3][row] = -2.f * d * n[row];
+  return r;
+}
+
+void PlanarMirrorPass::setup(PassBuilder& b) {
+  b.needs(SceneNeed::ReflectiveMaterial);
+  visibility_ = b.read("visibility", Format::RGBA32UI);
+  reflection_ =
+      b.write("reflection", {Format::RGBA32F, b.frame().width, b.frame().height}, vec4(0.f));
+}
+
+void PlanarMirrorPass::execute(PassContext& c) {
+  gl::ScopedGlLabel label("planar_mirror");
+  RenderWorld& world = c.world();
+  const Camera& camera = c.frame().camera;
+  const gl::Texture& visibility = c.glTexture(visibility_);
+  const gl::Texture& out = c.glTexture(reflection_);
+  auto& cache = world.glCached<MirrorCache>();
+  cache.ensure(out.width(), out.height());
+  if (!cache.found)
+    cache.mirrors = findPlanarMirrors(world.scene(), world.geometry()), cache.found = true;
+  auto& renderer = world.glCached<gl::ForwardRenderer>();
+  const gl::ForwardView eyeView = gl::cameraView(camera, float(out.width()) / float(out.height()));
+
+  clearToZero(out);
+  for (const MirrorPlane& mirror : cache.mirrors) {
+    // Orient the plane toward the eye: the reflected rays travel on the eye's side.
+    const float side = glm::dot(mirror.normal, camera.position) + mirror.offset;
+    if (side == 0.f) continue;  // eye in the mirror's plane: the mirror is seen edge-on
+    const vec3 n = side > 0.f ? mirror.normal : -mirror.normal;
+    const float d = side > 0.f ? mirror.offset : -mirror.offset;
+    const mat4 r = reflectionMatrix(n, d);
+    // The symmetric camera: world point x appears where the eye sees its mirror image R x,
+    // and the pixel ray of the mirrored view, mapped back by R, is the reflected ray.
+    gl::ForwardView mirrored{eyeView.view * r, eyeView.projection,
+                             vec3(r * vec4(camera.position, 1.f))};
+    gl::ForwardOptions options;
+    options.excludeInstance = mirror.instance;
+    options.clipPlane = vec4(n, d);
+    renderer.render(world, mirrored, cache.color, cache.depth, options);
+
+    gl::glBindTextureUnit(0, visibility.id());
+    gl::glBindTextureUnit(1, cache.color.id());
+    cache.resolve.program().set("uMirrorInstance", mirror.instance);
+    cache.resolve.draw(world, out);
+  }
+}
+
+}  // namespace diptych

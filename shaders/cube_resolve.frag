@@ -1,0 +1,21 @@
+// env_dynamic_cube resolve: at each pixel of the captured instance, the cube along
+// r = reflect(-v, n) from the exact G-buffer point (v toward the eye, n the shading normal on
+// the side the view ray arrives from, as makeSurfacePoint()). Other pixels are left untouched.
+#include "common/shading.glsl"
+#include "gl/scene_buffers.glsl"
+#include "gl/scene_shading.glsl"
+
+layout(binding = 0) uniform usampler2D uVisibility;
+layout(binding = 1) uniform samplerCube uCube;
+uniform int uInstance;
+uniform vec3 uEye;
+layout(location = 0) out vec4 outColor;
+
+void main() {
+  SceneSurface s = surfaceFromVisibility(texelFetch(uVisibility, ivec2(gl_FragCoord.xy), 0));
+  if (!s.hit || s.instance != uInstance) discard;
+  vec3 incoming = s.position - uEye;
+  vec3 n = dot(s.faceNormal, incoming) > 0.0 ? -s.shadingNormal : s.shadingNormal;
+  vec3 r = reflectAbout(safeNormalize(-incoming), n);
+  outColor = vec4(texture(uCube, r).rgb, 1.0);
+}

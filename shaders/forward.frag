@@ -1,0 +1,64 @@
+// Forward renderer: the shared lecture model without shadows or secondary terms,
+//   L = M_E + A_G + sum_i S_i L_dir,i     (V_i = 1, k_ps M_PS L_refl = k_t M_T L_trans = 0),
+// at the exact ray/triangle point of the pixel-centre ray (as gbuffer.frag), so that a
+// forward-shaded pixel is what a ray tracer shading the same hit computes.
+// See engine/gl/forward_renderer.h and docs/forward-producers.md.
+#include "common/shading.glsl"
+#include "gl/scene_buffers.glsl"
+#include "gl/scene_shading.glsl"
+#include "gl/ray_triangle.glsl"
+#include "gl/pixel_ray.glsl"
+
+uniform uint uInstance;
+uniform uint uFirstTriangle;
+uniform int uMaterial;
+uniform vec3 uAmbient;
+uniform int uBlend;   // 1: the output is composited as I = I_m + k_t M_T I
+uniform int uBehind;  // 1: keep only fragments strictly behind the visibility texel's surface
+layout(binding = 0) uniform usampler2D uVisibility;
+
+// Dual-source blending (GL 3.3 core, ARB_blend_func_extended): index 1 is the per-fragment
+// destination factor k_t M_T of glBlendFunc(GL_ONE, GL_SRC1_COLOR).
+layout(location = 0, index = 0) out vec4 outColor;
+layout(location = 0, index = 1) out vec4 outTransmit;
+
+void main() {
+  vec3 dir = pixelRayDirection();
+  uvec3 idx = sceneTriangle(uFirstTriangle + uint(gl_PrimitiveID));
+  vec3 p0 = scenePosition(idx.x), p1 = scenePosition(idx.y), p2 = scenePosition(idx.z);
+  vec2 bary;
+  // Only an edge-on triangle fails; its centroid is a point of it, and no NaN escapes.
+  if (!rayTriangleBarycentrics(uEye, dir, p0, p1, p2, bary)) bary = vec2(1.0 / 3.0);
+  float w = 1.0 - bary.x - bary.y;
+  vec3 p = w * p0 + bary.x * p1 + bary.y * p2;
+
+  if (uBehind != 0) {
+    // "Behind the first visible surface": the first surface itself (same instance and
+    // primitive) is excluded by identity, everything else by its distance along the same ray.
+    uvec4 texel = texelFetch(uVisibility, ivec2(gl_FragCoord.xy), 0);
+    SceneSurface first = surfaceFromVisibility(texel);
+    if (first.hit) {
+      bool same = uint(first.instance) == uInstance && texel.y == uint(gl_PrimitiveID);
+      if (same || safeLength(p - uEye) <= safeLength(first.position - uEye)) discard;
+    }
+  }
+
+  vec3 face = safeNormalize(cross(p1 - p0, p2 - p0));
+  vec3 n = w * sceneNormal(idx.x) + bary.x * sceneNormal(idx.y) + bary.y * sceneNormal(idx.z);
+  n = maxAbsComponent(n) > 0.0 ? normalize(n) : face;
+  // As makeSurfacePoint(): the shading normal goes to the side the ray arrives from.
+  if (dot(face, dir) > 0.0) n = -n;
+  vec2 t0 = vec2(sceneUvs[2u * idx.x], sceneUvs[2u * idx.x + 1u]);
+  vec2 t1 = vec2(sceneUvs[2u * idx.y], sceneUvs[2u * idx.y + 1u]);
+  vec2 t2 = vec2(sceneUvs[2u * idx.z], sceneUvs[2u * idx.z + 1u]);
+  ShadingMaterial m = sceneMaterial(uMaterial, w * t0 + bary.x * t1 + bary.y * t2);
+
+  vec3 v = safeNormalize(-dir);
+  vec3 radiance = emittedAndAmbient(m, uAmbient);
+  for (int i = 0; i < uLightCount; ++i) {
+    radiance += lightContribution(m, n, v, sampleLight(sceneLight(i), p), 1.0f);
+  }
+  // Alpha: 1 for a replaced pixel; blended pixels keep the destination's alpha (0 + 1 * a).
+  outColor = vec4(radiance, uBlend != 0 ? 0.0 : 1.0);
+  outTransmit = vec4(m.kt * m.transmitColor, 1.0);
+}
