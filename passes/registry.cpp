@@ -1,5 +1,6 @@
 #include "passes/registry.h"
 
+#include "passes/raster/env_reflection.h"
 #include "passes/raster/gbuffer.h"
 #include "passes/rt/rt_shadows.h"
 #include "passes/rt/shade.h"
@@ -11,6 +12,10 @@ const PassRegistry& builtinPasses() {
     PassRegistry r;
     r.add<GBufferPass>("gbuffer",
                        "rasterized visibility buffer, normals and reversed-Z depth (GL)");
+    r.add<EnvCubePass>("env_cube", "reflection: environment cube map lookup along r (GL)");
+    r.add<EnvSpherePass>("env_sphere",
+                         "reflection: sphere map (GL_SPHERE_MAP) lookup along r (GL)");
+    r.add<EnvEquirectPass>("env_equirect", "reflection: lat-long panorama lookup along r (GL)");
     r.add<RtShadowsPass>("rt_shadows", "exact light visibility by Embree shadow rays (CPU)");
     r.add<ShadePass>("shade", "the lecture's illumination model from the G-buffer (CPU)");
     return r;
