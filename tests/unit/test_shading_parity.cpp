@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -20,6 +21,7 @@
 #include "engine/gl/gbuffer_raster.h"
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
+#include "engine/gl/transfer.h"
 #include "engine/graph/render_world.h"
 #include "engine/rt/shading.h"
 #include "engine/rt/surface.h"
@@ -258,6 +260,62 @@ TEST(ShadingParity, GlslAndCppAgreeOnRandomAndExtremeInputs) {
   for (const Group& grp : kGroups)
     std::cout << "[ measured ] " << grp.name << ": worst relative difference " << worst[grp.name]
               << ", cases over the bound: " << failures[grp.name] << " of " << kCases << "\n";
+}
+
+// surfaceFromVisibility (GLSL) vs makeSurfacePoint (C++) on every texel of a rasterized G-buffer of
+// the Whitted sample: position, face normal, shading normal (unflipped), uv and material.
+TEST(ShadingParity, SurfaceFromVisibilityMatchesMakeSurfacePoint) {
+  gl::testing::osmesaContext();
+  const int errorsBefore = gl::glDebugErrorCount();
+  const Scene scene = loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/whitted.json");
+  constexpr int kW = 160, kH = 120, kStride = 12;
+  RenderWorld world(scene, &gl::testing::osmesaContext());
+  gl::GBufferTextures targets;
+  gl::rasterizeGBuffer(world.glScene(), scene.camera, kW, kH, targets);
+  const gl::Buffer out = gl::Buffer::create(std::size_t(kW) * kH * kStride * 4);
+  const gl::Program program = gl::loadProgram({kShader}, {{"SURFACE_CASES", ""}});
+  world.glScene().bindStorage();
+  world.glShading().bindStorage();
+  out.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  program.use();
+  program.set("uLightCount", world.glShading().lightCount);
+  gl::glBindTextureUnit(0, targets.visibility.id());
+  gl::glDispatchCompute(GLuint((kW * kH + 63) / 64), 1, 1);
+  gl::glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> gpu(std::size_t(kW) * kH * kStride);
+  out.download(0, gpu.size() * 4, gpu.data());
+  const std::vector<std::uint32_t> ids = gl::readTexture(targets.visibility);
+  EXPECT_EQ(gl::glDebugErrorCount(), errorsBefore);
+
+  double worst[4] = {0, 0, 0, 0};  // position, face normal, shading normal, uv
+  int hits = 0;
+  for (int i = 0; i < kW * kH; ++i) {
+    const std::uint32_t* t = &ids[std::size_t(i) * 4];
+    if (t[0] == 0) continue;
+    ++hits;
+    const SurfaceHit hit{int(t[0]) - 1, t[1], std::bit_cast<float>(t[2]),
+                         std::bit_cast<float>(t[3])};
+    const SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), hit, vec3(0.f));
+    const float* g = &gpu[std::size_t(i) * kStride];
+    auto rel = [](vec3 a, vec3 b) {  // |a - b|_inf / max(|b|_inf, 1)
+      const vec3 d = glm::abs(a - b);
+      return double(std::max({d.x, d.y, d.z})) /
+             std::max({1.f, std::abs(b.x), std::abs(b.y), std::abs(b.z)});
+    };
+    const double e[4] = {rel(vec3(g[0], g[1], g[2]), sp.position),
+                         rel(vec3(g[3], g[4], g[5]), sp.faceNormal),
+                         rel(vec3(g[6], g[7], g[8]), sp.shadingNormal),
+                         rel(vec3(g[9], g[10], 0.f), vec3(sp.uv, 0.f))};
+    for (int k = 0; k < 4; ++k) {
+      worst[k] = std::max(worst[k], e[k]);
+      ASSERT_LE(e[k], 1e-5) << "texel " << i << " quantity " << k;
+    }
+    ASSERT_EQ(int(g[11]), sp.material) << "texel " << i;
+  }
+  EXPECT_GT(hits, kW * kH / 4);
+  std::cout << "[ measured ] surfaceFromVisibility vs makeSurfacePoint over " << hits
+            << " texels: worst relative position " << worst[0] << ", face normal " << worst[1]
+            << ", shading normal " << worst[2] << ", uv " << worst[3] << "\n";
 }
 
 }  // namespace
