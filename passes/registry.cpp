@@ -2,6 +2,7 @@
 
 #include "passes/raster/blend_transmission.h"
 #include "passes/raster/dynamic_cube.h"
+#include "passes/raster/env_reflection.h"
 #include "passes/raster/gbuffer.h"
 #include "passes/raster/planar_mirror.h"
 #include "passes/rt/rt_secondary.h"
@@ -23,6 +24,10 @@ const PassRegistry& builtinPasses() {
     r.add<PlanarMirrorPass>("planar_mirror", "reflection by the camera mirrored about planes (GL)");
     r.add<DynamicCubePass>("env_dynamic_cube",
                            "reflection by a cube map captured from the object's centre (GL)");
+    r.add<EnvCubePass>("env_cube", "reflection: environment cube map lookup along r (GL)");
+    r.add<EnvSpherePass>("env_sphere",
+                         "reflection: sphere map (GL_SPHERE_MAP) lookup along r (GL)");
+    r.add<EnvEquirectPass>("env_equirect", "reflection: lat-long panorama lookup along r (GL)");
     r.add<RtShadowsPass>("rt_shadows", "exact light visibility by Embree shadow rays (CPU)");
     r.add<RtReflectionPass>("rt_reflection",
                             "exact reflection: recursive Whitted reflection rays (CPU)");
