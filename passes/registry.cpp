@@ -1,6 +1,7 @@
 #include "passes/registry.h"
 
 #include "passes/raster/gbuffer.h"
+#include "passes/raster/shadow_map.h"
 #include "passes/rt/rt_shadows.h"
 #include "passes/rt/shade.h"
 
@@ -12,6 +13,7 @@ const PassRegistry& builtinPasses() {
     r.add<GBufferPass>("gbuffer",
                        "rasterized visibility buffer, normals and reversed-Z depth (GL)");
     r.add<RtShadowsPass>("rt_shadows", "exact light visibility by Embree shadow rays (CPU)");
+    r.add<ShadowMapPass>("shadow_map", "light visibility by shadow maps with bias and filter modes (GL)");
     r.add<ShadePass>("shade", "the lecture's illumination model from the G-buffer (CPU)");
     return r;
   }();
