@@ -17,17 +17,17 @@ void ShadowMapPass::setup(PassBuilder& b) {
 
 void ShadowMapPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
-  const auto frusta = shadowmap::fitLightFrusta(
-      world.scene().lights, world.geometry().bounds,
-      {.resolution = settings_.resolution,
-       .pointLightSize = settings_.lightSize,
-       .directionalAngle = settings_.lightAngle});
+  const auto frusta = shadowmap::fitLightFrusta(world.scene().lights, world.geometry().bounds,
+                                                {.resolution = settings_.resolution,
+                                                 .pointLightSize = settings_.lightSize,
+                                                 .directionalAngle = settings_.lightAngle});
   auto& state = world.glCached<shadowmap::ShadowMapGl>();
   const gl::Texture& maps =
       state.maps(settings_.resolution, std::max(1, shadowmap::totalLayers(frusta)));
   state.renderMaps(world, frusta, settings_, maps);
   state.lookup(world, frusta, settings_, maps, c.glTexture(gbuffer_), c.glTexture(visibility_));
-  c.count("shadow_map_texels", double(maps.width()) * maps.height() * shadowmap::totalLayers(frusta));
+  c.count("shadow_map_texels",
+          double(maps.width()) * maps.height() * shadowmap::totalLayers(frusta));
 }
 
 }  // namespace diptych

@@ -49,8 +49,8 @@ void fitDirectional(LightFrustum& f, const Aabb& bounds, const FrustumOptions& o
   const vec2 pad = extent * (1e-3f + 2.f / float(o.resolution));
   f.zNear = std::max(-hi.z - 0.01f * (hi.z - lo.z), 1e-6f * radius);
   f.zFar = -lo.z + 0.01f * (hi.z - lo.z) + 1e-6f * radius;
-  const mat4 proj = glm::orthoRH_ZO(lo.x - pad.x, hi.x + pad.x, lo.y - pad.y, hi.y + pad.y,
-                                    f.zNear, f.zFar);
+  const mat4 proj =
+      glm::orthoRH_ZO(lo.x - pad.x, hi.x + pad.x, lo.y - pad.y, hi.y + pad.y, f.zNear, f.zFar);
   f.viewProj = {reverseDepth(proj) * view};
   f.texelScale = std::max(extent.x + 2.f * pad.x, extent.y + 2.f * pad.y) / float(o.resolution);
 }
@@ -74,8 +74,8 @@ std::pair<float, float> axisRange(const vec3& eye, const vec3& axis, const Aabb&
 void fitSpot(LightFrustum& f, const Light& light, const Aabb& bounds, const FrustumOptions& o) {
   // fov = 2 * outer cone, widened by 8 texels so PCF taps at the cone's rim stay in the map.
   const float outer = std::clamp(light.outerConeAngle, 1e-4f, kMaxHalfFov);
-  const float half = std::min(std::atan(std::tan(outer) * (1.f + 8.f / float(o.resolution))),
-                              kMaxHalfFov);
+  const float half =
+      std::min(std::atan(std::tan(outer) * (1.f + 8.f / float(o.resolution))), kMaxHalfFov);
   const auto [zNear, zFar] = axisRange(f.position, f.direction, bounds);
   f.zNear = zNear;
   f.zFar = zFar;
@@ -90,7 +90,8 @@ void fitSpot(LightFrustum& f, const Light& light, const Aabb& bounds, const Frus
 void fitCube(LightFrustum& f, const Aabb& bounds, const FrustumOptions& o) {
   float farthest = 0.f;
   for (const vec3& c : corners(bounds)) farthest = std::max(farthest, glm::length(c - f.position));
-  const vec3 outside = glm::max(glm::max(bounds.lo - f.position, f.position - bounds.hi), vec3(0.f));
+  const vec3 outside =
+      glm::max(glm::max(bounds.lo - f.position, f.position - bounds.hi), vec3(0.f));
   const float boxDistance = glm::length(outside);
   f.zFar = std::max(farthest * 1.01f, 1e-6f);
   f.zNear = std::max(0.99f * boxDistance / std::sqrt(3.f), 1e-4f * f.zFar);

@@ -15,9 +15,9 @@ enum class ViewKind { Unshadowed = 0, Ortho = 1, Perspective = 2, Cube = 3 };
 
 struct LightFrustum {
   ViewKind kind = ViewKind::Unshadowed;
-  int firstLayer = 0;           // into the shadow-map array
-  int layers = 0;               // 1 (ortho, perspective) or 6 (cube faces +x, -x, +y, -y, +z, -z)
-  std::vector<mat4> viewProj;   // one per layer, reversed-Z
+  int firstLayer = 0;             // into the shadow-map array
+  int layers = 0;                 // 1 (ortho, perspective) or 6 (cube faces +x, -x, +y, -y, +z, -z)
+  std::vector<mat4> viewProj;     // one per layer, reversed-Z
   float zNear = 0.f, zFar = 1.f;  // along the view axis, world units
   // World size of one texel: ortho, in world units; perspective and cube, per unit of axis depth
   // (so the footprint at axis depth z is z * texelScale).
@@ -30,8 +30,8 @@ struct LightFrustum {
 
 struct FrustumOptions {
   int resolution = 2048;
-  float pointLightSize = 0.1f;        // PCSS world diameter for point and spot lights
-  float directionalAngle = 0.0093f;   // PCSS angular diameter for directional lights (the sun)
+  float pointLightSize = 0.1f;       // PCSS world diameter for point and spot lights
+  float directionalAngle = 0.0093f;  // PCSS angular diameter for directional lights (the sun)
 };
 
 // Reversed-Z perspective with a finite far plane, ZERO_TO_ONE: depth = 1 at zNear, 0 at zFar.

@@ -31,9 +31,8 @@ class ShadowMapGl {
   void renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
                   const Settings& settings, const gl::Texture& maps);
   // Writes V_i for every light into `visibility` (R32F 2D, or 2D array with one layer per light).
-  void lookup(RenderWorld& world, const std::vector<LightFrustum>& frusta,
-              const Settings& settings, const gl::Texture& maps, const gl::Texture& gbuffer,
-              const gl::Texture& visibility);
+  void lookup(RenderWorld& world, const std::vector<LightFrustum>& frusta, const Settings& settings,
+              const gl::Texture& maps, const gl::Texture& gbuffer, const gl::Texture& visibility);
 
  private:
   void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);

@@ -24,12 +24,13 @@ namespace {
   throw InputError("<recipe>", "params." + key, message);  // unreachable for non-boolean values
 }
 
-constexpr std::array<std::pair<const char*, Bias>, 6> kBiases{{{"none", Bias::None},
-                                                               {"constant", Bias::Constant},
-                                                               {"slope", Bias::Slope},
-                                                               {"normal_offset", Bias::NormalOffset},
-                                                               {"receiver_plane", Bias::ReceiverPlane},
-                                                               {"adaptive", Bias::Adaptive}}};
+constexpr std::array<std::pair<const char*, Bias>, 6> kBiases{
+    {{"none", Bias::None},
+     {"constant", Bias::Constant},
+     {"slope", Bias::Slope},
+     {"normal_offset", Bias::NormalOffset},
+     {"receiver_plane", Bias::ReceiverPlane},
+     {"adaptive", Bias::Adaptive}}};
 constexpr std::array<std::pair<const char*, Filter>, 4> kFilters{{{"none", Filter::None},
                                                                   {"pcf", Filter::Pcf},
                                                                   {"poisson", Filter::Poisson},
@@ -80,7 +81,11 @@ Settings readSettings(const PassParams& p) {
   return s;
 }
 
-std::string biasName(Bias bias) { return nameOf(bias, kBiases); }
-std::string filterName(Filter filter) { return nameOf(filter, kFilters); }
+std::string biasName(Bias bias) {
+  return nameOf(bias, kBiases);
+}
+std::string filterName(Filter filter) {
+  return nameOf(filter, kFilters);
+}
 
 }  // namespace diptych::shadowmap

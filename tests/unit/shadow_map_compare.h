@@ -19,7 +19,7 @@ namespace diptych::testing {
 
 struct ShadowComparison {
   int width = 0, height = 0, layers = 0;
-  std::vector<float> map, exact;      // [layer][y][x]
+  std::vector<float> map, exact;        // [layer][y][x]
   std::vector<std::uint32_t> instance;  // per pixel: instance + 1, 0 = background
   // Classification of `instance` pixels outside the 2-pixel band around the exact boundary.
   std::size_t considered = 0, exactLit = 0, falseShadow = 0, falseLit = 0, band = 0;
@@ -28,7 +28,9 @@ struct ShadowComparison {
   double misclassified() const {
     return considered ? double(falseShadow + falseLit) / double(considered) : 0.0;
   }
-  double falseShadowOfLit() const { return exactLit ? double(falseShadow) / double(exactLit) : 0.0; }
+  double falseShadowOfLit() const {
+    return exactLit ? double(falseShadow) / double(exactLit) : 0.0;
+  }
 };
 
 // `params`: the shadow_map pass parameters. Classifies light `layer` on pixels of `instance`.
