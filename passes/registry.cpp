@@ -5,6 +5,7 @@
 #include "passes/raster/env_reflection.h"
 #include "passes/raster/gbuffer.h"
 #include "passes/raster/planar_mirror.h"
+#include "passes/raster/shadow_map.h"
 #include "passes/rt/rt_secondary.h"
 #include "passes/rt/rt_shadows.h"
 #include "passes/rt/rt_whitted.h"
@@ -35,6 +36,8 @@ const PassRegistry& builtinPasses() {
                               "exact transmission: recursive refraction rays (CPU)");
     r.add<RtWhittedPass>("rt_whitted",
                          "full ray tracing: the Whitted reference from primary rays (CPU)");
+    r.add<ShadowMapPass>("shadow_map",
+                         "light visibility by shadow maps with bias and filter modes (GL)");
     r.add<ShadePass>("shade", "the lecture's illumination model from the G-buffer (CPU)");
     return r;
   }();

@@ -1,0 +1,52 @@
+#pragma once
+// GL side of the shadow_map pass. Everything lives in RenderWorld::glCached<ShadowMapGl>() (never
+// in the pass: a compiled graph may outlive its context). Several shadow_map passes in one graph
+// (e.g. two bias modes side by side) share the programs; each execution renders its maps, then
+// looks them up, before the next pass runs, so sharing the map textures is safe.
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "engine/gl/objects.h"
+#include "engine/gl/scene_buffers.h"
+#include "passes/raster/shadow_map_frusta.h"
+#include "passes/raster/shadow_map_settings.h"
+
+namespace diptych {
+class RenderWorld;
+}
+
+namespace diptych::shadowmap {
+
+// SSBO bindings of shaders/shadow_lookup.frag, after the scene's 0..6.
+inline constexpr GLuint kShadowLayersBinding = 7;
+inline constexpr GLuint kShadowLightsBinding = 8;
+
+class ShadowMapGl {
+ public:
+  ShadowMapGl();
+  // The D32F array holding `layers` maps of resolution^2 (allocated on first request).
+  const gl::Texture& maps(int resolution, int layers);
+  // Renders the depth of every shadow-casting mesh into each light's layers.
+  void renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
+                  const Settings& settings, const gl::Texture& maps);
+  // Writes V_i for every light into `visibility` (R32F 2D, or 2D array with one layer per light).
+  void lookup(RenderWorld& world, const std::vector<LightFrustum>& frusta, const Settings& settings,
+              const gl::Texture& maps, const gl::Texture& gbuffer, const gl::Texture& visibility);
+
+ private:
+  void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);
+  gl::Program depth_, lookup_;
+  gl::Framebuffer depthFbo_, lookupFbo_;
+  gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle
+  gl::Buffer layers_, lights_;
+  std::map<std::pair<int, int>, gl::Texture> maps_;  // (resolution, layers) -> D32F array
+  std::vector<vec2> poisson_;
+};
+
+// `count` points in the unit disc, at least a fixed distance apart, by deterministic dart
+// throwing (Cook 1986, "Stochastic sampling in computer graphics"): the distance shrinks when a
+// point cannot be placed, so any count terminates. Same points every run.
+std::vector<vec2> poissonDisk(int count);
+
+}  // namespace diptych::shadowmap

@@ -1,0 +1,87 @@
+// Shadow-map depth render: every shadow-casting mesh from the scene's shared GPU buffers into
+// each layer of the D32F array, reversed-Z (see shadow_map_frusta.h), depth only.
+#include <cstdint>
+
+#include "engine/gl/debug.h"
+#include "engine/gl/shader.h"
+#include "engine/graph/render_world.h"
+#include "passes/raster/shadow_map_gl.h"
+
+namespace diptych::shadowmap {
+
+ShadowMapGl::ShadowMapGl()
+    : depth_(gl::loadProgram({"shadow_depth.vert", "shadow_depth.frag"})),
+      lookup_(gl::loadProgram({"shadow_fullscreen.vert", "shadow_lookup.frag"})),
+      depthFbo_(gl::Framebuffer::create()),
+      lookupFbo_(gl::Framebuffer::create()),
+      emptyVao_(gl::VertexArray::create()),
+      poisson_(poissonDisk(64)) {}
+
+const gl::Texture& ShadowMapGl::maps(int resolution, int layers) {
+  auto& tex = maps_[{resolution, layers}];
+  if (!tex) {
+    tex = gl::Texture::create2DArray(gl::TextureFormat::D32F, resolution, resolution, layers);
+    tex.setLabel("shadow_map.maps");
+  }
+  return tex;
+}
+
+namespace {
+
+// A mesh is drawn into the maps unless its material casts no shadow, or it is alpha-masked
+// with a constant coverage below the cutoff and no colour texture (cut out everywhere).
+// Textured masks need the colour texture's alpha on the GPU: see docs/shadow-maps.md.
+bool castsShadow(const Scene& scene, int material) {
+  if (material < 0 || material >= int(scene.materials.size())) return true;
+  const Material& m = scene.materials[std::size_t(material)];
+  if (!m.castsShadows) return false;
+  return !(m.alphaMode == AlphaMode::Mask && m.colorTexture < 0 && m.alpha < m.alphaCutoff);
+}
+
+}  // namespace
+
+void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
+                             const Settings& settings, const gl::Texture& maps) {
+  gl::ScopedGlLabel label("shadow_map.render");
+  const gl::GlSceneBuffers& scene = world.glScene();
+  const Scene& source = world.scene();
+
+  gl::glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  gl::glEnable(GL_DEPTH_TEST);
+  gl::glDepthFunc(GL_GREATER);  // reversed-Z: nearer is greater
+  gl::glDepthMask(GL_TRUE);
+  gl::glDisable(GL_CULL_FACE);  // triangles are two-sided, as in Embree
+  gl::glDisable(GL_BLEND);
+  gl::glDisable(GL_SCISSOR_TEST);
+  gl::glViewport(0, 0, maps.width(), maps.height());
+  if (settings.bias == Bias::Slope) {
+    // glPolygonOffset adds factor * max|dz/dx, dz/dy| + units * r to the window depth. The
+    // parameters keep the usual sign (positive = away from the light); reversed-Z stores
+    // farther as smaller, so both are negated here.
+    gl::glEnable(GL_POLYGON_OFFSET_FILL);
+    gl::glPolygonOffset(-settings.slopeFactor, -settings.slopeUnits);
+  }
+  depth_.use();
+  scene.vertexArray.bind();
+  const GLfloat zero = 0.f;
+  for (const LightFrustum& f : frusta) {
+    for (int i = 0; i < f.layers; ++i) {
+      depthFbo_.attachDepth(maps, 0, f.firstLayer + i);
+      depthFbo_.checkComplete("shadow_map.depth");
+      depthFbo_.bind();
+      gl::glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &zero);
+      depth_.set("uViewProjection", f.viewProj[std::size_t(i)]);
+      for (const gl::GlMeshRange& mesh : scene.meshes) {
+        if (mesh.triangleCount == 0 || !castsShadow(source, mesh.material)) continue;
+        gl::glDrawElements(GL_TRIANGLES, GLsizei(3 * mesh.triangleCount), GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));
+      }
+    }
+  }
+  gl::glDisable(GL_POLYGON_OFFSET_FILL);
+  gl::glPolygonOffset(0.f, 0.f);
+  gl::glBindVertexArray(0);
+  gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace diptych::shadowmap

@@ -1,0 +1,246 @@
+// Shadow-map lookup (passes/raster/shadow_map*.cpp, docs/shadow-maps.md): for one light, the
+// visibility V in [0,1] of the exact G-buffer surface point, from that light's reversed-Z D32F
+// map(s) under one bias mode and one filter. A tap is lit when the receiver's depth is at least
+// the stored depth (reversed-Z: nearer = greater).
+#include "common/shading.glsl"
+#include "gl/scene_buffers.glsl"
+#include "gl/scene_shading.glsl"
+
+const int KIND_UNSHADOWED = 0;
+const int KIND_ORTHO = 1;
+const int KIND_PERSPECTIVE = 2;
+const int KIND_CUBE = 3;
+const int BIAS_NONE = 0;
+const int BIAS_CONSTANT = 1;
+const int BIAS_SLOPE = 2;
+const int BIAS_NORMAL_OFFSET = 3;
+const int BIAS_RECEIVER_PLANE = 4;
+const int BIAS_ADAPTIVE = 5;
+const int FILTER_NONE = 0;
+const int FILTER_PCF = 1;
+const int FILTER_POISSON = 2;
+const int FILTER_PCSS = 3;
+
+struct ShadowLayer {
+  mat4 viewProj;
+  mat4 invViewProj;
+};
+layout(std430, binding = 7) readonly buffer ShadowLayers { ShadowLayer shadowLayers[]; };
+struct ShadowLight {
+  ivec4 info;            // kind, first layer, layer count, -
+  vec4 positionNear;     // light position, near plane (axis depth)
+  vec4 directionFar;     // travel direction, far plane (axis depth)
+  vec4 texelScaleSize;   // texel footprint (ortho: world; else per unit axis depth), PCSS size
+};
+layout(std430, binding = 8) readonly buffer ShadowLights { ShadowLight shadowLights[]; };
+
+layout(binding = 0) uniform usampler2D uVisibility;
+layout(binding = 1) uniform sampler2DArray uShadowMaps;
+
+uniform int uLight;  // -1: a layer with no light, written as lit
+uniform int uResolution;
+uniform int uBias;
+uniform int uFilter;
+uniform int uKernel;
+uniform int uTaps;
+uniform float uConstantBias;     // world units along the light ray
+uniform float uNormalScale;      // texel footprints
+uniform float uAdaptiveEpsilon;  // world units (adaptive_epsilon x scene diagonal)
+uniform float uPlaneEpsilon;     // relative depth (receiver_plane)
+uniform float uRadius;           // texels
+uniform float uMaxRadius;        // texels
+uniform vec2 uPoisson[64];
+
+layout(location = 0) out float outVisibility;
+
+// The current light and receiver, set once in main() (initialised so no path reads garbage).
+int gKind = KIND_UNSHADOWED, gFirst = 0;
+vec3 gLightPos = vec3(0.0), gLightDir = vec3(0.0);
+float gNear = 1.0, gFar = 2.0, gTexelScale = 0.0, gLightSize = 0.0;
+vec3 gP = vec3(0.0), gPb = vec3(0.0);  // exact surface point, biased lookup point
+vec3 gN = vec3(0.0, 1.0, 0.0);         // geometric normal on the light's side
+int gFace0 = 0;                        // layer (cube face) of the lookup point
+vec4 gSc0 = vec4(0.0);                 // (uv, depth, clip w) of the lookup point on gFace0
+vec4 gScP = vec4(0.0);                 // same for the unbiased point (receiver_plane)
+vec2 gGrad = vec2(0.0);                // receiver plane: d depth / d uv (Isidoro 2006)
+bool gGradOk = false;
+
+// (uv in [0,1]^2, reversed depth, clip w) of a world point on one layer; a point behind a
+// perspective light gets uv (-1, -1), outside every map.
+vec4 project(int face, vec3 p) {
+  vec4 c = shadowLayers[gFirst + face].viewProj * vec4(p, 1.0);
+  if (!(c.w > 0.0)) return vec4(-1.0, -1.0, 0.0, 0.0);
+  vec3 ndc = c.xyz / c.w;
+  return vec4(0.5 * ndc.xy + 0.5, ndc.z, c.w);
+}
+
+vec3 unproject(int face, vec2 uv, float depth) {
+  vec4 h = shadowLayers[gFirst + face].invViewProj * vec4(2.0 * uv - 1.0, depth, 1.0);
+  return h.xyz / h.w;
+}
+
+// Cube face (+x, -x, +y, -y, +z, -z) whose 90-degree frustum holds direction d: the major axis.
+int cubeFace(vec3 d) {
+  vec3 a = abs(d);
+  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
+  if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
+  return d.z >= 0.0 ? 4 : 5;
+}
+
+int faceOf(vec3 p) { return gKind == KIND_CUBE ? cubeFace(p - gLightPos) : 0; }
+
+// Axis depth (world units) of a reversed-Z depth value: ortho d = (f - z) / (f - n);
+// perspective d = n (f - z) / ((f - n) z).
+float linearDepth(float d) {
+  if (gKind == KIND_ORTHO) return gFar - d * (gFar - gNear);
+  return gNear * gFar / max(d * (gFar - gNear) + gNear, 1e-30);
+}
+
+// World size of one texel at axis depth z.
+float texelWorld(float z) { return gKind == KIND_ORTHO ? gTexelScale : z * gTexelScale; }
+
+// The receiver's reversed depth to compare with texel `texel` of `face`.
+float receiverDepth(int face, ivec2 texel) {
+  vec2 centre = (vec2(texel) + 0.5) / float(uResolution);
+  if (uBias == BIAS_RECEIVER_PLANE) {
+    // Isidoro 2006: the receiver's plane, extrapolated in depth to the texel centre where the
+    // rasterizer sampled the occluder, plus a relative epsilon for rounding. Off the receiver's
+    // own cube face the gradient means nothing: fall back to the point's own depth there.
+    float d = face == gFace0 && gGradOk ? gScP.z + dot(gGrad, centre - gScP.xy)
+                                        : project(face, gP).z;
+    return d * (1.0 + uPlaneEpsilon);
+  }
+  if (uBias == BIAS_ADAPTIVE) {
+    // Dou et al. 2014: intersect the light ray through the texel centre with the receiver's
+    // tangent plane; compare that point, moved epsilon toward the light, with the texel.
+    vec3 a = unproject(face, centre, 1.0), b = unproject(face, centre, 0.0);  // near, far
+    vec3 ray = b - a;
+    float denom = dot(gN, ray);
+    vec3 x = gP;
+    if (abs(denom) > 1e-6 * length(ray)) {
+      float t = dot(gN, gP - a) / denom;
+      if (t > 0.0 && t < 1.0) x = a + t * ray;
+    }
+    return project(face, x - uAdaptiveEpsilon * normalize(ray)).z;
+  }
+  return project(face, gPb).z;
+}
+
+// One tap at `offset` texels from the lookup point: (lit 0/1, stored depth, 1 if it read a map).
+vec3 tap(vec2 offset) {
+  ivec2 texel = ivec2(floor(gSc0.xy * float(uResolution) + offset));
+  int face = gFace0;
+  if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(uResolution)))) {
+    if (gKind != KIND_CUBE) return vec3(1.0, 0.0, 0.0);  // outside the light's frustum: lit
+    // Off the edge of a cube face: carry the texel's direction onto the face that holds it.
+    vec3 w = unproject(gFace0, (vec2(texel) + 0.5) / float(uResolution), gSc0.z);
+    face = cubeFace(w - gLightPos);
+    vec4 q = project(face, w);
+    texel = clamp(ivec2(floor(q.xy * float(uResolution))), ivec2(0), ivec2(uResolution - 1));
+  }
+  float stored = texelFetch(uShadowMaps, ivec3(texel, gFirst + face), 0).r;
+  return vec3(receiverDepth(face, texel) >= stored ? 1.0 : 0.0, stored, 1.0);
+}
+
+// Percentage-closer soft shadows (Fernando 2005): blocker search, penumbra from similar
+// triangles, then PCF over the penumbra. Sizes in world units are turned into texels with the
+// footprint at the receiver's depth; both radii are capped at uMaxRadius texels.
+float pcss() {
+  float zR = linearDepth(gSc0.z);
+  float foot = texelWorld(zR);
+  float reach = max(zR - gNear, 0.0);
+  // Occluders of part of the light lie in the cone from the receiver to the light's extent;
+  // its widest cross-section on the map is at the near plane (ortho: the angular width times
+  // the distance).
+  float search = gKind == KIND_ORTHO ? 0.5 * gLightSize * reach / foot
+                                     : 0.5 * gLightSize * reach / (zR * gNear * gTexelScale);
+  search = clamp(search, 1.0, uMaxRadius);
+  float blockers = 0.0, sum = 0.0;
+  for (int i = 0; i < uTaps; ++i) {
+    vec3 t = tap(uPoisson[i] * search);
+    if (t.z > 0.0 && t.x == 0.0) {
+      blockers += 1.0;
+      sum += linearDepth(t.y);
+    }
+  }
+  if (blockers == 0.0) return 1.0;
+  float zB = sum / blockers;
+  float penumbra = gKind == KIND_ORTHO ? gLightSize * (zR - zB)
+                                       : gLightSize * (zR - zB) / max(zB, 1e-30);
+  float radius = clamp(0.5 * penumbra / foot, 0.0, uMaxRadius);
+  float lit = 0.0;
+  for (int i = 0; i < uTaps; ++i) lit += tap(uPoisson[i] * radius).x;
+  return lit / float(uTaps);
+}
+
+float visibility() {
+  if (uFilter == FILTER_PCF) {
+    int k = uKernel / 2;
+    float lit = 0.0;
+    for (int j = -k; j <= k; ++j)
+      for (int i = -k; i <= k; ++i) lit += tap(vec2(i, j)).x;
+    return lit / float(uKernel * uKernel);
+  }
+  if (uFilter == FILTER_POISSON) {
+    float lit = 0.0;
+    for (int i = 0; i < uTaps; ++i) lit += tap(uPoisson[i] * uRadius).x;
+    return lit / float(uTaps);
+  }
+  if (uFilter == FILTER_PCSS) return pcss();
+  return tap(vec2(0.0)).x;
+}
+
+void main() {
+  if (uLight < 0) {
+    outVisibility = 1.0;
+    return;
+  }
+  SceneSurface s = surfaceFromVisibility(texelFetch(uVisibility, ivec2(gl_FragCoord.xy), 0));
+  ShadowLight light = shadowLights[uLight];
+  gKind = light.info.x;
+  gFirst = light.info.y;
+  gLightPos = light.positionNear.xyz;
+  gNear = light.positionNear.w;
+  gLightDir = light.directionFar.xyz;
+  gFar = light.directionFar.w;
+  gTexelScale = light.texelScaleSize.x;
+  gLightSize = light.texelScaleSize.y;
+  if (gKind == KIND_UNSHADOWED) {  // uniform: the same light for every pixel
+    outVisibility = 1.0;
+    return;
+  }
+
+  gP = s.position;
+  vec3 toLight = gKind == KIND_ORTHO ? -gLightDir : safeNormalize(gLightPos - gP);
+  // The face normal on the light's side, as the shadow rays offset their origins.
+  gN = dot(s.faceNormal, toLight) < 0.0 ? -s.faceNormal : s.faceNormal;
+
+  // Receiver plane (Isidoro 2006): screen-space derivatives of (u, v, depth) give
+  // d depth / d(u, v) through the inverse Jacobian of (u, v) w.r.t. the screen. Taken here, in
+  // uniform control flow, for every pixel; quads that straddle two surfaces (or two cube
+  // faces, or the background) get a wrong plane: an artifact of the technique.
+  gScP = project(faceOf(gP), gP);
+  vec3 dx = dFdx(gScP.xyz), dy = dFdy(gScP.xyz);
+  float det = dx.x * dy.y - dx.y * dy.x;
+  gGrad = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
+  gGradOk = abs(det) > 0.0 && maxAbsComponent(vec3(gGrad, 0.0)) < SHADING_FLT_MAX;
+
+  if (!s.hit) {
+    outVisibility = 1.0;
+    return;
+  }
+
+  gPb = gP;
+  if (uBias == BIAS_CONSTANT) gPb = gP + uConstantBias * toLight;
+  if (uBias == BIAS_NORMAL_OFFSET) {
+    // Holbert 2011: offset along the normal by the texel footprint at the point, times
+    // sin(angle to the light) (no offset facing the light, a full texel at grazing angles).
+    float cosTheta = clamp(dot(gN, toLight), 0.0, 1.0);
+    float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+    float axisDepth = gKind == KIND_ORTHO ? 1.0 : project(faceOf(gP), gP).w;
+    gPb = gP + gN * (uNormalScale * texelWorld(axisDepth) * sinTheta);
+  }
+  gFace0 = faceOf(gPb);
+  gSc0 = project(gFace0, gPb);
+  outVisibility = saturate01(visibility());
+}
