@@ -22,9 +22,10 @@ class PassParams {
   // Throws InputError for the first key no getter asked for.
   void rejectUnread(const std::string& passType) const;
   const nlohmann::json& values() const { return values_; }
+  // Throws InputError at this key's recipe place, for checks across parameters.
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
  private:
-  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
   nlohmann::json values_ = nlohmann::json::object();
   std::string file_, place_;
   mutable std::set<std::string> read_;

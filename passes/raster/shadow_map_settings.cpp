@@ -9,19 +9,9 @@ namespace diptych::shadowmap {
 
 namespace {
 
-// PassParams keeps the recipe file and place private and only its getters raise errors naming
-// them. To report a combination error at the same place, ask the boolean getter for the key:
-// none of our keys is a boolean, so it throws an InputError carrying file and place, which we
-// rethrow with our message.
-// TODO(shared): a public PassParams::fail(key, message) would make this unnecessary.
 [[noreturn]] void fail(const PassParams& params, const std::string& key,
                        const std::string& message) {
-  try {
-    params.boolean(key, false);
-  } catch (const InputError& e) {
-    throw InputError(e.file(), e.place(), message);
-  }
-  throw InputError("<recipe>", "params." + key, message);  // unreachable for non-boolean values
+  params.fail(key, message);
 }
 
 constexpr std::array<std::pair<const char*, Bias>, 6> kBiases{
