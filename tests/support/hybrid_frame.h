@@ -39,12 +39,13 @@ inline Camera cameraOf(const Scene& scene) {
   return scene.hasCamera ? scene.camera : frameBounds(scene.bounds());
 }
 
-// Compiles and runs one frame. `outputs` overrides the recipe's outputs when not empty.
+// Compiles `recipe` for `scene` and runs one frame. `outputs` overrides the recipe's outputs when
+// not empty.
 inline std::unique_ptr<HybridFrame> renderHybridFrame(
-    const std::filesystem::path& file, int width, int height,
-    const std::vector<std::string>& outputs, const Recipe& recipe = defaultHybridRecipe()) {
+    Scene scene, int width, int height, const std::vector<std::string>& outputs,
+    const Recipe& recipe = defaultHybridRecipe()) {
   auto f = std::make_unique<HybridFrame>();
-  f->scene = loadScene(file);
+  f->scene = std::move(scene);
   const FrameSettings frame{.width = width, .height = height, .camera = cameraOf(f->scene)};
   f->graph = compileGraph(recipe, builtinPasses(), f->scene, frame, outputs);
   if (f->graph.usesGl()) f->context = gl::createContext(gl::ContextKind::Osmesa, width, height);
@@ -52,6 +53,20 @@ inline std::unique_ptr<HybridFrame> renderHybridFrame(
   f->executor = std::make_unique<GraphExecutor>(f->graph, *f->world);
   f->executor->runFrame();
   return f;
+}
+
+// The same for a scene file, loaded with loadScene (what `diptych render` does).
+inline std::unique_ptr<HybridFrame> renderHybridFrame(
+    const std::filesystem::path& file, int width, int height,
+    const std::vector<std::string>& outputs, const Recipe& recipe = defaultHybridRecipe()) {
+  return renderHybridFrame(loadScene(file), width, height, outputs, recipe);
+}
+
+// The node of the compiled schedule called `name` ("default:shadows.visibility"), or null.
+inline const GraphNode* scheduledNode(const CompiledGraph& graph, const std::string& name) {
+  for (const GraphNode& n : graph.nodes)
+    if (n.name == name) return &n;
+  return nullptr;
 }
 
 }  // namespace diptych::testing
