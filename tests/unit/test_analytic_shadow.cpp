@@ -1,0 +1,135 @@
+// The hybrid frame (gbuffer -> rt_shadows -> shade) against an analytic answer: the shadow of a
+// sphere (radius r = 1, centre at height c = 2) on the plane y = 0 cast by a point light at
+// height H = 10 straight above the centre is the disc of radius
+//   R = H r / sqrt((H - c)^2 - r^2) = 10 / sqrt(63) = 1.25988
+// (the light's tangent cone to the sphere, cut by the plane). samples/scenes/shadow-sphere.json.
+//
+// The shadow radius is measured from the pixels: each plane pixel's world position is rebuilt
+// from the G-buffer (u, v); the largest radius of a shadowed pixel and the smallest radius of a
+// lit pixel bracket the boundary. Both must lie within tolerance of R, where
+//   tolerance = one pixel footprint on the plane at the boundary (largest distance between the
+//               world positions of horizontally or vertically neighbouring plane pixels within
+//               5 % of R: pixels sample the plane no more sparsely than that)
+//             + the tessellation deficit: the sphere is a UV sphere of 256 slices x 128 stacks
+//               (stated in the scene file). Its vertices lie on the sphere, so it contains the
+//               sphere of radius r cos(a), a = the largest angular circumradius of a facet. The
+//               brief's polygon bound r cos(pi / 256) covers one direction only; a quad facet
+//               spans pi/128 in longitude and latitude, so a <= sqrt(2) pi / 256 (conservative).
+//               The shadow of the tessellated sphere lies between the discs of R(r cos a) and
+//               R(r), and R(r) - R(r cos a) = 1.9e-4.
+// Shadowed means visibility 0 for the single light; the shade pass must then give the plane no
+// light at all (ambient and emission are 0 in this scene), lit plane pixels some.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "passes/common/visibility_texel.h"
+#include "tests/support/hybrid_frame.h"
+
+namespace diptych {
+namespace {
+
+constexpr double kH = 10.0, kC = 2.0, kR = 1.0;
+
+double shadowRadius(double sphereRadius) {
+  return kH * sphereRadius / std::sqrt((kH - kC) * (kH - kC) - sphereRadius * sphereRadius);
+}
+
+TEST(AnalyticShadow, SphereOverPlaneShadowDiscHasTheExactRadius) {
+  const int w = 512, h = 512;
+  const auto file = std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / "shadow-sphere.json";
+  auto frame = testing::renderHybridFrame(
+      file, w, h, {"gbuffer.visibility", "shadows.visibility", "shade.color"});
+  ASSERT_FALSE(frame->pass("shadows")->culled);
+  ASSERT_EQ(frame->scene.lights.size(), 1u);
+  ASSERT_EQ(frame->scene.lights[0].position, vec3(0.f, float(kH), 0.f));
+
+  int plane = -1;
+  for (std::size_t i = 0; i < frame->scene.instances.size(); ++i)
+    if (frame->scene.instances[i].name == "ground") plane = int(i);
+  ASSERT_GE(plane, 0) << "shadow-sphere.json has no instance named 'ground'";
+
+  const Surface& gbuffer = frame->output("gbuffer.visibility");
+  const Surface& shadows = frame->output("shadows.visibility");
+  const Surface& color = frame->output("shade.color");
+  ASSERT_EQ(shadows.desc.layers, 1);
+  const WorldMesh& mesh = frame->world->geometry().meshes.at(std::size_t(plane));
+
+  // World position of every plane pixel (NaN elsewhere).
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<vec3> position(std::size_t(w) * h, vec3(nan));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (const auto hit = visibilityTexel(gbuffer, x, y); hit && hit->instance == plane)
+        position[std::size_t(y) * w + x] =
+            interpolatePosition(mesh, hit->primitive, hit->u, hit->v);
+  auto at = [&](int x, int y) { return position[std::size_t(y) * w + x]; };
+  auto onPlane = [&](int x, int y) { return !std::isnan(at(x, y).x); };
+  auto radius = [&](int x, int y) { return std::hypot(double(at(x, y).x), double(at(x, y).z)); };
+
+  const double R = shadowRadius(kR);
+  const double a = std::numbers::sqrt2 * std::numbers::pi / 256.0;
+  const double deficit = R - shadowRadius(kR * std::cos(a));
+
+  double maxShadowed = 0.0, minLit = 1e30, footprint = 0.0;
+  int planePixels = 0, shadowed = 0, lit = 0, innerLit = 0, outerShadowed = 0, badShade = 0;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!onPlane(x, y)) continue;
+      ++planePixels;
+      const double rad = radius(x, y);
+      const float vis = shadows.f(x, y, 0);
+      ASSERT_TRUE(vis == 0.f || vis == 1.f) << "visibility " << vis << " at " << x << "," << y;
+      const float luminance = color.f(x, y, 0) + color.f(x, y, 1) + color.f(x, y, 2);
+      if (vis == 0.f) {
+        ++shadowed;
+        maxShadowed = std::max(maxShadowed, rad);
+        outerShadowed += rad > 1.1 * R;
+        badShade += luminance != 0.f;
+      } else {
+        ++lit;
+        minLit = std::min(minLit, rad);
+        innerLit += rad < 0.9 * R;
+        badShade += !(luminance > 0.f);
+      }
+      if (std::abs(rad - R) < 0.05 * R) {
+        if (x + 1 < w && onPlane(x + 1, y))
+          footprint = std::max(footprint, double(glm::length(at(x + 1, y) - at(x, y))));
+        if (y + 1 < h && onPlane(x, y + 1))
+          footprint = std::max(footprint, double(glm::length(at(x, y + 1) - at(x, y))));
+      }
+    }
+  }
+  const double tolerance = footprint + deficit;
+  std::printf(
+      "[analytic shadow] %dx%d: plane pixels %d (shadowed %d, lit %d); R = %.6f, max shadowed "
+      "radius %.6f (%+.2e), min lit radius %.6f (%+.2e); footprint %.4f + tessellation %.2e = "
+      "tolerance %.4f\n",
+      w, h, planePixels, shadowed, lit, R, maxShadowed, maxShadowed - R, minLit, minLit - R,
+      footprint, deficit, tolerance);
+  ::testing::Test::RecordProperty("max_shadowed_radius", std::to_string(maxShadowed));
+  ::testing::Test::RecordProperty("min_lit_radius", std::to_string(minLit));
+  ::testing::Test::RecordProperty("tolerance", std::to_string(tolerance));
+
+  // A disc of radius R on this view covers thousands of pixels: without them the bracket below
+  // would be meaningless.
+  ASSERT_GT(shadowed, 1000);
+  ASSERT_GT(lit, 1000);
+  ASSERT_GT(footprint, 0.0);
+  EXPECT_LT(footprint, 0.05) << "the boundary must be resolved finely for the bound to mean much";
+  EXPECT_NEAR(maxShadowed, R, tolerance);
+  EXPECT_NEAR(minLit, R, tolerance);
+  EXPECT_LE(maxShadowed, minLit + tolerance);
+  EXPECT_EQ(innerLit, 0) << "plane pixels inside 0.9 R must be shadowed";
+  EXPECT_EQ(outerShadowed, 0) << "plane pixels outside 1.1 R must be lit";
+  EXPECT_EQ(badShade, 0) << "shade must give shadowed plane pixels 0 and lit ones > 0";
+}
+
+}  // namespace
+}  // namespace diptych

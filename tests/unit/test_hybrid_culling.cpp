@@ -1,0 +1,78 @@
+// Scene-driven culling of the default hybrid recipe on real sample scenes (the shared-scene half,
+// glTF models, is tests/shared_scenes/test_hybrid_culling.cpp).
+//
+// whitted.json has a shadow-casting point light: nothing may be culled. The same scene with
+// castsShadows = false on every light must cull 'shadows' with the documented reason, fill
+// shadows.visibility with its fallback 1 for shade, and then produce exactly the image of a recipe
+// that has no shadow pass at all (shade alone reads visibility 1 for every light) -- while the
+// unculled frame has shadowed pixels, so the comparison can tell the two apart.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/support/hybrid_frame.h"
+
+namespace diptych {
+namespace {
+
+const std::filesystem::path kWhitted =
+    std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / "whitted.json";
+constexpr int kW = 160, kH = 120;
+
+Recipe shadeOnlyRecipe() {
+  Recipe r;
+  r.file = "<shade-only recipe>";
+  r.passes = {{.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
+              {.name = "shade",
+               .type = "shade",
+               .inputs = {{"visibility", "gbuffer.visibility"}},
+               .place = "passes[1]"}};
+  r.outputs = {"shade.color"};
+  return r;
+}
+
+TEST(HybridCulling, WhittedKeepsEveryPassAndCastsShadows) {
+  auto f = testing::renderHybridFrame(kWhitted, kW, kH, {"shade.color", "shadows.visibility"});
+  for (const GraphPass& p : f->graph.passes)
+    EXPECT_FALSE(p.culled) << p.name << " culled: " << p.cullReason;
+  EXPECT_EQ(testing::scheduledNode(f->graph, "default:shadows.visibility"), nullptr);
+  ASSERT_NE(testing::scheduledNode(f->graph, "shadows"), nullptr);
+  const Surface& vis = f->output("shadows.visibility");
+  int zeros = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) zeros += vis.f(x, y, 0) == 0.f;
+  EXPECT_GT(zeros, 0) << "the spheres must shadow the floor";
+}
+
+TEST(HybridCulling, LightsThatCastNoShadowsCullTheShadowPassAndShadeReadsVisibilityOne) {
+  Scene scene = loadScene(kWhitted);
+  ASSERT_FALSE(scene.lights.empty());
+  for (Light& l : scene.lights) l.castsShadows = false;
+  auto culled = testing::renderHybridFrame(scene, kW, kH, {"shade.color", "shadows.visibility"});
+  const GraphPass* shadows = culled->pass("shadows");
+  ASSERT_NE(shadows, nullptr);
+  EXPECT_TRUE(shadows->culled);
+  EXPECT_EQ(shadows->cullReason, "scene has no shadow-casting lights");
+  EXPECT_FALSE(culled->pass("shade")->culled);
+  EXPECT_FALSE(culled->pass("gbuffer")->culled);
+  EXPECT_EQ(testing::scheduledNode(culled->graph, "shadows"), nullptr);
+  ASSERT_NE(testing::scheduledNode(culled->graph, "default:shadows.visibility"), nullptr);
+
+  // What shade read: the fallback, 1 everywhere, in every light's layer.
+  const Surface& vis = culled->output("shadows.visibility");
+  ASSERT_EQ(vis.desc.layers, int(scene.lights.size()));
+  for (int l = 0; l < vis.desc.layers; ++l)
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) ASSERT_EQ(vis.f(x, y, 0, l), 1.f) << x << "," << y << "," << l;
+
+  auto shadeOnly = testing::renderHybridFrame(scene, kW, kH, {}, shadeOnlyRecipe());
+  auto full = testing::renderHybridFrame(kWhitted, kW, kH, {});
+  const Surface& a = culled->output("shade.color");
+  const Surface& b = shadeOnly->output("shade.color");
+  const Surface& c = full->output("shade.color");
+  EXPECT_EQ(a.words, b.words) << "culled frame differs from a frame without a shadow pass";
+  EXPECT_NE(a.words, c.words) << "shadows must change the image, or this test proves nothing";
+}
+
+}  // namespace
+}  // namespace diptych
