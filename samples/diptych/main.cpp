@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "engine/core/error.h"
+#include "samples/diptych/diff_command.h"
 #include "samples/diptych/render_command.h"
 
 int main(int argc, char** argv) {
@@ -11,6 +12,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "diptych 0.1.0");
   int exitCode = 0;
   diptych::cli::addRenderCommand(app, exitCode);
+  diptych::cli::addDiffCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
