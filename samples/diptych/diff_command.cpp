@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -178,7 +179,14 @@ void addDiffCommand(CLI::App& app, int& exitCode) {
         if (splitList(text).empty()) return "empty metric list";
         return {};
       });
-  cmd->add_option("--heatmap", options->heatmap, "Write a viridis heat map of the error (PNG/EXR)");
+  cmd->add_option("--heatmap", options->heatmap,
+                  "Write a viridis heat map of the error (.png, .jpg, .exr or .hdr)")
+      ->check([](const std::string& path) -> std::string {
+        std::string e = std::filesystem::path(path).extension().string();
+        for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+        if (e == ".png" || e == ".jpg" || e == ".exr" || e == ".hdr") return {};
+        return "unsupported heat map extension '" + e + "' (use .png, .jpg, .exr or .hdr)";
+      });
   cmd->add_option("--heatmap-metric", options->heatmapMetric,
                   "Error shown in the heat map: flip (default) or mse (squared error)")
       ->check(CLI::IsMember({"flip", "mse"}));

@@ -104,6 +104,7 @@ expect_failure(unknown-metric EXPECT "--metrics" "bogus" ARGS diff a.png b.png -
 expect_failure(bad-threshold EXPECT "--fail-above" "mse" ARGS diff a.png b.png --fail-above mse)
 expect_failure(unknown-threshold EXPECT "--fail-above" "speed" ARGS diff a.png b.png --fail-above speed=3)
 expect_failure(bad-heatmap-metric EXPECT "--heatmap-metric" ARGS diff a.png b.png --heatmap h.png --heatmap-metric ssim)
+expect_failure(bad-heatmap-ext EXPECT "--heatmap" ".txt" ARGS diff a.png b.png --heatmap h.txt)
 foreach(args "small.png;a.png" "a.png;b.png;--metrics;bogus")
   run_diff(${args})
   if(args MATCHES "bogus")

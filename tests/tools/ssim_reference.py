@@ -38,7 +38,7 @@ def picture(rng, h, w, channels, peak):
     for _ in range(4):
         x0, y0 = rng.integers(0, w - 8), rng.integers(0, h - 8)
         img[y0:y0 + rng.integers(4, h // 2), x0:x0 + rng.integers(4, w // 2)] = rng.uniform(0, 1, 3)
-    img[(x.astype(int) // 3) % 2 == 0 & (v < 0.1)] *= 0.3
+    img[((x.astype(int) // 3) % 2 == 0) & (v < 0.1)] *= 0.3  # thin bars along the top
     img += rng.normal(0, 0.02, img.shape)
     img = np.clip(img, 0, 1) * peak
     if peak > 1:  # a few bright highlights, like specular peaks in a render

@@ -254,3 +254,15 @@ TEST(Metrics, ReadLinearImageDecodesPngButNotExr) {
   EXPECT_EQ(readLinearImage(dir / "g.exr").at(1, 1, 2), 0.5f);
   EXPECT_THROW(readLinearImage(dir / "missing.png"), InputError);
 }
+
+TEST(Metrics, FlipOfFlatImagesIsTheCompressedHyabDistance) {
+  // On constant images the unit-sum CSF filters change nothing and there are no features, so
+  // FLIP is the compressed colour difference alone. Expected values computed by hand from the
+  // published CIELAB coordinates of sRGB green (87.735, -86.183, 83.179) and blue (32.303,
+  // 79.197, -107.864): cmax = HyAB(Hunt(green), Hunt(blue))^0.7 = 41.276.
+  //   black vs white: HyAB = 100, 100^0.7 = 25.12 > 0.4 cmax -> 0.95 + ... = 0.96738.
+  //   linear grey 0.5 vs 0.25: L* 76.069 vs 57.075, 18.994^0.7 / (0.4 cmax) * 0.95 = 0.45185.
+  const auto flat = [](float v) { return Image(24, 16, 3, v); };
+  EXPECT_NEAR(flipErrorMap(flat(0.f), flat(1.f)).at(5, 7, 0), 0.96738, 2e-4);
+  EXPECT_NEAR(flipErrorMap(flat(0.5f), flat(0.25f)).at(11, 3, 0), 0.45185, 2e-4);
+}
