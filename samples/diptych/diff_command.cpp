@@ -211,8 +211,9 @@ void addDiffCommand(CLI::App& app, int& exitCode) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   // Threshold syntax is checked while parsing, so a bad one is a usage error (exit 2).
+  // One METRIC=VALUE per occurrence, so a threshold never swallows the positional images.
   for (const char* name : {"--fail-above", "--fail-below"})
-    cmd->get_option(name)->check(
+    cmd->get_option(name)->allow_extra_args(false)->check(
         [above = std::string(name) == "--fail-above"](const std::string& text) -> std::string {
           try {
             parseThreshold(text, above);

@@ -88,6 +88,11 @@ run_diff(b.png a.png --metrics mse --fail-above flip_mean=0.001 --fail-above mse
 if(NOT rc EQUAL 1 OR NOT err MATCHES "flip_mean" OR err MATCHES "mse =")
   message(FATAL_ERROR "[--fail-above] expected exit 1 naming flip_mean only, got ${rc}\n${err}")
 endif()
+# Thresholds before the positionals take one value each and do not swallow the images.
+run_diff(--fail-above mse=1e-9 --fail-above flip_mean=1 b.png a.png --metrics mse)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "mse = " OR err MATCHES "flip_mean =")
+  message(FATAL_ERROR "[thresholds first] expected exit 1 naming mse only, got ${rc}\n${err}")
+endif()
 run_diff(b.png a.png --fail-above mse=100 --fail-below ssim=0.01)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "[thresholds not crossed] exit ${rc}\n${err}")
