@@ -4,6 +4,7 @@
 
 #include "engine/core/error.h"
 #include "samples/diptych/compare_command.h"
+#include "samples/diptych/diff_command.h"
 #include "samples/diptych/render_command.h"
 
 int main(int argc, char** argv) {
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   int exitCode = 0;
   diptych::cli::addRenderCommand(app, exitCode);
   diptych::cli::addCompareCommand(app, exitCode);
+  diptych::cli::addDiffCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
