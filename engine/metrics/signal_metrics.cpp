@@ -63,9 +63,10 @@ VisibilityConfusion compareVisibility(const std::vector<float>& approx,
     else
       ++falseLit;
   }
-  // Signed displacement: from each lit boundary pixel, walk away from the shadow (against the
-  // exact visibility gradient) while the approximation still says shadow (shadow grew: +), or
-  // into the shadow while the approximation still says lit (shadow shrank: -).
+  // Signed displacement: along the exact visibility gradient through each lit boundary pixel,
+  // count the shadowed samples of each signal over the same line; their difference is how far
+  // the approximate boundary sits from the exact one (> 0: the shadow grew). Counting both
+  // signals on the same rounded samples makes identical signals give exactly 0.
   double sum = 0;
   const int reach = 4 * std::max(band, 1);
   for (int y = 1; y + 1 < h; ++y)
@@ -76,17 +77,14 @@ VisibilityConfusion compareVisibility(const std::vector<float>& approx,
       const float gy = exact[at(x, y + 1)] - exact[at(x, y - 1)];
       const float len = std::hypot(gx, gy);
       if (!(len > 0.f)) continue;
-      const float dx = gx / len, dy = gy / len;  // toward brighter (away from the shadow)
-      int displacement = 0;
-      const bool grew = !lit(approx[i]);
-      for (int step = 0; step <= reach; ++step) {
-        const float s = grew ? float(step) : -float(step + 1);
-        const int px = int(std::lround(x + s * dx)), py = int(std::lround(y + s * dy));
-        if (px < 0 || py < 0 || px >= w || py >= h || !mask[at(px, py)]) break;
-        if (lit(approx[at(px, py)]) == grew) break;
-        displacement = grew ? step + 1 : -(step + 1);
+      int approxShadow = 0, exactShadow = 0;
+      for (int k = -reach; k <= reach; ++k) {
+        const int px = int(std::lround(x + k * gx / len)), py = int(std::lround(y + k * gy / len));
+        if (px < 0 || py < 0 || px >= w || py >= h || !mask[at(px, py)]) continue;
+        approxShadow += lit(approx[at(px, py)]) ? 0 : 1;
+        exactShadow += lit(exact[at(px, py)]) ? 0 : 1;
       }
-      sum += displacement;
+      sum += approxShadow - exactShadow;
       ++c.boundarySamples;
     }
   c.meanBoundaryDisplacement = c.boundarySamples ? sum / double(c.boundarySamples) : 0.0;

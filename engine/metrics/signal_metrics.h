@@ -19,8 +19,9 @@ struct VisibilityConfusion {
   long long falseShadowInside = 0, falseLitInside = 0, correctInside = 0;
   // Mean signed displacement of the approximate boundary from the exact one, in pixels, along
   // the exact visibility gradient: > 0 when the shadow grows (acne, over-darkening), < 0 when
-  // it shrinks (peter-panning, leaks). Measured on exact-boundary pixels by walking up to
-  // `band` * 4 pixels across the boundary until the approximate classification changes.
+  // it shrinks (peter-panning, leaks). For each lit exact-boundary pixel, the shadowed samples
+  // of both signals are counted on the same line of +-4*band pixels across the boundary; the
+  // displacement is their difference.
   double meanBoundaryDisplacement = 0;
   long long boundarySamples = 0;
 

@@ -40,7 +40,8 @@ def main():
     ax.set_ylabel(metric + " against the reference")
     ax.set_title("Error against run time: %s" % results["scene"].split("/")[-1])
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(loc="best", fontsize=8)
+    # Below the axes: inside, it would cover points or their labels.
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, fontsize=8, frameon=False)
     fig.tight_layout()
     fig.savefig(out_prefix + ".svg")
     fig.savefig(out_prefix + ".png")

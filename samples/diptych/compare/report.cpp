@@ -204,6 +204,14 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
         "map\"></div></div>\n",
         name);
   }
+  // For readers and for the headless-browser test: mark the page once the plot has loaded.
+  page +=
+      "<script>window.addEventListener('load', function () {\n"
+      "  var plot = document.querySelector('img.plot');\n"
+      "  document.body.setAttribute('data-plot-loaded', String(!!plot && plot.naturalWidth > 0));\n"
+      "  document.body.setAttribute('data-rows', String(document.querySelectorAll('#results "
+      "tr').length - 1));\n"
+      "});</script>\n";
   page += "</body></html>\n";
   std::ofstream(dir / "report.html") << page;
   written.push_back("report.html");
