@@ -1,0 +1,67 @@
+# diptych compare end to end on a small scene, then report.html in headless Chromium.
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
+file(WRITE "${WORK_DIR}/variants.json" "{\"variants\": [
+  {\"name\": \"reference-self\", \"recipe\": \"${SOURCE_DIR}/samples/graphs/whitted.json\"},
+  {\"name\": \"hybrid-exact\"},
+  {\"name\": \"sm-256\", \"slots\": [\"visibility=shadow_map:resolution=256,bias=slope\"]},
+  {\"name\": \"sm-4096\", \"slots\": [\"visibility=shadow_map:resolution=4096,bias=slope\"]}]}")
+expect_success(compare ARGS compare "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --variants variants.json
+               --size 192x144 --frames 1 --warmup 1 --out cmp
+               FILES cmp/results.json cmp/results.csv cmp/report.html cmp/plot.svg)
+foreach(expected "reference-self" "sm-4096" "reference whitted")
+  string(FIND "${LAST_STDOUT}" "${expected}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "compare summary lacks '${expected}':\n${LAST_STDOUT}")
+  endif()
+endforeach()
+execute_process(COMMAND /usr/bin/python3 "${SOURCE_DIR}/tests/tools/check_compare.py" "${WORK_DIR}/cmp"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "results check failed:\n${out}${err}")
+endif()
+message(STATUS "${out}")
+
+# A second run reuses the cached reference.
+expect_success(compare-cached ARGS compare "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --variants hybrid-exact
+               --size 192x144 --frames 1 --warmup 0 --out cmp FILES cmp/report.html)
+string(FIND "${LAST_STDOUT}" "(cached)" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "the second run did not reuse the cached reference:\n${LAST_STDOUT}")
+endif()
+
+# Bad compare input: one error line, non-zero exit.
+expect_failure(compare-unknown-variant EXPECT "--variants" "nonsense" ARGS compare --variants nonsense)
+expect_failure(compare-bad-reference EXPECT "--reference" ARGS compare --reference photon:3)
+
+# The report in a real browser: no console messages, the plot loaded, every table row there,
+# and a screenshot that is not blank. Debian chromium, installed by .ci/install-deps.
+find_program(CHROMIUM chromium)
+if(NOT CHROMIUM)
+  message(FATAL_ERROR "chromium not found: install Debian's chromium (bash .ci/install-deps)")
+endif()
+set(flags --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking
+          --disable-component-update --disable-sync --user-data-dir=${WORK_DIR}/chromium-profile)
+execute_process(COMMAND ${CHROMIUM} ${flags} --enable-logging=stderr --v=0 --virtual-time-budget=5000
+                        --dump-dom "file://${WORK_DIR}/cmp/report.html"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE dom ERROR_VARIABLE log TIMEOUT 120)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "chromium --dump-dom failed (${rc}):\n${log}")
+endif()
+string(REGEX MATCH "CONSOLE[^\n]*" console "${log}")
+if(console)
+  message(FATAL_ERROR "report.html logged to the console: ${console}")
+endif()
+string(FIND "${dom}" "data-plot-loaded=\"true\"" plot_loaded)
+string(FIND "${dom}" "data-rows=\"1\"" one_row)
+if(plot_loaded EQUAL -1 OR one_row EQUAL -1)
+  message(FATAL_ERROR "report.html: plot not loaded or table rows missing:\n${dom}")
+endif()
+execute_process(COMMAND ${CHROMIUM} ${flags} --window-size=1200,1600 --screenshot=${WORK_DIR}/report.png
+                        "file://${WORK_DIR}/cmp/report.html"
+                RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET TIMEOUT 120)
+execute_process(COMMAND /usr/bin/python3 -c
+  "import sys; from PIL import Image; im = Image.open(sys.argv[1]).convert('RGB'); n = len(set(im.getdata())); print(n); sys.exit(0 if n > 200 else 1)"
+  "${WORK_DIR}/report.png" RESULT_VARIABLE rc OUTPUT_VARIABLE colours)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "report screenshot looks blank (${colours} colours)")
+endif()

@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""Checks a `diptych compare` output folder (used by tests/cli/compare.cmake).
+
+usage: check_compare.py OUT_DIR
+Asserts: every file is written; results.json parses and holds every variant; the reference
+rendered as a variant scores 0 error; the all-exact hybrid scores ~0; a 256 shadow map scores
+worse than a 4096 one; results.csv has a row per variant.
+"""
+import csv
+import json
+import os
+import sys
+
+
+def fail(message):
+    print("check_compare: FAIL: " + message)
+    sys.exit(1)
+
+
+def main():
+    out = sys.argv[1]
+    with open(os.path.join(out, "results.json")) as f:
+        results = json.load(f)
+    variants = {v["name"]: v for v in results["variants"]}
+    expected = ["reference-self", "hybrid-exact", "sm-256", "sm-4096"]
+    if sorted(variants) != sorted(expected):
+        fail("variants %s, expected %s" % (sorted(variants), expected))
+    for name in ["plot.svg", "plot.png", "report.html", "results.csv", "images/reference.exr",
+                 "images/reference.png"]:
+        if not os.path.getsize(os.path.join(out, name)):
+            fail(name + " is empty")
+    for v in results["variants"]:
+        for kind, path in v["files"].items():
+            if not os.path.isfile(os.path.join(out, path)) or not os.path.getsize(os.path.join(out, path)):
+                fail("%s: %s file %s missing" % (v["name"], kind, path))
+        for key in ["total_ms", "pass_ms", "rays", "metrics", "signals", "pareto"]:
+            if key not in v:
+                fail("%s lacks %s" % (v["name"], key))
+        for metric in ["mse", "rmse", "relmse", "psnr", "ssim", "flip_mean", "flip_p95"]:
+            if metric not in v["metrics"]:
+                fail("%s lacks metric %s" % (v["name"], metric))
+    self_metrics = variants["reference-self"]["metrics"]
+    if self_metrics["mse"] != 0 or self_metrics["flip_mean"] != 0 or self_metrics["ssim"] != 1:
+        fail("the reference against itself must score 0 error: %s" % self_metrics)
+    exact = variants["hybrid-exact"]["metrics"]
+    if not exact["relmse"] < 1e-6 or not exact["flip_mean"] < 1e-3:
+        fail("the all-exact hybrid must score ~0 against the Whitted reference: %s" % exact)
+    for metric in ["rmse", "flip_mean"]:
+        lo, hi = variants["sm-4096"]["metrics"][metric], variants["sm-256"]["metrics"][metric]
+        if not hi > lo:
+            fail("%s: the 256 shadow map (%g) must score worse than the 4096 one (%g)" % (metric, hi, lo))
+    vis256 = variants["sm-256"]["signals"]["visibility"][0]
+    vis4096 = variants["sm-4096"]["signals"]["visibility"][0]
+    wrong = lambda s: s["false_shadow_inside"] + s["false_lit_inside"] + s["false_shadow_outside"] + s["false_lit_outside"]
+    if not wrong(vis256) > wrong(vis4096):
+        fail("visibility signal: 256 map misclassifies %d pixels, 4096 map %d" % (wrong(vis256), wrong(vis4096)))
+    with open(os.path.join(out, "results.csv")) as f:
+        rows = list(csv.DictReader(f))
+    if sorted(r["variant"] for r in rows) != sorted(expected) or "flip_mean" not in rows[0]:
+        fail("results.csv rows/columns are wrong")
+    print("check_compare: ok (sm-256 flip %.4g > sm-4096 flip %.4g; exact relmse %.3g)"
+          % (variants["sm-256"]["metrics"]["flip_mean"], variants["sm-4096"]["metrics"]["flip_mean"], exact["relmse"]))
+
+
+if __name__ == "__main__":
+    main()
