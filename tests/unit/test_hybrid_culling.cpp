@@ -19,15 +19,12 @@ const std::filesystem::path kWhitted =
     std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / "whitted.json";
 constexpr int kW = 160, kH = 120;
 
-Recipe shadeOnlyRecipe() {
-  Recipe r;
-  r.file = "<shade-only recipe>";
-  r.passes = {{.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
-              {.name = "shade",
-               .type = "shade",
-               .inputs = {{"visibility", "gbuffer.visibility"}},
-               .place = "passes[1]"}};
-  r.outputs = {"shade.color"};
+// The default hybrid recipe without its light-visibility producer: shade reads no visibility.
+Recipe withoutShadowPass() {
+  Recipe r = defaultHybridRecipe();
+  r.file = "<hybrid recipe without shadows>";
+  std::erase_if(r.passes, [](const RecipePass& p) { return p.name == "shadows"; });
+  for (RecipePass& p : r.passes) p.inputs.erase("light_visibility");
   return r;
 }
 
@@ -65,7 +62,7 @@ TEST(HybridCulling, LightsThatCastNoShadowsCullTheShadowPassAndShadeReadsVisibil
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) ASSERT_EQ(vis.f(x, y, 0, l), 1.f) << x << "," << y << "," << l;
 
-  auto shadeOnly = testing::renderHybridFrame(scene, kW, kH, {}, shadeOnlyRecipe());
+  auto shadeOnly = testing::renderHybridFrame(scene, kW, kH, {}, withoutShadowPass());
   auto full = testing::renderHybridFrame(kWhitted, kW, kH, {});
   const Surface& a = culled->output("shade.color");
   const Surface& b = shadeOnly->output("shade.color");
