@@ -1,6 +1,8 @@
 #include "passes/registry.h"
 
 #include "passes/raster/gbuffer.h"
+#include "passes/rt/rt_distributed.h"
+#include "passes/rt/rt_path.h"
 #include "passes/rt/rt_secondary.h"
 #include "passes/rt/rt_shadows.h"
 #include "passes/rt/rt_whitted.h"
@@ -20,6 +22,10 @@ const PassRegistry& builtinPasses() {
                               "exact transmission: recursive refraction rays (CPU)");
     r.add<RtWhittedPass>("rt_whitted",
                          "full ray tracing: the Whitted reference from primary rays (CPU)");
+    r.add<RtDistributedPass>(
+        "rt_distributed",
+        "distributed ray tracing (Cook 1984): antialiasing, depth of field, soft shadows (CPU)");
+    r.add<RtPathPass>("rt_path", "path-traced global-illumination reference (Kajiya 1986) (CPU)");
     r.add<ShadePass>("shade", "the lecture's illumination model from the G-buffer (CPU)");
     return r;
   }();
