@@ -9,16 +9,17 @@
 //     + k_ps M_PS delta(mirror direction)              perfect mirror
 //     + k_t  M_T  delta(refractLecture direction)      perfect refraction (Snell; on total
 //                                                      internal reflection, the mirror direction)
-//   M_E is emitted radiance. A_G and k_a are NOT used: ambient light is the crude stand-in for
-//   the indirect light that the path tracer computes.
+//   M_E is emitted radiance. The lecture's DIRECTA has no 1/pi, so under the same light a
+//   diffuse surface is pi times brighter in rt_whitted than here. A_G and k_a are NOT used: ambient
+//   light is the crude stand-in for the indirect light that the path tracer computes.
 // Light transport, each source counted by exactly one estimator:
 //   - Scene::lights (point, spot, directional: delta lights; quad, disc, sphere area lights,
 //     which have no geometry and can never be hit) by next-event estimation at every vertex;
-//     area lights sample one point with the solid-angle pdf d^2 / (cos_light A_pdf^-1);
+//     an area light gets one point y sampled uniformly over an area A (areaLightPoint), whose
+//     pdf per solid angle seen from the vertex is d^2 / (A cos_y);
 //   - surfaces with M_E > 0 and the environment only when a BSDF-sampled ray hits them.
 // Russian roulette (Arvo and Kirk 1990) after `rrDepth` vertices with survival probability
 // min(1, max component of the throughput); `maxDepth` vertices at most.
-#include <atomic>
 #include <cstdint>
 
 #include "engine/rt/rt_scene.h"
