@@ -6,6 +6,8 @@
 #include "passes/raster/gbuffer.h"
 #include "passes/raster/planar_mirror.h"
 #include "passes/raster/shadow_map.h"
+#include "passes/rt/rt_distributed.h"
+#include "passes/rt/rt_path.h"
 #include "passes/rt/rt_secondary.h"
 #include "passes/rt/rt_shadows.h"
 #include "passes/rt/rt_whitted.h"
@@ -38,6 +40,10 @@ const PassRegistry& builtinPasses() {
                          "full ray tracing: the Whitted reference from primary rays (CPU)");
     r.add<ShadowMapPass>("shadow_map",
                          "light visibility by shadow maps with bias and filter modes (GL)");
+    r.add<RtDistributedPass>(
+        "rt_distributed",
+        "distributed ray tracing (Cook 1984): antialiasing, depth of field, soft shadows (CPU)");
+    r.add<RtPathPass>("rt_path", "path-traced global-illumination reference (Kajiya 1986) (CPU)");
     r.add<ShadePass>("shade", "the lecture's illumination model from the G-buffer (CPU)");
     return r;
   }();

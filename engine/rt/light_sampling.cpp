@@ -3,20 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/scene/camera_math.h"
+
 namespace diptych {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-
-// Orthonormal tangents of a unit axis (Duff et al., "Building an Orthonormal Basis,
-// Revisited", JCGT 2017).
-void basisAround(const vec3& n, vec3& t, vec3& b) {
-  const float sign = std::copysign(1.f, n.z);
-  const float a = -1.f / (sign + n.z);
-  const float c = n.x * n.y * a;
-  t = vec3(1.f + sign * n.x * n.x * a, sign * c, -sign * n.x);
-  b = vec3(c, sign + n.y * n.y * a, -n.y);
-}
 
 }  // namespace
 
@@ -24,6 +16,14 @@ std::uint32_t pcgHash(std::uint32_t v) {
   const std::uint32_t state = v * 747796405u + 2891336453u;
   const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
   return (word >> 22u) ^ word;
+}
+
+void orthonormalBasis(const vec3& n, vec3& t, vec3& b) {
+  const float sign = std::copysign(1.f, n.z);
+  const float a = -1.f / (sign + n.z);
+  const float c = n.x * n.y * a;
+  t = vec3(1.f + sign * n.x * n.x * a, sign * c, -sign * n.x);
+  b = vec3(c, sign + n.y * n.y * a, -n.y);
 }
 
 bool isAreaLight(const Light& l) {
@@ -51,28 +51,17 @@ vec3 areaLightPoint(const Light& l, vec2 s, const vec3& receiver) {
     case LightType::QuadArea:
       return l.position + (s.x - 0.5f) * l.edgeU + (s.y - 0.5f) * l.edgeV;
     case LightType::DiscArea: {
-      // Concentric map: square [-1,1]^2 -> unit disc, preserving strata.
-      const vec2 q = 2.f * s - vec2(1.f);
-      float r = 0.f, phi = 0.f;
-      if (q.x != 0.f || q.y != 0.f) {
-        if (std::fabs(q.x) > std::fabs(q.y)) {
-          r = q.x;
-          phi = (kPi / 4.f) * (q.y / q.x);
-        } else {
-          r = q.y;
-          phi = kPi / 2.f - (kPi / 4.f) * (q.x / q.y);
-        }
-      }
+      const vec2 d = concentricDisk(s);  // strata-preserving square -> unit disc
       vec3 t, b;
-      basisAround(glm::normalize(l.direction), t, b);
-      return l.position + l.radius * r * (std::cos(phi) * t + std::sin(phi) * b);
+      orthonormalBasis(glm::normalize(l.direction), t, b);
+      return l.position + l.radius * (d.x * t + d.y * b);
     }
     case LightType::SphereArea: {
       const vec3 toReceiver = receiver - l.position;
       const float len = glm::length(toReceiver);
       const vec3 axis = len > 0.f ? toReceiver / len : vec3(0.f, 1.f, 0.f);
       vec3 t, b;
-      basisAround(axis, t, b);
+      orthonormalBasis(axis, t, b);
       const float cosTheta = s.x;
       const float sinTheta = std::sqrt(std::max(0.f, 1.f - cosTheta * cosTheta));
       const float phi = 2.f * kPi * s.y;

@@ -26,6 +26,10 @@ vec3 areaLightPoint(const Light& light, vec2 s, const vec3& receiver);
 
 bool isAreaLight(const Light& light);
 
+// Unit tangents t, b with (t, b, n) orthonormal, for a unit n (Duff et al., "Building an
+// Orthonormal Basis, Revisited", JCGT 6(1), 2017: branchless and continuous except at n.z = 0-).
+void orthonormalBasis(const vec3& n, vec3& t, vec3& b);
+
 // A hash that decorrelates per-pixel sample patterns (Jarzynski & Olano, "Hash Functions for
 // GPU Rendering", JCGT 2020: PCG-style 32-bit permutation).
 std::uint32_t pcgHash(std::uint32_t v);

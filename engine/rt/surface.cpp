@@ -55,4 +55,10 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, co
   return s;
 }
 
+Ray spawnRay(const SurfacePoint& p, const vec3& direction) {
+  const vec3 n =
+      glm::dot(direction, p.geometricNormal) >= 0.f ? p.geometricNormal : -p.geometricNormal;
+  return {offsetRayOrigin(p.position, n, p.positionMagnitude), direction};
+}
+
 }  // namespace diptych

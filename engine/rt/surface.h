@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "engine/rt/shading.h"
+#include "engine/scene/camera_math.h"
 #include "engine/scene/world_geometry.h"
 
 namespace diptych {
@@ -33,6 +34,11 @@ struct SurfacePoint {
 // Throws Error for an instance or primitive out of range.
 SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit,
                               const vec3& incoming);
+
+// A secondary ray leaving p along the unit `direction`: its origin is offset (offsetRayOrigin,
+// engine/rt/ray_offset.h) along the geometric normal on the side the direction points to, so
+// reflected rays leave from the front and transmitted rays from the back.
+Ray spawnRay(const SurfacePoint& p, const vec3& direction);
 
 // The material's parameters at uv: C = color * colorTexture (or the checker, which replaces C),
 // alpha = alpha * colorTexture.a, M_E = emission * emissionTexture.

@@ -3,22 +3,11 @@
 #include <limits>
 
 #include "engine/rt/light_sampling.h"
-#include "engine/rt/ray_offset.h"
 #include "engine/rt/shading.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/scene/environment.h"
 
 namespace diptych {
-namespace {
-
-// Leaves the surface on the side `direction` points to, offset along the geometric normal.
-Ray spawn(const SurfacePoint& p, const vec3& direction) {
-  const vec3 n =
-      glm::dot(direction, p.geometricNormal) >= 0.f ? p.geometricNormal : -p.geometricNormal;
-  return {offsetRayOrigin(p.position, n, p.positionMagnitude), direction};
-}
-
-}  // namespace
 
 WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
                              WhittedSettings settings)
@@ -62,7 +51,7 @@ vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth,
                               std::uint32_t seed) const {
   if (depth >= settings_.maxDepth) return vec3(0.f);
   const vec3 r = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
-  return radiance(spawn(p, r), depth + 1, pcgHash(seed ^ 0x52454646u));  // "REFF"
+  return radiance(spawnRay(p, r), depth + 1, pcgHash(seed ^ 0x52454646u));  // "REFF"
 }
 
 vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth,
@@ -73,7 +62,7 @@ vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth,
   const float ior = scene_.material(p.material).ior;
   const float eta = p.frontFacing ? 1.f / ior : ior;
   const shading::Refraction t = shading::refractLecture(v, p.shadingNormal, eta);
-  return radiance(spawn(p, t.t), depth + 1, pcgHash(seed ^ 0x5452414eu));  // "TRAN"
+  return radiance(spawnRay(p, t.t), depth + 1, pcgHash(seed ^ 0x5452414eu));  // "TRAN"
 }
 
 }  // namespace diptych

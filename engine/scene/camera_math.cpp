@@ -1,5 +1,8 @@
 #include "engine/scene/camera_math.h"
 
+#include <cmath>
+#include <numbers>
+
 namespace diptych {
 
 mat4 viewMatrix(const Camera& c) {
@@ -26,6 +29,37 @@ Ray primaryRay(const Camera& c, int width, int height, float x, float y) {
   const vec3 up = glm::cross(right, forward);
   const vec3 d = forward + (ndcX * aspect * tanHalf) * right + (ndcY * tanHalf) * up;
   return {c.position, glm::normalize(d)};
+}
+
+vec2 concentricDisk(vec2 s) {
+  constexpr float kQuarterPi = std::numbers::pi_v<float> / 4.f;
+  const vec2 q = 2.f * s - vec2(1.f);  // [-1,1]^2
+  if (q.x == 0.f && q.y == 0.f) return vec2(0.f);
+  // Squares of "radius" max(|q.x|, |q.y|) map to circles; the angle is linear along each edge.
+  float r, phi;
+  if (std::fabs(q.x) > std::fabs(q.y)) {
+    r = q.x;
+    phi = kQuarterPi * (q.y / q.x);
+  } else {
+    r = q.y;
+    phi = 2.f * kQuarterPi - kQuarterPi * (q.x / q.y);
+  }
+  return r * vec2(std::cos(phi), std::sin(phi));
+}
+
+Ray thinLensRay(const Camera& c, int width, int height, float x, float y, vec2 lens) {
+  const Ray pinhole = primaryRay(c, width, height, x, y);
+  if (!(c.aperture > 0.f)) return pinhole;
+  // The focal plane is perpendicular to the view axis (a plane, not a sphere, as for a real
+  // lens), so the in-focus point lies at focusDistance / cos(angle to the axis) along the ray.
+  const vec3 forward = glm::normalize(c.target - c.position);
+  const vec3 right = glm::normalize(glm::cross(forward, c.up));
+  const vec3 up = glm::cross(right, forward);
+  const vec3 focus =
+      pinhole.origin + (c.focusDistance / glm::dot(pinhole.direction, forward)) * pinhole.direction;
+  const vec2 d = c.aperture * concentricDisk(lens);
+  const vec3 origin = c.position + d.x * right + d.y * up;
+  return {origin, glm::normalize(focus - origin)};
 }
 
 Camera frameBounds(const Aabb& b) {

@@ -18,6 +18,18 @@ struct Ray {
 // Ray through the point (x + sx, y + sy) of the image, sx, sy in [0,1); (0.5, 0.5) is the centre.
 Ray primaryRay(const Camera& camera, int width, int height, float x, float y);
 
+// Shirley & Chiu's concentric map from the unit square to the unit disc ("A Low Distortion Map
+// Between Disk and Square", JGT 2(3), 1997): strata of the square stay compact on the disc, so
+// stratified lens and disc-light samples stay stratified.
+vec2 concentricDisk(vec2 s);
+
+// Thin-lens primary ray (Cook, Porter and Carpenter, "Distributed Ray Tracing", SIGGRAPH 1984,
+// depth of field): the point of the pinhole ray primaryRay(x, y) at distance
+// camera.focusDistance along the view axis is in focus; the ray leaves from the point
+// camera.aperture * concentricDisk(lens) of the lens disc (spanned by the camera's right and up
+// axes) toward it. lens in [0,1)^2. aperture == 0 returns primaryRay(x, y) exactly (pinhole).
+Ray thinLensRay(const Camera& camera, int width, int height, float x, float y, vec2 lens);
+
 // A camera that frames the bounds (used when a scene has none).
 Camera frameBounds(const Aabb& bounds);
 

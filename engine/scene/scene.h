@@ -118,7 +118,7 @@ struct Camera {
   vec3 target{0.f};
   vec3 up{0.f, 1.f, 0.f};
   float verticalFov = 0.7853982f;  // radians
-  float aperture = 0.f;            // lens radius for later depth of field; 0 = pinhole
+  float aperture = 0.f;  // thin-lens radius (rt_distributed, rt_path: thinLensRay); 0 = pinhole
   float focusDistance = 1.f;
   float znear = 0.05f;  // reversed-Z makes far irrelevant to precision; kept finite for export
   float zfar = 1000.f;

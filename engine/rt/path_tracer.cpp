@@ -1,0 +1,242 @@
+#include "engine/rt/path_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "engine/rt/light_sampling.h"
+#include "engine/rt/shading.h"
+#include "engine/rt/shadow_rays.h"
+#include "engine/scene/environment.h"
+
+namespace diptych {
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+
+float maxComponent(const vec3& c) {
+  return std::max(c.x, std::max(c.y, c.z));
+}
+
+// Lobe selection weights: the luminance of each lobe's albedo at normal incidence (Rec. 709),
+// so that bright lobes are sampled more often. The estimator divides by the probability, so
+// any positive weighting is unbiased; this one keeps the path weights near 1.
+float luminance(const vec3& c) {
+  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+enum Lobe { kDiffuse, kGlossy, kMirror, kTransmit, kLobes };
+
+// Selection weights of the four lobes and the chosen one.
+struct LobeChoice {
+  Lobe lobe = kDiffuse;
+  float probability = 0.f;  // 0: the material scatters nothing
+};
+
+LobeChoice chooseLobe(const shading::ShadingMaterial& m, float u) {
+  const float w[kLobes] = {m.kd * luminance(m.color), m.ks * luminance(m.specularColor),
+                           m.kps * luminance(m.mirrorColor), m.kt * luminance(m.transmitColor)};
+  float total = 0.f;
+  for (float x : w) total += std::max(x, 0.f);
+  if (!(total > 0.f)) return {};
+  // Walk the cumulative weights; the last positive lobe absorbs rounding of u * total.
+  float pick = u * total;
+  LobeChoice c;
+  for (int i = 0; i < kLobes; ++i) {
+    if (!(w[i] > 0.f)) continue;
+    c = {Lobe(i), w[i] / total};
+    if (pick < w[i]) break;
+    pick -= w[i];
+  }
+  return c;
+}
+
+// Phong exponent e of the material, with the shading model's convention that e < 0 means 0.
+float phongExponent(const shading::ShadingMaterial& m) {
+  return std::max(m.exponent, 0.f);
+}
+
+// The non-delta part of the BRDF (Lambert + normalised Phong) for unit n, v, l; the lecture's
+// gate: nothing when the light is below the tangent plane.
+vec3 smoothBrdf(const shading::ShadingMaterial& m, const vec3& n, const vec3& v, const vec3& l) {
+  if (!(glm::dot(n, l) > 0.f)) return vec3(0.f);
+  const float e = phongExponent(m);
+  const float cosAlpha = glm::dot(shading::reflectAbout(l, n), v);
+  return m.kd * m.color / kPi +
+         m.ks * m.specularColor * ((e + 2.f) / (2.f * kPi) * shading::safePow(cosAlpha, e));
+}
+
+// Direction about `axis` with pdf (e + 1) / (2 pi) cos^e(alpha) per steradian: e = 0 is the
+// uniform hemisphere, e -> infinity the axis itself (Lafortune and Willems 1994).
+vec3 samplePowerCosine(const vec3& axis, float e, vec2 u) {
+  const float cosA = std::pow(u.x, 1.f / (e + 1.f));
+  const float sinA = std::sqrt(std::max(0.f, 1.f - cosA * cosA));
+  const float phi = 2.f * kPi * u.y;
+  vec3 t, b;
+  orthonormalBasis(axis, t, b);
+  return glm::normalize(cosA * axis + sinA * (std::cos(phi) * t + std::sin(phi) * b));
+}
+
+// Cosine-weighted hemisphere about n (Malley's method: the concentric disc lifted onto the
+// hemisphere), pdf cos(theta) / pi.
+vec3 sampleCosine(const vec3& n, vec2 u) {
+  const vec2 d = concentricDisk(u);
+  const float z = std::sqrt(std::max(0.f, 1.f - glm::dot(d, d)));
+  vec3 t, b;
+  orthonormalBasis(n, t, b);
+  return glm::normalize(d.x * t + d.y * b + z * n);
+}
+
+// The area-light pdf of areaLightPoint(): uniform over the quad or disc (1 / area) and over
+// the hemisphere of the sphere that faces the receiver (1 / (2 pi r^2)). Returns the area.
+float samplingArea(const Light& light) {
+  switch (light.type) {
+    case LightType::QuadArea:
+      return glm::length(glm::cross(light.edgeU, light.edgeV));
+    case LightType::DiscArea:
+      return kPi * light.radius * light.radius;
+    case LightType::SphereArea:
+      return 2.f * kPi * light.radius * light.radius;
+    default:
+      return 0.f;
+  }
+}
+
+bool visible(const RtScene& rt, const OcclusionRay& r, std::uint32_t& rays) {
+  if (r.tnear > r.tfar) return true;  // inactive: castsShadows == false or degenerate
+  ++rays;
+  return !rt.occluded(r.origin, r.direction, r.tnear, r.tfar);
+}
+
+bool finite(const vec3& c) {
+  return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+}
+
+}  // namespace
+
+PathRng::PathRng(std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed)
+    : state_(pcgHash(pcgHash(pcgHash(seed) + pixel) + sample)) {}
+
+float PathRng::next() {
+  // pcgHash(s) is the PCG-RXS-M-XS output of the LCG successor of s; advancing s by the same
+  // LCG step makes the outputs one PCG stream.
+  const std::uint32_t out = pcgHash(state_);
+  state_ = state_ * 747796405u + 2891336453u;
+  return float(out >> 8) * (1.f / 16777216.f);  // 24 bits: exact, never 1
+}
+
+PathTracer::PathTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
+                       PathSettings settings)
+    : scene_(scene), world_(world), rt_(rt), settings_(settings) {}
+
+vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
+                           std::uint32_t& rays) const {
+  const shading::ShadingMaterial& m = p.resolved;
+  if (!(m.kd > 0.f) && !(m.ks > 0.f)) return vec3(0.f);  // delta lobes only: NEE cannot hit
+  const vec3& n = p.shadingNormal;
+  const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
+  vec3 sum(0.f);
+  for (const Light& light : scene_.lights) {
+    if (!isAreaLight(light)) {
+      // Delta lights: S_i is the irradiance on a surface facing the light (point and spot
+      // I / d^2 with the cone factor, directional E), so L = f S max(0, n.l) V.
+      const shading::LightSample s =
+          shading::sampleLight(shading::toShadingLight(light), p.position);
+      const vec3 f = smoothBrdf(m, n, v, s.l);
+      if (s.radiance == vec3(0.f) || f == vec3(0.f)) continue;
+      if (visible(rt_, makeShadowRay(light, receiver), rays))
+        sum += f * s.radiance * glm::dot(n, s.l);
+      continue;
+    }
+    // Area lights: one point y with area pdf 1/A; the solid-angle pdf is d^2 / (A cos_y), so
+    // L = f L_e cos_p cos_y A / d^2 V. Same hard range cut-off as the shading model.
+    if (light.range > 0.f && glm::distance(light.position, p.position) > light.range) continue;
+    const vec3 y = areaLightPoint(light, rng.next2(), p.position);
+    const vec3 toLight = y - p.position;
+    const float d2 = glm::dot(toLight, toLight);
+    if (!(d2 > 0.f)) continue;
+    const vec3 l = toLight / std::sqrt(d2);
+    const vec3 emitterNormal = light.type == LightType::SphereArea
+                                   ? glm::normalize(y - light.position)
+                                   : glm::normalize(light.direction);  // one-sided emitters
+    const float cosLight = glm::dot(emitterNormal, -l);
+    const vec3 f = smoothBrdf(m, n, v, l);
+    if (!(cosLight > 0.f) || f == vec3(0.f)) continue;
+    if (!visible(rt_, makeShadowRayTo(light, receiver, y), rays)) continue;
+    const vec3 emitted = light.color * std::max(light.intensity, 0.f);
+    sum += f * emitted * (glm::dot(n, l) * cosLight * samplingArea(light) / d2);
+  }
+  return sum;
+}
+
+PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
+  PathSample out;
+  vec3 throughput(1.f);
+  Ray ray = cameraRay;
+  for (int depth = 1;; ++depth) {
+    ++out.rays;
+    const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
+    if (!hit) {
+      out.radiance += throughput * sampleEnvironment(scene_.environment, ray.direction);
+      break;
+    }
+    const SurfacePoint p = makeSurfacePoint(
+        scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v}, ray.direction);
+    const shading::ShadingMaterial& m = p.resolved;
+    const vec3 v = -ray.direction;
+    out.radiance += throughput * (m.emission + nextEvent(p, v, rng, out.rays));
+    if (depth >= settings_.maxDepth) break;
+
+    // Scatter: pick one lobe with probability weight / total and divide by it.
+    const LobeChoice choice = chooseLobe(m, rng.next());
+    if (!(choice.probability > 0.f)) break;
+    const vec3& n = p.shadingNormal;
+    const vec2 u = rng.next2();
+    vec3 direction, weight;
+    switch (choice.lobe) {
+      case kDiffuse:  // f cos / pdf = (k_d C / pi) cos / (cos / pi)
+        direction = sampleCosine(n, u);
+        weight = m.kd * m.color;
+        break;
+      case kGlossy: {  // f cos / pdf = k_s d (e + 2) / (e + 1) cos(theta): cos^e cancels
+        const float e = phongExponent(m);
+        direction = samplePowerCosine(glm::normalize(shading::reflectAbout(v, n)), e, u);
+        weight = m.ks * m.specularColor *
+                 ((e + 2.f) / (e + 1.f) * std::max(0.f, glm::dot(n, direction)));
+        break;
+      }
+      case kMirror:
+        direction = glm::normalize(shading::reflectAbout(v, n));
+        weight = m.kps * m.mirrorColor;
+        break;
+      default: {  // as in the Whitted tracer: air outside, ior inside, told apart by the face
+        const float ior = scene_.material(p.material).ior;
+        direction = shading::refractLecture(v, n, p.frontFacing ? 1.f / ior : ior).t;
+        weight = m.kt * m.transmitColor;
+        break;
+      }
+    }
+    weight /= choice.probability;
+    const bool smoothLobe = choice.lobe == kDiffuse || choice.lobe == kGlossy;
+    // A smooth lobe is sampled about the shading normal and may point into the geometry: no
+    // light arrives from there, and tracing it would leak through the surface.
+    if (smoothLobe && !(glm::dot(direction, p.geometricNormal) > 0.f)) break;
+    throughput *= weight;
+    if (!finite(throughput) || throughput == vec3(0.f)) break;
+    ray = spawnRay(p, direction);
+
+    if (settings_.russianRoulette && depth >= settings_.rrDepth) {
+      const float survive = std::min(1.f, maxComponent(throughput));
+      if (rng.next() >= survive) break;
+      throughput /= survive;
+    }
+  }
+  if (!finite(out.radiance)) {  // never expected; reported by the pass rather than averaged
+    out.radiance = vec3(0.f);
+    out.valid = false;
+  }
+  return out;
+}
+
+}  // namespace diptych

@@ -1,0 +1,76 @@
+#pragma once
+// A unidirectional path tracer (J. T. Kajiya, "The Rendering Equation", SIGGRAPH 1986; the
+// lecture's "Path-Tracing: iluminación indirecta o global"): the global-illumination reference.
+//
+// The lecture's material coefficients read as a BRDF (docs/references.md has the derivation):
+//   f = k_d C / pi                                     Lambert
+//     + k_s d (e + 2) / (2 pi) max(0, r.v)^e           normalised Phong lobe (Lafortune and
+//                                                      Willems 1994), r = reflection of l
+//     + k_ps M_PS delta(mirror direction)              perfect mirror
+//     + k_t  M_T  delta(refractLecture direction)      perfect refraction (Snell; on total
+//                                                      internal reflection, the mirror direction)
+//   M_E is emitted radiance. The lecture's DIRECTA has no 1/pi, so under the same light a
+//   diffuse surface is pi times brighter in rt_whitted than here. A_G and k_a are NOT used: ambient
+//   light is the crude stand-in for the indirect light that the path tracer computes.
+// Light transport, each source counted by exactly one estimator:
+//   - Scene::lights (point, spot, directional: delta lights; quad, disc, sphere area lights,
+//     which have no geometry and can never be hit) by next-event estimation at every vertex;
+//     an area light gets one point y sampled uniformly over an area A (areaLightPoint), whose
+//     pdf per solid angle seen from the vertex is d^2 / (A cos_y);
+//   - surfaces with M_E > 0 and the environment only when a BSDF-sampled ray hits them.
+// Russian roulette (Arvo and Kirk 1990) after `rrDepth` vertices with survival probability
+// min(1, max component of the throughput); `maxDepth` vertices at most.
+#include <cstdint>
+
+#include "engine/rt/rt_scene.h"
+#include "engine/rt/surface.h"
+#include "engine/scene/camera_math.h"
+
+namespace diptych {
+
+struct PathSettings {
+  int maxDepth = 16;  // surface hits per path (1 = emission + direct light only)
+  int rrDepth = 3;    // Russian roulette from this many hits on
+  bool russianRoulette = true;
+};
+
+// Uniform numbers in [0,1) for one path: the PCG output permutation (pcgHash) of a 32-bit LCG
+// state (O'Neill, "PCG: A Family of ... Random Number Generation", 2014), seeded by hashing
+// (pixel, sample index, user seed), so that every pixel sample is reproducible on its own
+// whatever the thread schedule.
+class PathRng {
+ public:
+  PathRng(std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed);
+  float next();
+  vec2 next2() {
+    const float a = next();
+    return {a, next()};
+  }
+
+ private:
+  std::uint32_t state_;
+};
+
+struct PathSample {
+  vec3 radiance{0.f};
+  std::uint32_t rays = 0;  // intersection and shadow rays traced for this sample
+  bool valid = true;       // false: a non-finite value arose (radiance set to 0)
+};
+
+class PathTracer {
+ public:
+  PathTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
+             PathSettings settings);
+  // Radiance arriving at ray.origin along -ray.direction; finite.
+  PathSample radiance(const Ray& ray, PathRng& rng) const;
+  const PathSettings& settings() const { return settings_; }
+
+ private:
+  vec3 nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng, std::uint32_t& rays) const;
+  const Scene& scene_;
+  const WorldGeometry& world_;
+  const RtScene& rt_;
+  PathSettings settings_;
+};
+
+}  // namespace diptych

@@ -1,0 +1,70 @@
+#include "passes/rt/rt_distributed.h"
+
+#include <tbb/parallel_for.h>
+
+#include <numeric>
+#include <vector>
+
+#include "engine/graph/render_world.h"
+#include "engine/rt/light_sampling.h"
+#include "engine/rt/whitted.h"
+
+namespace diptych {
+namespace {
+
+// A per-pixel random permutation of 0..n-1 (Fisher-Yates driven by pcgHash). Pairing pixel
+// stratum s with lens stratum perm[s] keeps both sets stratified while decorrelating them, as
+// Cook et al. prescribe for the separate dimensions of a distributed sample; pairing s with s
+// would tie each lens position to one position in the pixel and show as structured noise.
+void shuffle(std::vector<int>& perm, std::uint32_t seed) {
+  std::iota(perm.begin(), perm.end(), 0);
+  for (std::size_t i = perm.size(); i > 1; --i) {
+    seed = pcgHash(seed);
+    std::swap(perm[i - 1], perm[seed % i]);
+  }
+}
+
+}  // namespace
+
+void RtDistributedPass::setup(PassBuilder& b) {
+  b.needs(SceneNeed::Geometry);
+  spp_ = stratifiedSampleCount(b.params().integer("spp", 16, 1, 4096));
+  maxDepth_ = b.params().integer("depth", 5, 1, 64);
+  areaSamples_ = b.params().integer("area_samples", 16, 1, 4096);
+  color_ = b.write("color", {Format::RGBA32F, b.frame().width, b.frame().height},
+                   vec4(0.f, 0.f, 0.f, 1.f));
+}
+
+void RtDistributedPass::execute(PassContext& c) {
+  RenderWorld& world = c.world();
+  const FrameSettings& frame = c.frame();
+  Surface& out = c.cpuWrite(color_);
+  const WhittedTracer tracer(world.scene(), world.geometry(), world.rtScene(),
+                             {maxDepth_, areaSamples_});
+  tbb::parallel_for(0, frame.height, [&](int y) {
+    std::vector<int> lensStratum(std::size_t(spp_), 0);
+    for (int x = 0; x < frame.width; ++x) {
+      const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
+      // The same pixel pattern and seeds as rt_whitted, so that the two differ only by the lens.
+      const std::uint32_t pixelSeed = pcgHash(pixel);
+      const std::uint32_t lensSeed = pcgHash(pixel ^ 0x4c454e53u);  // "LENS"
+      shuffle(lensStratum, lensSeed);
+      vec3 sum(0.f);
+      for (int s = 0; s < spp_; ++s) {
+        const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pixelSeed);
+        const vec2 lens = stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed);
+        const Ray ray = thinLensRay(frame.camera, frame.width, frame.height, float(x) + offset.x,
+                                    float(y) + offset.y, lens);
+        sum +=
+            tracer.radiance(ray, 1, spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s)));
+      }
+      const vec3 color = sum / float(spp_);
+      for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, color[ch]);
+      out.setF(x, y, 3, 1.f);
+    }
+  });
+  c.count("rays", double(tracer.raysTraced()));
+  c.count("samples", double(spp_) * frame.width * frame.height);
+}
+
+}  // namespace diptych

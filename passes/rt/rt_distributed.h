@@ -1,0 +1,27 @@
+#pragma once
+#include "engine/graph/pass.h"
+
+namespace diptych {
+
+// Distributed ray tracing (R. L. Cook, T. Porter, L. Carpenter, "Distributed Ray Tracing",
+// SIGGRAPH 1984; the lecture's "Ray-Tracing distribuido"): each pixel averages `spp` primary
+// rays distributed over the pixel area (antialiasing, a stratified k x k jittered grid, box
+// filter), over the lens disc (thin-lens depth of field from Camera::aperture, the lens radius,
+// and Camera::focusDistance; aperture 0 is a pinhole), and, through the Whitted tracer, over
+// the area lights (stratified shadow rays, `area_samples` per light per hit). Everything after
+// the primary ray is WhittedTracer (engine/rt/whitted.h): the same recursion and shading.
+// With spp = 1 the single ray goes through the pixel centre with the pixel index as its seed,
+// so that spp = 1 and aperture 0 reproduce rt_whitted bit for bit.
+// Params: spp (16), depth (5), area_samples (16). Output: color RGBA32F.
+class RtDistributedPass : public Pass {
+ public:
+  Domain domain() const override { return Domain::Cpu; }
+  void setup(PassBuilder& builder) override;
+  void execute(PassContext& context) override;
+
+ private:
+  int spp_ = 16, maxDepth_ = 5, areaSamples_ = 16;
+  ResourceId color_ = kNoResource;
+};
+
+}  // namespace diptych
