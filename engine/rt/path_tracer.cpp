@@ -57,14 +57,14 @@ float phongExponent(const shading::ShadingMaterial& m) {
   return std::max(m.exponent, 0.f);
 }
 
-// The non-delta part of the BRDF (Lambert + normalised Phong) for unit n, v, l; the lecture's
-// gate: nothing when the light is below the tangent plane.
-vec3 smoothBrdf(const shading::ShadingMaterial& m, const vec3& n, const vec3& v, const vec3& l) {
-  if (!(glm::dot(n, l) > 0.f)) return vec3(0.f);
-  const float e = phongExponent(m);
-  const float cosAlpha = glm::dot(shading::reflectAbout(l, n), v);
-  return m.kd * m.color / kPi +
-         m.ks * m.specularColor * ((e + 2.f) / (2.f * kPi) * shading::safePow(cosAlpha, e));
+// Direct light from a scene light in the lecture's units: DIRECTA without k_a,
+// k_d C max(0, n.l) + k_s d_i max(0, r.v)^e per unit of S_i. The lecture's lights deliver S_i
+// into this term with no 1/pi, so next-event estimation uses it (and not f cos) to make the
+// path-traced reference equal the Whitted one wherever there is no indirect light; the
+// energy-conserving BRDF above governs the bounces.
+vec3 lectureDirect(shading::ShadingMaterial m, const vec3& n, const vec3& v, const vec3& l) {
+  m.ka = 0.f;  // ambient is what global illumination replaces
+  return shading::directTerm(m, n, v, l);
 }
 
 // Direction about `axis` with pdf (e + 1) / (2 pi) cos^e(alpha) per steradian: e = 0 is the
@@ -139,18 +139,17 @@ vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
   vec3 sum(0.f);
   for (const Light& light : scene_.lights) {
     if (!isAreaLight(light)) {
-      // Delta lights: S_i is the irradiance on a surface facing the light (point and spot
-      // I / d^2 with the cone factor, directional E), so L = f S max(0, n.l) V.
+      // Delta lights: S_i as in the shading model (point and spot I / d^2 with the cone
+      // factor, directional E), so L = DIRECTA(l) S V.
       const shading::LightSample s =
           shading::sampleLight(shading::toShadingLight(light), p.position);
-      const vec3 f = smoothBrdf(m, n, v, s.l);
-      if (s.radiance == vec3(0.f) || f == vec3(0.f)) continue;
-      if (visible(rt_, makeShadowRay(light, receiver), rays))
-        sum += f * s.radiance * glm::dot(n, s.l);
+      const vec3 direct = lectureDirect(m, n, v, s.l);
+      if (s.radiance == vec3(0.f) || direct == vec3(0.f)) continue;
+      if (visible(rt_, makeShadowRay(light, receiver), rays)) sum += direct * s.radiance;
       continue;
     }
     // Area lights: one point y with area pdf 1/A; the solid-angle pdf is d^2 / (A cos_y), so
-    // L = f L_e cos_p cos_y A / d^2 V. Same hard range cut-off as the shading model.
+    // L = DIRECTA(l) L_e cos_y A / d^2 V. Same hard range cut-off as the shading model.
     if (light.range > 0.f && glm::distance(light.position, p.position) > light.range) continue;
     const vec3 y = areaLightPoint(light, rng.next2(), p.position);
     const vec3 toLight = y - p.position;
@@ -161,11 +160,11 @@ vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
                                    ? glm::normalize(y - light.position)
                                    : glm::normalize(light.direction);  // one-sided emitters
     const float cosLight = glm::dot(emitterNormal, -l);
-    const vec3 f = smoothBrdf(m, n, v, l);
-    if (!(cosLight > 0.f) || f == vec3(0.f)) continue;
+    const vec3 direct = lectureDirect(m, n, v, l);
+    if (!(cosLight > 0.f) || direct == vec3(0.f)) continue;
     if (!visible(rt_, makeShadowRayTo(light, receiver, y), rays)) continue;
     const vec3 emitted = light.color * std::max(light.intensity, 0.f);
-    sum += f * emitted * (glm::dot(n, l) * cosLight * samplingArea(light) / d2);
+    sum += direct * emitted * (cosLight * samplingArea(light) / d2);
   }
   return sum;
 }

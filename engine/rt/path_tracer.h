@@ -9,9 +9,10 @@
 //     + k_ps M_PS delta(mirror direction)              perfect mirror
 //     + k_t  M_T  delta(refractLecture direction)      perfect refraction (Snell; on total
 //                                                      internal reflection, the mirror direction)
-//   M_E is emitted radiance. The lecture's DIRECTA has no 1/pi, so under the same light a
-//   diffuse surface is pi times brighter in rt_whitted than here. A_G and k_a are NOT used: ambient
-//   light is the crude stand-in for the indirect light that the path tracer computes.
+//   M_E is emitted radiance. f governs the bounces; direct light from Scene::lights uses the
+//   lecture's DIRECTA (no 1/pi: the lecture's light units), so the result equals rt_whitted
+//   wherever there is no indirect light. A_G and k_a are NOT used: ambient light is the crude
+//   stand-in for the indirect light that the path tracer computes.
 // Light transport, each source counted by exactly one estimator:
 //   - Scene::lights (point, spot, directional: delta lights; quad, disc, sphere area lights,
 //     which have no geometry and can never be hit) by next-event estimation at every vertex;

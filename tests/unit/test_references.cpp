@@ -280,12 +280,13 @@ TEST(RtPath, RussianRouletteIsUnbiased) {
 }
 
 // Next-event estimation against closed forms, one hit (max_depth 1), centre pixel of a
-// diffuse plane (k_d C = 0.8) seen from straight above:
-//   point light I = 4 at height 2: L = (0.8 / pi) I / 4 = 0.2546 (rt_whitted's DIRECTA has no
-//     1/pi: 0.8 exactly; the ratio is the documented pi);
-//   disc light of radiance 1, radius 1, facing down at height 2: E = pi R^2 / (h^2 + R^2), so
-//     L = 0.8 R^2 / (h^2 + R^2) = 0.16;
-//   sphere light of radiance 1, radius 1, centre at height 3: E = pi (R/d)^2, L = 0.8 / 9.
+// diffuse plane (k_d C = 0.8) seen from straight above. Direct light is in the lecture's units
+// (DIRECTA: k_d C max(0, n.l) S, no 1/pi), so that the path tracer equals rt_whitted where
+// there is no indirect light:
+//   point light I = 4 at height 2: S = I / 4 = 1, L = 0.8 (exactly rt_whitted's value);
+//   disc light of radiance 1, radius 1, facing down at height 2: S = pi R^2 / (h^2 + R^2), so
+//     L = 0.8 pi / 5;
+//   sphere light of radiance 1, radius 1, centre at height 3: S = pi (R/d)^2, L = 0.8 pi / 9.
 // Monte Carlo bound: 5 sigma of the pixel's variance output, n = 1024 (plus 1e-3 relative for
 // the jitter over the pixel footprint).
 TEST(RtPath, NextEventEstimationMatchesClosedForms) {
@@ -294,9 +295,10 @@ TEST(RtPath, NextEventEstimationMatchesClosedForms) {
     double expected;
   };
   const Case cases[] = {
-      {R"({"type": "point", "position": [0, 2, 0], "intensity": 4})", 0.8 / std::numbers::pi},
-      {R"({"type": "disc", "position": [0, 2, 0], "normal": [0, -1, 0], "radius": 1})", 0.16},
-      {R"({"type": "sphere", "position": [0, 3, 0], "radius": 1})", 0.8 / 9},
+      {R"({"type": "point", "position": [0, 2, 0], "intensity": 4})", 0.8},
+      {R"({"type": "disc", "position": [0, 2, 0], "normal": [0, -1, 0], "radius": 1})",
+       0.8 * std::numbers::pi / 5},
+      {R"({"type": "sphere", "position": [0, 3, 0], "radius": 1})", 0.8 * std::numbers::pi / 9},
   };
   for (const Case& k : cases) {
     const Scene scene = loadScene(writeScene("nee.json", std::string(R"({
