@@ -28,7 +28,7 @@ void shuffle(std::vector<int>& perm, std::uint32_t seed) {
 
 void RtDistributedPass::setup(PassBuilder& b) {
   b.needs(SceneNeed::Geometry);
-  spp_ = stratifiedSampleCount(b.params().integer("spp", 16, 1, 4096));
+  spp_ = stratifiedSampleCount(b.params().integer("spp", defaultSpp_, 1, 4096));
   maxDepth_ = b.params().integer("depth", 5, 1, 64);
   areaSamples_ = b.params().integer("area_samples", 16, 1, 4096);
   color_ = b.write("color", {Format::RGBA32F, b.frame().width, b.frame().height},
@@ -38,6 +38,8 @@ void RtDistributedPass::setup(PassBuilder& b) {
 void RtDistributedPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const FrameSettings& frame = c.frame();
+  Camera camera = frame.camera;
+  if (!thinLens_) camera.aperture = 0.f;  // a pinhole: thinLensRay is then primaryRay exactly
   Surface& out = c.cpuWrite(color_);
   const WhittedTracer tracer(world.scene(), world.geometry(), world.rtScene(),
                              {maxDepth_, areaSamples_});
@@ -53,7 +55,7 @@ void RtDistributedPass::execute(PassContext& c) {
       for (int s = 0; s < spp_; ++s) {
         const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pixelSeed);
         const vec2 lens = stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed);
-        const Ray ray = thinLensRay(frame.camera, frame.width, frame.height, float(x) + offset.x,
+        const Ray ray = thinLensRay(camera, frame.width, frame.height, float(x) + offset.x,
                                     float(y) + offset.y, lens);
         sum +=
             tracer.radiance(ray, 1, spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s)));

@@ -15,11 +15,18 @@ namespace diptych {
 // Params: spp (16), depth (5), area_samples (16). Output: color RGBA32F.
 class RtDistributedPass : public Pass {
  public:
+  RtDistributedPass() = default;
   Domain domain() const override { return Domain::Cpu; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
 
+ protected:
+  // rt_whitted is this pass with one sample by default and a pinhole whatever the aperture.
+  RtDistributedPass(int defaultSpp, bool thinLens) : defaultSpp_(defaultSpp), thinLens_(thinLens) {}
+
  private:
+  int defaultSpp_ = 16;
+  bool thinLens_ = true;
   int spp_ = 16, maxDepth_ = 5, areaSamples_ = 16;
   ResourceId color_ = kNoResource;
 };
