@@ -34,10 +34,7 @@
 #include "engine/scene/load.h"
 #include "passes/common/visibility_texel.h"
 #include "passes/registry.h"
-
-#ifndef DIPTYCH_SAMPLES_DIR
-#error "DIPTYCH_SAMPLES_DIR must name the samples folder (tests/bench/CMakeLists.txt)"
-#endif
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 

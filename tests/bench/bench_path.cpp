@@ -16,10 +16,7 @@
 #include "engine/graph/render_world.h"
 #include "engine/scene/load.h"
 #include "passes/registry.h"
-
-#ifndef DIPTYCH_SAMPLES_DIR
-#error "DIPTYCH_SAMPLES_DIR must name the samples folder (tests/bench/CMakeLists.txt)"
-#endif
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 

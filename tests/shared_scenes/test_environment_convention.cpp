@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "engine/scene/environment.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 namespace fs = std::filesystem;

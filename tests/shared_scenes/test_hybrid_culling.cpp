@@ -16,6 +16,7 @@
 
 #include "passes/common/visibility_texel.h"
 #include "tests/support/hybrid_frame.h"
+#include "tests/support/test_paths.h"
 
 namespace diptych {
 namespace {

@@ -9,6 +9,7 @@
 
 #include "engine/core/error.h"
 #include "engine/scene/load.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 namespace fs = std::filesystem;

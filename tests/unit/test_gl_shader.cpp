@@ -8,6 +8,7 @@
 #include "engine/gl/debug.h"
 #include "engine/gl/shader.h"
 #include "gl_test_context.h"
+#include "tests/support/test_paths.h"
 
 namespace diptych::gl {
 namespace {

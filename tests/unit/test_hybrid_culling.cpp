@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "tests/support/hybrid_frame.h"
+#include "tests/support/test_paths.h"
 
 namespace diptych {
 namespace {

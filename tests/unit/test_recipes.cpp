@@ -6,6 +6,7 @@
 
 #include "engine/graph/recipe.h"
 #include "passes/registry.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 

@@ -15,6 +15,7 @@
 #include "engine/scene/load.h"
 #include "passes/common/visibility_texel.h"
 #include "passes/registry.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 

@@ -16,6 +16,7 @@
 #include "engine/graph/render_world.h"
 #include "engine/scene/load.h"
 #include "passes/registry.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 

@@ -11,6 +11,7 @@
 #include "engine/rt/whitted.h"
 #include "engine/scene/load.h"
 #include "passes/registry.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 

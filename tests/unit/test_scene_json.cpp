@@ -11,6 +11,7 @@
 #include "engine/scene/load.h"
 #include "engine/scene/primitives.h"
 #include "engine/scene/validate.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 namespace fs = std::filesystem;

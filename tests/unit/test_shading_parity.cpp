@@ -27,6 +27,7 @@
 #include "engine/rt/surface.h"
 #include "engine/scene/load.h"
 #include "gl_test_context.h"
+#include "tests/support/test_paths.h"
 
 namespace diptych {
 namespace {

@@ -11,6 +11,7 @@
 #include "engine/core/error.h"
 #include "engine/scene/load.h"
 #include "shadow_map_compare.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 using diptych::testing::compareShadows;

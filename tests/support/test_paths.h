@@ -1,0 +1,17 @@
+#pragma once
+// Source-tree paths for tests and benchmarks. The absolute paths are compiled into
+// tests/support/test_paths.cpp alone, so that every other object is independent of where the
+// checkout lives and ccache reuses it from any clone.
+#include <string>
+
+namespace diptych::testing {
+std::string samplesDir();       // samples/
+std::string sharedScenesDir();  // ../shared/scenes (DIPTYCH_SHARED_SCENES cache variable)
+std::string testsDir();         // tests/
+std::string sourceShaderDir();  // shaders/
+}  // namespace diptych::testing
+
+#define DIPTYCH_SAMPLES_DIR ::diptych::testing::samplesDir()
+#define DIPTYCH_SHARED_SCENES ::diptych::testing::sharedScenesDir()
+#define DIPTYCH_TESTS_DIR ::diptych::testing::testsDir()
+#define DIPTYCH_SOURCE_SHADER_DIR ::diptych::testing::sourceShaderDir()
