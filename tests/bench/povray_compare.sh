@@ -45,8 +45,10 @@ pov_proc=()       # ms, whole POV-Ray process
 # that a change in the machine's load during the run hits both programs alike.
 for ((r = 1; r <= runs; ++r)); do
   # 1) Render-phase timing: 1 warm-up frame (BVH build, allocations) then 5 measured frames.
+  # --out is given only so that the default out.png does not land in the working directory.
   "$diptych" render samples/scenes/whitted.json --recipe samples/graphs/whitted.json \
-    --size 640x480 --frames 5 --warmup 1 --timings "$out/t-$r.json" >"$out/diptych-$r.log"
+    --size 640x480 --frames 5 --warmup 1 --timings "$out/t-$r.json" \
+    --out "$out/ours-timed.png" >"$out/diptych-$r.log"
   diptych_pass+=("$(python3 -c '
 import json, sys
 nodes = json.load(open(sys.argv[1]))["schedule"]
