@@ -176,8 +176,8 @@ GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometr
     lane.layer = float(layerOf.at(t));
     lane.width = float(std::min(t->image.width, layerWidth));
     lane.height = float(std::min(t->image.height, layerHeight));
-    lane.flags += float(wrapCode(t->wrapS) + 4 * wrapCode(t->wrapT) +
-                        (isNearest(t->magFilter) ? 0 : 16));
+    lane.flags +=
+        float(wrapCode(t->wrapS) + 4 * wrapCode(t->wrapT) + (isNearest(t->magFilter) ? 0 : 16));
   }
 
   std::vector<float> materials;

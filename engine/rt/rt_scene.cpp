@@ -118,8 +118,9 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
         ++alphaMasked_;
       } else if (!warnedNoFilters) {
         warnedNoFilters = true;
-        log().warn("this Embree build has no filter functions: alpha-masked materials are opaque"
-                   " to rays");
+        log().warn(
+            "this Embree build has no filter functions: alpha-masked materials are opaque"
+            " to rays");
       }
     }
     rtcCommitGeometry(geom);

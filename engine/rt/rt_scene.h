@@ -80,8 +80,8 @@ class RtScene {
   struct GeometryData {
     const WorldMesh* mesh = nullptr;
     bool alphaMasked = false;
-    float alpha = 1.f;                     // Material::alpha
-    float alphaCutoff = 0.5f;              // Material::alphaCutoff
+    float alpha = 1.f;                      // Material::alpha
+    float alphaCutoff = 0.5f;               // Material::alphaCutoff
     const Texture* alphaTexture = nullptr;  // whose .w multiplies alpha; null: none
     // Coverage of triangle `primitive` at Embree barycentrics (u, v); read-only, thread-safe.
     float coverage(std::uint32_t primitive, float u, float v) const;

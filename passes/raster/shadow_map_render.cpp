@@ -62,8 +62,8 @@ void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>
   // program without discard.
   const gl::GlShadingBuffers& shading = world.glShading();
   if (shading.anyAlphaTested() && !alphaDepth_) {
-    alphaDepth_ = gl::loadProgram({"shadow_depth.vert", "shadow_depth.frag"},
-                                  {{"DIPTYCH_ALPHA_MASK", ""}});
+    alphaDepth_ =
+        gl::loadProgram({"shadow_depth.vert", "shadow_depth.frag"}, {{"DIPTYCH_ALPHA_MASK", ""}});
   }
   if (shading.anyAlphaTested()) {
     scene.bindStorage();
