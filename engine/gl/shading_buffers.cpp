@@ -12,10 +12,10 @@ namespace {
 
 // The texture whose alpha multiplies the material's coverage (resolveMaterial: a checker
 // replaces the colour texture, and an empty image samples as 1).
-const Texture* coverageTexture(const Scene& scene, const Material& m) {
+const diptych::Texture* coverageTexture(const Scene& scene, const Material& m) {
   if (m.checker || m.colorTexture < 0 || m.colorTexture >= int(scene.textures.size()))
     return nullptr;
-  const Texture& t = scene.textures[std::size_t(m.colorTexture)];
+  const diptych::Texture& t = scene.textures[std::size_t(m.colorTexture)];
   return t.image.empty() ? nullptr : &t;
 }
 
@@ -133,13 +133,13 @@ GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometr
   // centres): the one approximation of this path.
   std::vector<int> materialIndices{-1};
   for (int i = 0; i < int(scene.materials.size()); ++i) materialIndices.push_back(i);
-  std::map<const Texture*, int> layerOf;
-  std::vector<const Texture*> layerTextures;
+  std::map<const diptych::Texture*, int> layerOf;
+  std::vector<const diptych::Texture*> layerTextures;
   int layerWidth = 1, layerHeight = 1;
   for (int m : materialIndices) {
     out.drawModes.push_back(alphaDraw(scene, m));
     if (out.drawModes.back() != AlphaDraw::AlphaTested) continue;
-    const Texture* t = coverageTexture(scene, scene.material(m));
+    const diptych::Texture* t = coverageTexture(scene, scene.material(m));
     if (layerOf.emplace(t, int(layerTextures.size())).second) {
       layerTextures.push_back(t);
       layerWidth = std::max(layerWidth, std::min(t->image.width, kMaxAlphaMaskSize));
@@ -152,7 +152,7 @@ GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometr
   out.alphaMasks.setLabel("scene.alpha_masks");
   std::vector<AlphaLane> lanes(materialIndices.size());
   for (std::size_t k = 0; k < layerTextures.size(); ++k) {
-    const Texture& t = *layerTextures[k];
+    const diptych::Texture& t = *layerTextures[k];
     const int w = std::min(t.image.width, layerWidth), h = std::min(t.image.height, layerHeight);
     const bool resample = w != t.image.width || h != t.image.height;
     std::vector<float> alpha(std::size_t(w) * std::size_t(h));
@@ -172,7 +172,7 @@ GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometr
     AlphaLane& lane = lanes[i];
     lane.flags = m.alphaMode == AlphaMode::Mask ? 32.f : 0.f;
     if (out.drawModes[i] != AlphaDraw::AlphaTested) continue;
-    const Texture* t = coverageTexture(scene, m);
+    const diptych::Texture* t = coverageTexture(scene, m);
     lane.layer = float(layerOf.at(t));
     lane.width = float(std::min(t->image.width, layerWidth));
     lane.height = float(std::min(t->image.height, layerHeight));

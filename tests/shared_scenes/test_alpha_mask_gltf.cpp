@@ -28,8 +28,8 @@ TEST(AlphaMaskGltf, AlphaBlendModeTestRendersThroughBothProducers) {
   const Aabb b = scene.bounds();
   Light l;
   l.type = LightType::Point;
-  l.position = 0.5f * (b.min + b.max) + vec3(0.f, 1.5f * (b.max.y - b.min.y), 0.f) +
-               vec3(0.f, 0.f, 0.5f * (b.max.z - b.min.z));
+  l.position = 0.5f * (b.lo + b.hi) + vec3(0.f, 1.5f * (b.hi.y - b.lo.y), 0.f) +
+               vec3(0.f, 0.f, 0.5f * (b.hi.z - b.lo.z));
   l.intensity = 50.f;
   scene.lights.push_back(l);
   if (!scene.hasCamera) scene.camera = frameBounds(b);
