@@ -2,6 +2,12 @@
 // Layout and method: engine/gl/gbuffer_raster.h and docs/gl.md.
 #include "gl/scene_buffers.glsl"
 #include "gl/ray_triangle.glsl"
+#ifdef DIPTYCH_ALPHA_MASK
+// Variant for alpha-tested meshes only (engine/gl/gbuffer_raster.cpp): a discard in the shader
+// of every mesh would cost opaque scenes their early depth test.
+#include "common/shading.glsl"
+#include "gl/scene_shading.glsl"
+#endif
 
 // Camera frame exactly as diptych::primaryRay builds it (camera_math.cpp).
 uniform vec3 uCameraPosition;
@@ -37,6 +43,18 @@ void main() {
   }
 
   float w = 1.0 - uv.x - uv.y;
+#ifdef DIPTYCH_ALPHA_MASK
+  // Texture uv at the exact barycentrics, in interpolateUv's order, so the hole is the one the
+  // Embree filter cuts for the same primary ray.
+  vec2 t0 = vec2(sceneUvs[2u * idx.x], sceneUvs[2u * idx.x + 1u]);
+  vec2 t1 = vec2(sceneUvs[2u * idx.y], sceneUvs[2u * idx.y + 1u]);
+  vec2 t2 = vec2(sceneUvs[2u * idx.z], sceneUvs[2u * idx.z + 1u]);
+  int material = int(uMaterial);
+  if (sceneMaterialAlpha(material, w * t0 + uv.x * t1 + uv.y * t2) <
+      sceneMaterialAlphaCutoff(material)) {
+    discard;
+  }
+#endif
   vec3 n = w * sceneNormal(idx.x) + uv.x * sceneNormal(idx.y) + uv.y * sceneNormal(idx.z);
   float len = length(n);
   // Same fallback as interpolateNormal(): the geometric normal when the blend cancels out.

@@ -42,13 +42,13 @@ void checkTargets(const Texture& visibility, const Texture& normal, const Textur
 }  // namespace
 
 void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
-                               GBufferTextures& targets) {
-  render(scene, camera, targets.visibility, targets.normal, targets.depth);
+                               GBufferTextures& targets, const GlShadingBuffers* shading) {
+  render(scene, camera, targets.visibility, targets.normal, targets.depth, shading);
 }
 
 void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
                                const Texture& visibility, const Texture& normal,
-                               const Texture& depth) {
+                               const Texture& depth, const GlShadingBuffers* shading) {
   ScopedGlLabel label("gbuffer");
   checkTargets(visibility, normal, depth);
   const int width = visibility.width(), height = visibility.height();
@@ -79,23 +79,33 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   const vec3 forward = glm::normalize(camera.target - camera.position);
   const vec3 right = glm::normalize(glm::cross(forward, camera.up));
   const vec3 up = glm::cross(right, forward);
-  program_.set("uViewProjection", reversedZProjection(camera, aspect) * viewMatrix(camera));
-  program_.set("uCameraPosition", camera.position);
-  program_.set("uForward", forward);
-  program_.set("uRight", right);
-  program_.set("uUp", up);
-  program_.set("uAspect", aspect);
-  program_.set("uTanHalfFov", std::tan(0.5f * camera.verticalFov));
-  program_.set("uViewportSize", vec2(float(width), float(height)));
+  const bool alphaTested = shading && shading->anyAlphaTested();
+  if (alphaTested && !alphaProgram_)
+    alphaProgram_ = loadProgram({"gbuffer.vert", "gbuffer.frag"}, {{"DIPTYCH_ALPHA_MASK", ""}});
+  for (const Program* program : {&program_, alphaTested ? &alphaProgram_ : nullptr}) {
+    if (!program) continue;
+    program->set("uViewProjection", reversedZProjection(camera, aspect) * viewMatrix(camera));
+    program->set("uCameraPosition", camera.position);
+    program->set("uForward", forward);
+    program->set("uRight", right);
+    program->set("uUp", up);
+    program->set("uAspect", aspect);
+    program->set("uTanHalfFov", std::tan(0.5f * camera.verticalFov));
+    program->set("uViewportSize", vec2(float(width), float(height)));
+  }
 
-  program_.use();
   scene.vertexArray.bind();
   scene.bindStorage();
+  if (shading) shading->bindStorage();
   for (const GlMeshRange& mesh : scene.meshes) {
     if (mesh.triangleCount == 0) continue;
-    program_.set("uInstance", std::uint32_t(mesh.instance));
-    program_.set("uFirstTriangle", mesh.firstTriangle);
-    program_.set("uMaterial", float(mesh.material));
+    const AlphaDraw mode = shading ? shading->alphaDraw(mesh.material) : AlphaDraw::Opaque;
+    if (mode == AlphaDraw::Hidden) continue;
+    const Program& program = mode == AlphaDraw::AlphaTested ? alphaProgram_ : program_;
+    program.use();
+    program.set("uInstance", std::uint32_t(mesh.instance));
+    program.set("uFirstTriangle", mesh.firstTriangle);
+    program.set("uMaterial", float(mesh.material));
     // gl_PrimitiveID restarts at 0 for each draw, so it is the primitive index within the mesh.
     glDrawElements(GL_TRIANGLES, GLsizei(3 * mesh.triangleCount), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));

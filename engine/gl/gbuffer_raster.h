@@ -15,6 +15,7 @@
 // hit, to float rounding. Culling is off: every visible surface counts, whatever its winding.
 #include "engine/gl/objects.h"
 #include "engine/gl/scene_buffers.h"
+#include "engine/gl/shading_buffers.h"
 #include "engine/scene/scene.h"
 
 namespace diptych::gl {
@@ -36,13 +37,20 @@ class GBufferRasterizer {
   // Renders into `targets`, which must be allocated with the formats above at any W x H (the
   // viewport follows their size). Sets its own GL state: clip control lower-left/zero-to-one,
   // depth GREATER with clear 0, no culling, no blending.
-  void render(const GlSceneBuffers& scene, const Camera& camera, GBufferTextures& targets);
+  // With `shading` (uploaded from the same scene), alpha-masked materials cut out their holes:
+  // meshes whose coverage is constant and below the cutoff are not drawn, textured masks are
+  // drawn with a program variant that discards fragments below the cutoff (compiled on first
+  // need, so opaque scenes run the plain program only). Without it every mesh is opaque.
+  void render(const GlSceneBuffers& scene, const Camera& camera, GBufferTextures& targets,
+              const GlShadingBuffers* shading = nullptr);
   // The same, into textures owned elsewhere (the frame graph's pool).
   void render(const GlSceneBuffers& scene, const Camera& camera, const Texture& visibility,
-              const Texture& normal, const Texture& depth);
+              const Texture& normal, const Texture& depth,
+              const GlShadingBuffers* shading = nullptr);
 
  private:
   Program program_;
+  Program alphaProgram_;  // DIPTYCH_ALPHA_MASK variant; empty until a scene needs it
   Framebuffer framebuffer_;
 };
 

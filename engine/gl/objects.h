@@ -156,6 +156,7 @@ class Program {
   Program() = default;
   explicit Program(GLuint id) : handle_(id) {}
   GLuint id() const { return handle_.get(); }
+  explicit operator bool() const { return id() != 0; }
   void use() const;
   GLint location(const char* name) const;
   void set(const char* name, int value) const;

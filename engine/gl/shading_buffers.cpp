@@ -1,13 +1,53 @@
 #include "engine/gl/shading_buffers.h"
 
+#include <algorithm>
+#include <map>
+
 #include "engine/gl/loader.h"
 #include "engine/rt/shading.h"
+#include "engine/rt/texture_sampling.h"
 
 namespace diptych::gl {
 namespace {
 
-// std430 layout of scene_shading.glsl's GpuMaterial: eight vec4.
-void packMaterial(const Material& m, std::vector<float>& out) {
+// The texture whose alpha multiplies the material's coverage (resolveMaterial: a checker
+// replaces the colour texture, and an empty image samples as 1).
+const diptych::Texture* coverageTexture(const Scene& scene, const Material& m) {
+  if (m.checker || m.colorTexture < 0 || m.colorTexture >= int(scene.textures.size()))
+    return nullptr;
+  const diptych::Texture& t = scene.textures[std::size_t(m.colorTexture)];
+  return t.image.empty() ? nullptr : &t;
+}
+
+float texelAlpha(const Image& image, int x, int y) {
+  return image.channels >= 4 ? image.at(x, y, 3) : 1.f;  // as sampleTexture's texel()
+}
+
+bool isNearest(FilterMode f) {
+  return f == FilterMode::Nearest || f == FilterMode::NearestMipmapNearest ||
+         f == FilterMode::NearestMipmapLinear;
+}
+
+// The 9th vec4 of GpuMaterial: (layer or -1, width, height, flags) with flags = wrapS +
+// 4 wrapT + 16 (bilinear) + 32 (alpha-masked). Small integers are exact in float.
+struct AlphaLane {
+  float layer = -1.f, width = 0.f, height = 0.f, flags = 0.f;
+};
+
+int wrapCode(WrapMode w) {
+  switch (w) {
+    case WrapMode::Repeat:
+      return 0;
+    case WrapMode::ClampToEdge:
+      return 1;
+    case WrapMode::MirroredRepeat:
+      return 2;
+  }
+  return 0;
+}
+
+// std430 layout of scene_shading.glsl's GpuMaterial: nine vec4.
+void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& out) {
   const shading::ShadingMaterial s = shading::toShadingMaterial(m);
   const bool checker = m.checker.has_value();
   const Checker c = checker ? *m.checker : Checker{};
@@ -44,6 +84,7 @@ void packMaterial(const Material& m, std::vector<float>& out) {
                             c.colorB.z,
                             m.alphaCutoff};
   out.insert(out.end(), std::begin(values), std::end(values));
+  out.insert(out.end(), {lane.layer, lane.width, lane.height, lane.flags});
 }
 
 void packLight(const Light& l, std::vector<float>& out) {
@@ -64,16 +105,84 @@ Buffer makeBuffer(const void* data, std::size_t bytes) {
 
 }  // namespace
 
+AlphaDraw alphaDraw(const Scene& scene, int material) {
+  const Material& m = scene.material(material);
+  if (m.alphaMode != AlphaMode::Mask) return AlphaDraw::Opaque;
+  if (coverageTexture(scene, m)) return AlphaDraw::AlphaTested;
+  return m.alpha < m.alphaCutoff ? AlphaDraw::Hidden : AlphaDraw::Opaque;
+}
+
 void GlShadingBuffers::bindStorage() const {
   materials.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneMaterialsBinding);
   instances.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneInstancesBinding);
   lights.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneLightsBinding);
+  glBindTextureUnit(kSceneAlphaMaskUnit, alphaMasks.id());
+}
+
+AlphaDraw GlShadingBuffers::alphaDraw(int material) const {
+  const std::size_t i = material < 0 || material + 1 >= int(drawModes.size()) ? 0 : material + 1;
+  return i < drawModes.size() ? drawModes[i] : AlphaDraw::Opaque;
 }
 
 GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometry) {
+  GlShadingBuffers out;
+  // One layer per distinct colour texture of an alpha-tested material. Layers are as large as
+  // the largest such texture (capped at kMaxAlphaMaskSize per side); each texture sits at its
+  // own size in the corner of its layer, so that the shader's texel arithmetic is exactly
+  // sampleTexture's. Only a texture above the cap is resampled (bilinear, at the new texel
+  // centres): the one approximation of this path.
+  std::vector<int> materialIndices{-1};
+  for (int i = 0; i < int(scene.materials.size()); ++i) materialIndices.push_back(i);
+  std::map<const diptych::Texture*, int> layerOf;
+  std::vector<const diptych::Texture*> layerTextures;
+  int layerWidth = 1, layerHeight = 1;
+  for (int m : materialIndices) {
+    out.drawModes.push_back(alphaDraw(scene, m));
+    if (out.drawModes.back() != AlphaDraw::AlphaTested) continue;
+    const diptych::Texture* t = coverageTexture(scene, scene.material(m));
+    if (layerOf.emplace(t, int(layerTextures.size())).second) {
+      layerTextures.push_back(t);
+      layerWidth = std::max(layerWidth, std::min(t->image.width, kMaxAlphaMaskSize));
+      layerHeight = std::max(layerHeight, std::min(t->image.height, kMaxAlphaMaskSize));
+    }
+  }
+  out.alphaMaskLayers = int(layerTextures.size());
+  out.alphaMasks = Texture::create2DArray(TextureFormat::R32F, layerWidth, layerHeight,
+                                          std::max(1, out.alphaMaskLayers));
+  out.alphaMasks.setLabel("scene.alpha_masks");
+  std::vector<AlphaLane> lanes(materialIndices.size());
+  for (std::size_t k = 0; k < layerTextures.size(); ++k) {
+    const diptych::Texture& t = *layerTextures[k];
+    const int w = std::min(t.image.width, layerWidth), h = std::min(t.image.height, layerHeight);
+    const bool resample = w != t.image.width || h != t.image.height;
+    std::vector<float> alpha(std::size_t(w) * std::size_t(h));
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        const vec2 uv((float(x) + 0.5f) / float(w), (float(y) + 0.5f) / float(h));
+        alpha[std::size_t(y) * std::size_t(w) + std::size_t(x)] =
+            resample ? sampleBilinear(t.image, uv, t.wrapS, t.wrapT).w : texelAlpha(t.image, x, y);
+      }
+    }
+    // Image row y goes to GL row y (no flip): the shader fetches texel (x, y) of the image.
+    glTextureSubImage3D(out.alphaMasks.id(), 0, 0, 0, GLint(k), w, h, 1, GL_RED, GL_FLOAT,
+                        alpha.data());
+  }
+  for (std::size_t i = 0; i < materialIndices.size(); ++i) {
+    const Material& m = scene.material(materialIndices[i]);
+    AlphaLane& lane = lanes[i];
+    lane.flags = m.alphaMode == AlphaMode::Mask ? 32.f : 0.f;
+    if (out.drawModes[i] != AlphaDraw::AlphaTested) continue;
+    const diptych::Texture* t = coverageTexture(scene, m);
+    lane.layer = float(layerOf.at(t));
+    lane.width = float(std::min(t->image.width, layerWidth));
+    lane.height = float(std::min(t->image.height, layerHeight));
+    lane.flags +=
+        float(wrapCode(t->wrapS) + 4 * wrapCode(t->wrapT) + (isNearest(t->magFilter) ? 0 : 16));
+  }
+
   std::vector<float> materials;
-  packMaterial(scene.material(-1), materials);
-  for (const Material& m : scene.materials) packMaterial(m, materials);
+  for (std::size_t i = 0; i < materialIndices.size(); ++i)
+    packMaterial(scene.material(materialIndices[i]), lanes[i], materials);
   std::vector<std::int32_t> instances(2 * scene.instances.size(), 0);
   for (const GlMeshRange& range : geometry.meshes) {
     instances[2 * std::size_t(range.instance)] = range.material + 1;
@@ -82,7 +191,6 @@ GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometr
   std::vector<float> lights;
   for (const Light& l : scene.lights) packLight(l, lights);
 
-  GlShadingBuffers out;
   out.materials = makeBuffer(materials.data(), materials.size() * sizeof(float));
   out.instances = makeBuffer(instances.data(), instances.size() * sizeof(std::int32_t));
   out.lights = makeBuffer(lights.data(), lights.size() * sizeof(float));

@@ -5,6 +5,8 @@
 //
 // Limitation: colour and emission textures are not sampled on the GPU yet (the procedural
 // checker is); a GL producer shading a textured material uses the material's constant colour.
+// Only the alpha of alpha-masked (AlphaMode::Mask) materials' colour textures is uploaded, for
+// the cut-outs of the G-buffer and shadow-map depth passes (sceneMaterialAlpha in GLSL).
 #include <vector>
 
 #include "engine/gl/objects.h"
@@ -17,14 +19,38 @@ namespace diptych::gl {
 inline constexpr GLuint kSceneMaterialsBinding = 4;
 inline constexpr GLuint kSceneInstancesBinding = 5;
 inline constexpr GLuint kSceneLightsBinding = 6;
+// Texture unit of scene_shading.glsl's uSceneAlphaMasks (units 0..1 are the passes' own).
+inline constexpr GLuint kSceneAlphaMaskUnit = 7;
+
+// How a raster pass draws a mesh of a given material.
+enum class AlphaDraw {
+  Opaque,      // not masked, or masked with a constant coverage at or above the cutoff
+  Hidden,      // masked with a constant coverage below the cutoff: cut out everywhere
+  AlphaTested  // masked with a colour texture: per-fragment sceneMaterialAlpha test
+};
+
+// AlphaDraw of scene.material(material), from the same coverage rule as resolveMaterial.
+AlphaDraw alphaDraw(const Scene& scene, int material);
+
+// Largest side of an alpha-mask layer; larger textures are resampled down to it.
+inline constexpr int kMaxAlphaMaskSize = 2048;
 
 struct GlShadingBuffers {
-  Buffer materials;  // 8 vec4 per material; entry 0 is the default material, m + 1 is materials[m]
+  Buffer materials;  // 9 vec4 per material; entry 0 is the default material, m + 1 is materials[m]
   Buffer instances;  // 2 ints per instance: (material + 1, first triangle in the shared buffers)
   Buffer lights;     // 5 vec4 per light
+  // R32F 2D array: layer k holds the alpha of one colour texture used by a masked material, at
+  // its own size in the corner of the layer (GLSL does the wrap and the filter, as
+  // sampleTexture does, with texelFetch). A 1x1x1 dummy when no material is alpha-tested.
+  Texture alphaMasks;
+  int alphaMaskLayers = 0;
+  std::vector<AlphaDraw> drawModes;  // index material + 1, as `materials`
   int materialCount = 0, instanceCount = 0, lightCount = 0;
 
-  void bindStorage() const;  // binds the three buffers to their kScene* points
+  // Binds the three buffers to their kScene* points and alphaMasks to kSceneAlphaMaskUnit.
+  void bindStorage() const;
+  AlphaDraw alphaDraw(int material) const;  // -1 or out of range: the default material
+  bool anyAlphaTested() const { return alphaMaskLayers > 0; }
 };
 
 GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometry);

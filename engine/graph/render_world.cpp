@@ -21,7 +21,7 @@ RenderWorld::~RenderWorld() {
 const RtScene& RenderWorld::rtScene() {
   if (!rt_) {
     device_ = std::make_unique<RtDevice>();
-    rt_ = std::make_unique<RtScene>(*device_, world_);
+    rt_ = std::make_unique<RtScene>(*device_, world_, scene_);
   }
   return *rt_;
 }

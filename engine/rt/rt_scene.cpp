@@ -8,6 +8,8 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/log.h"
+#include "engine/rt/texture_sampling.h"
 
 namespace diptych {
 namespace {
@@ -32,9 +34,40 @@ RTCRay makeRay(const vec3& origin, const vec3& direction, float tnear, float tfa
   return r;
 }
 
+// Embree filter function (intersection and occlusion alike): valid[i] == -1 marks a live hit;
+// setting it to 0 makes Embree ignore that hit and continue traversal, so the closest hit
+// behind a hole is found and an any-hit query keeps looking. Reads only immutable data, as it
+// runs on every tracing thread at once.
+void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
+  const auto* data = static_cast<const RtScene::GeometryData*>(args->geometryUserPtr);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    const std::uint32_t primitive = RTCHitN_primID(args->hit, args->N, i);
+    const float u = RTCHitN_u(args->hit, args->N, i), v = RTCHitN_v(args->hit, args->N, i);
+    if (data->coverage(primitive, u, v) < data->alphaCutoff) args->valid[i] = 0;
+  }
+}
+
 }  // namespace
 
+float RtScene::GeometryData::coverage(std::uint32_t primitive, float u, float v) const {
+  if (!alphaTexture || mesh->uvs.empty()) {
+    // A mesh without uvs samples uv (0, 0) everywhere, as the GPU side does (its uv buffer
+    // holds zeros there), so that both producers cut the same holes.
+    return alphaTexture ? alpha * sampleTexture(*alphaTexture, vec2(0.f)).w : alpha;
+  }
+  return alpha * sampleTexture(*alphaTexture, interpolateUv(*mesh, primitive, u, v)).w;
+}
+
 RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, RtSceneOptions options)
+    : RtScene(device, world, nullptr, options) {}
+
+RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene& scene,
+                 RtSceneOptions options)
+    : RtScene(device, world, &scene, options) {}
+
+RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene* scene,
+                 RtSceneOptions options)
     : device_(device) {
   RTCDevice dev = device.handle();
   scene_ = rtcNewScene(dev);
@@ -42,8 +75,22 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, RtSceneOpti
   rtcSetSceneBuildQuality(scene_, options.quality);
   rtcSetSceneFlags(scene_, options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
 
+  geometry_.resize(world.meshes.size());
+  bool warnedNoFilters = false;
   for (std::size_t id = 0; id < world.meshes.size(); ++id) {
     const WorldMesh& mesh = world.meshes[id];
+    GeometryData& data = geometry_[id];
+    data.mesh = &mesh;
+    if (scene) {
+      const Material& m = scene->material(mesh.material);
+      data.alphaMasked = m.alphaMode == AlphaMode::Mask;
+      data.alpha = m.alpha;
+      data.alphaCutoff = m.alphaCutoff;
+      const int t = m.colorTexture;
+      // resolveMaterial: a checker replaces the colour texture, alpha included.
+      if (!m.checker && t >= 0 && t < int(scene->textures.size()))
+        data.alphaTexture = &scene->textures[std::size_t(t)];
+    }
     const std::size_t triangles = mesh.indices.size() / 3;
     if (triangles == 0 || mesh.positions.empty()) continue;
     RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -63,8 +110,19 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, RtSceneOpti
       vertices[3 * i + 2] = mesh.positions[i].z;
     }
     std::memcpy(indices, mesh.indices.data(), sizeof(std::uint32_t) * 3 * triangles);
-    // For the future alpha-mask filter (see the header): the filter looks the mesh up here.
-    rtcSetGeometryUserData(geom, const_cast<WorldMesh*>(&mesh));
+    rtcSetGeometryUserData(geom, &data);
+    if (data.alphaMasked) {
+      if (rtcGetDeviceProperty(dev, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED)) {
+        rtcSetGeometryIntersectFilterFunction(geom, alphaMaskFilter);
+        rtcSetGeometryOccludedFilterFunction(geom, alphaMaskFilter);
+        ++alphaMasked_;
+      } else if (!warnedNoFilters) {
+        warnedNoFilters = true;
+        log().warn(
+            "this Embree build has no filter functions: alpha-masked materials are opaque"
+            " to rays");
+      }
+    }
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(scene_, geom, unsigned(id));
     rtcReleaseGeometry(geom);  // the scene holds its own reference

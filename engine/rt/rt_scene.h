@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "engine/rt/rt_device.h"
 #include "engine/scene/camera_math.h"
@@ -42,8 +43,12 @@ struct RtSceneOptions {
 class RtScene {
  public:
   // The device must outlive the scene. Empty WorldMeshes get no geometry (their id is unused).
-  // Throws Error (with the Embree error code) if Embree rejects the data.
+  // Throws Error (with the Embree error code) if Embree rejects the data. Without a Scene the
+  // geometry is all opaque; with one (which must outlive this object, as `world` must),
+  // alpha-masked materials cut out their holes (see geometryData below).
   RtScene(const RtDevice& device, const WorldGeometry& world, RtSceneOptions options = {});
+  RtScene(const RtDevice& device, const WorldGeometry& world, const Scene& scene,
+          RtSceneOptions options = {});
   ~RtScene();
   RtScene(const RtScene&) = delete;
   RtScene& operator=(const RtScene&) = delete;
@@ -66,14 +71,30 @@ class RtScene {
 
   RTCScene handle() const { return scene_; }
 
-  // Hook for alpha-masked materials (AlphaMode::Mask), to be implemented: an intersection and
-  // occlusion filter function per geometry (rtcSetGeometryIntersectFilterFunction /
-  // rtcSetGeometryOccludedFilterFunction) that samples the colour texture alpha at the hit's
-  // uv and rejects the hit below alphaCutoff. Each geometry's user data already points at its
-  // WorldMesh for that purpose.
+  // What each Embree geometry's user data points at (geomID == instance index). Geometries
+  // whose material has AlphaMode::Mask get an intersection and an occlusion filter function
+  // that rejects a hit where the coverage at its uv is below the cutoff, so every query
+  // (closest hit, any hit, streams) skips the holes. The coverage is resolveMaterial's alpha:
+  // Material::alpha times the colour texture's alpha (sampleTexture; no texture when a checker
+  // replaces the colour). AlphaMode::Blend geometry stays an opaque occluder for now.
+  struct GeometryData {
+    const WorldMesh* mesh = nullptr;
+    bool alphaMasked = false;
+    float alpha = 1.f;                      // Material::alpha
+    float alphaCutoff = 0.5f;               // Material::alphaCutoff
+    const Texture* alphaTexture = nullptr;  // whose .w multiplies alpha; null: none
+    // Coverage of triangle `primitive` at Embree barycentrics (u, v); read-only, thread-safe.
+    float coverage(std::uint32_t primitive, float u, float v) const;
+  };
+  // Number of geometries with an alpha-mask filter installed.
+  int alphaMaskedGeometries() const { return alphaMasked_; }
 
  private:
+  RtScene(const RtDevice& device, const WorldGeometry& world, const Scene* scene,
+          RtSceneOptions options);
   const RtDevice& device_;
+  std::vector<GeometryData> geometry_;  // one per WorldMesh; sized once, addresses are stable
+  int alphaMasked_ = 0;
   RTCScene scene_ = nullptr;
   mutable std::atomic<std::uint64_t> raysTraced_{0};
 };

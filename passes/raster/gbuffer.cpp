@@ -1,6 +1,7 @@
 #include "passes/raster/gbuffer.h"
 
 #include "engine/gl/gbuffer_raster.h"
+#include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 
 namespace diptych {
@@ -15,8 +16,12 @@ void GBufferPass::setup(PassBuilder& b) {
 
 void GBufferPass::execute(PassContext& c) {
   const gl::GlSceneBuffers& scene = c.world().glScene();
-  c.world().glCached<gl::GBufferRasterizer>().render(
-      scene, c.frame().camera, c.glTexture(visibility_), c.glTexture(normal_), c.glTexture(depth_));
+  // The shading buffers carry the alpha masks, so the G-buffer sees through the holes that
+  // the Embree filter cuts for rays.
+  const gl::GlShadingBuffers& shading = c.world().glShading();
+  c.world().glCached<gl::GBufferRasterizer>().render(scene, c.frame().camera,
+                                                     c.glTexture(visibility_), c.glTexture(normal_),
+                                                     c.glTexture(depth_), &shading);
 }
 
 }  // namespace diptych

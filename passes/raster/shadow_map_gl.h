@@ -37,6 +37,7 @@ class ShadowMapGl {
  private:
   void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);
   gl::Program depth_, lookup_;
+  gl::Program alphaDepth_;  // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
   gl::Framebuffer depthFbo_, lookupFbo_;
   gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle
   gl::Buffer layers_, lights_;

@@ -4,6 +4,7 @@
 
 #include "engine/gl/debug.h"
 #include "engine/gl/shader.h"
+#include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 #include "passes/raster/shadow_map_gl.h"
 
@@ -28,14 +29,9 @@ const gl::Texture& ShadowMapGl::maps(int resolution, int layers) {
 
 namespace {
 
-// A mesh is drawn into the maps unless its material casts no shadow, or it is alpha-masked
-// with a constant coverage below the cutoff and no colour texture (cut out everywhere).
-// Textured masks need the colour texture's alpha on the GPU: see docs/shadow-maps.md.
 bool castsShadow(const Scene& scene, int material) {
-  if (material < 0 || material >= int(scene.materials.size())) return true;
-  const Material& m = scene.materials[std::size_t(material)];
-  if (!m.castsShadows) return false;
-  return !(m.alphaMode == AlphaMode::Mask && m.colorTexture < 0 && m.alpha < m.alphaCutoff);
+  return material < 0 || material >= int(scene.materials.size()) ||
+         scene.materials[std::size_t(material)].castsShadows;
 }
 
 }  // namespace
@@ -61,7 +57,18 @@ void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>
     gl::glEnable(GL_POLYGON_OFFSET_FILL);
     gl::glPolygonOffset(-settings.slopeFactor, -settings.slopeUnits);
   }
-  depth_.use();
+  // Alpha-masked casters (gl::AlphaDraw): cut out everywhere -> not drawn; textured -> drawn
+  // with the discarding variant, compiled on first need so that other scenes keep a depth
+  // program without discard.
+  const gl::GlShadingBuffers& shading = world.glShading();
+  if (shading.anyAlphaTested() && !alphaDepth_) {
+    alphaDepth_ =
+        gl::loadProgram({"shadow_depth.vert", "shadow_depth.frag"}, {{"DIPTYCH_ALPHA_MASK", ""}});
+  }
+  if (shading.anyAlphaTested()) {
+    scene.bindStorage();
+    shading.bindStorage();
+  }
   scene.vertexArray.bind();
   const GLfloat zero = 0.f;
   for (const LightFrustum& f : frusta) {
@@ -71,8 +78,17 @@ void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>
       depthFbo_.bind();
       gl::glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &zero);
       depth_.set("uViewProjection", f.viewProj[std::size_t(i)]);
+      if (alphaDepth_) alphaDepth_.set("uViewProjection", f.viewProj[std::size_t(i)]);
       for (const gl::GlMeshRange& mesh : scene.meshes) {
         if (mesh.triangleCount == 0 || !castsShadow(source, mesh.material)) continue;
+        const gl::AlphaDraw mode = shading.alphaDraw(mesh.material);
+        if (mode == gl::AlphaDraw::Hidden) continue;
+        if (mode == gl::AlphaDraw::AlphaTested) {
+          alphaDepth_.use();
+          alphaDepth_.set("uMaterial", mesh.material);
+        } else {
+          depth_.use();
+        }
         gl::glDrawElements(GL_TRIANGLES, GLsizei(3 * mesh.triangleCount), GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));
       }

@@ -10,6 +10,7 @@ struct GpuMaterial {
   vec4 emissionChecker; // M_E, 1 when the checker replaces C
   vec4 checkerAScale;   // checker colour A, scale
   vec4 checkerBCutoff;  // checker colour B, alpha cutoff
+  vec4 alphaMask;       // layer of uSceneAlphaMasks (-1: none), width, height, flags
 };
 layout(std430, binding = 4) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
 layout(std430, binding = 5) readonly buffer SceneInstances { ivec2 sceneInstances[]; };
@@ -22,6 +23,9 @@ struct GpuLight {
 };
 layout(std430, binding = 6) readonly buffer SceneLights { GpuLight sceneLights[]; };
 uniform int uLightCount;  // sceneLights has a dummy entry when the scene has no lights
+// Alpha of the colour textures of alpha-masked materials, one per layer at its own size in the
+// layer's corner, image row y at GL row y (engine/gl/shading_buffers.cpp).
+layout(binding = 7) uniform sampler2DArray uSceneAlphaMasks;
 
 // Material m of Scene::materials (-1: the default), with the checker applied at uv
 // (colour alternates every 1/scale in u and v, as engine/rt/texture_sampling.cpp).
@@ -48,6 +52,59 @@ ShadingMaterial sceneMaterial(int m, vec2 uv) {
   s.emission = g.emissionChecker.xyz;
   return s;
 }
+
+// The wrap modes of engine/rt/texture_sampling.cpp (0 repeat, 1 clamp to edge, 2 mirrored
+// repeat), applied the same way: the coordinate reduced by whole periods, then texel indices.
+float sceneReduceCoordinate(float t, int mode) {
+  if (isnan(t) || isinf(t)) return 0.0;
+  if (mode == 0) return t - floor(t);
+  if (mode == 2) return t - 2.0 * floor(0.5 * t);
+  return clamp(t, -1.0, 2.0);
+}
+
+int sceneWrapTexel(int i, int size, int mode) {
+  // GLSL leaves % undefined for negative operands. After sceneReduceCoordinate a texel index is
+  // at least -size - 1 (clamp: t >= -1, bilinear -0.5), so adding 4 size keeps it non-negative
+  // without changing the result modulo size or 2 size.
+  if (size <= 1) return 0;
+  if (mode == 0) return (i + 4 * size) % size;
+  if (mode == 2) {
+    int m = (i + 4 * size) % (2 * size);
+    return m < size ? m : 2 * size - 1 - m;
+  }
+  return clamp(i, 0, size - 1);
+}
+
+// Coverage of material m at uv: its alpha times its colour texture's alpha (nearest or
+// bilinear by the texture's magnification filter), as resolveMaterial computes it on the CPU.
+float sceneMaterialAlpha(int m, vec2 uv) {
+  GpuMaterial g = sceneMaterials[m + 1];
+  float alpha = g.transmitAlpha.w;
+  int layer = int(g.alphaMask.x);
+  if (layer < 0) return alpha;
+  ivec2 size = ivec2(g.alphaMask.yz);
+  int flags = int(g.alphaMask.w);
+  int wrapS = flags & 3, wrapT = (flags >> 2) & 3;
+  vec2 t = vec2(sceneReduceCoordinate(uv.x, wrapS), sceneReduceCoordinate(uv.y, wrapT));
+  if ((flags & 16) == 0) {
+    ivec2 p = ivec2(floor(t * vec2(size)));
+    p = ivec2(sceneWrapTexel(p.x, size.x, wrapS), sceneWrapTexel(p.y, size.y, wrapT));
+    return alpha * texelFetch(uSceneAlphaMasks, ivec3(p, layer), 0).r;
+  }
+  vec2 x = t * vec2(size) - 0.5;
+  vec2 x0 = floor(x);
+  vec2 f = x - x0;
+  ivec2 i0 = ivec2(x0);
+  int xa = sceneWrapTexel(i0.x, size.x, wrapS), xb = sceneWrapTexel(i0.x + 1, size.x, wrapS);
+  int ya = sceneWrapTexel(i0.y, size.y, wrapT), yb = sceneWrapTexel(i0.y + 1, size.y, wrapT);
+  float top = mix(texelFetch(uSceneAlphaMasks, ivec3(xa, ya, layer), 0).r,
+                  texelFetch(uSceneAlphaMasks, ivec3(xb, ya, layer), 0).r, f.x);
+  float bottom = mix(texelFetch(uSceneAlphaMasks, ivec3(xa, yb, layer), 0).r,
+                     texelFetch(uSceneAlphaMasks, ivec3(xb, yb, layer), 0).r, f.x);
+  return alpha * mix(top, bottom, f.y);
+}
+
+float sceneMaterialAlphaCutoff(int m) { return sceneMaterials[m + 1].checkerBCutoff.w; }
 
 ShadingLight sceneLight(int i) {
   GpuLight g = sceneLights[i];
