@@ -12,6 +12,7 @@
 #include "engine/gl/shading_buffers.h"
 #include "engine/scene/load.h"
 #include "tests/unit/shadow_map_compare.h"
+#include "tests/support/test_paths.h"
 
 namespace diptych {
 namespace {
