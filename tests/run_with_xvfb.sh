@@ -4,7 +4,9 @@
 # lock files, then starts the server: two runs may pick the same number and one fails).
 set -u
 out=$(mktemp)
-Xvfb -displayfd 1 -nolisten tcp -screen 0 1024x768x24 >"$out" 2>/dev/null &
+# -noreset: by default the server resets when its last client disconnects, and a test that
+# opens a second window right after closing the first can land inside that reset.
+Xvfb -displayfd 1 -noreset -nolisten tcp -screen 0 1024x768x24 >"$out" 2>/dev/null &
 server=$!
 for _ in $(seq 100); do
   [ -s "$out" ] && break
