@@ -11,8 +11,8 @@
 #include "engine/gl/debug.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/scene/load.h"
-#include "tests/unit/shadow_map_compare.h"
 #include "tests/support/test_paths.h"
+#include "tests/unit/shadow_map_compare.h"
 
 namespace diptych {
 namespace {
