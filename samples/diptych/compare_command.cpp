@@ -163,12 +163,21 @@ void runCompare(const CompareOptions& o) {
     referenceMs =
         nlohmann::json::parse(std::ifstream(cached.string() + ".json"))["ms"].get<double>();
   } else {
-    const GraphRun ref = runGraph(reference.recipe(), world, frame, {"reference.color"}, 0, 1);
+    const Recipe recipe = reference.recipe();
+    const GraphRun ref = runGraph(recipe, world, frame, recipe.outputs, 0, 1);
     referenceImage = ref.outputs.at("reference.color").toImage();
     referenceMs = ref.totalMs;
     writeImage(cached, referenceImage);
+    if (ref.outputs.count("reference.variance"))  // path tracing: the per-pixel variance too
+      writeImage(cached.string() + ".variance.exr", ref.outputs.at("reference.variance").toImage());
     std::ofstream(cached.string() + ".json")
         << nlohmann::json{{"ms", referenceMs}, {"reference", reference.text}}.dump();
+  }
+  if (std::filesystem::exists(cached.string() + ".variance.exr")) {
+    std::filesystem::create_directories(dir / "images");
+    std::filesystem::copy_file(cached.string() + ".variance.exr",
+                               dir / "images/reference-variance.exr",
+                               std::filesystem::copy_options::overwrite_existing);
   }
   progress(++step, steps, "exact slot signals");
 
@@ -201,6 +210,7 @@ void runCompare(const CompareOptions& o) {
     rv.image = run.outputs.at(recipe.outputs.front()).toImage();
     const auto metrics = computeMetrics(rv.image, referenceImage);
     rv.heatmap = heatMap(flipErrorMap(rv.image, referenceImage), 1.f);
+    rv.dot = graphToDot(run.graph, &run.timings);
     nlohmann::json culled = nlohmann::json::array();
     for (const GraphPass& p : run.graph.passes)
       if (p.culled) culled.push_back({{"pass", p.name}, {"reason", p.cullReason}});

@@ -24,7 +24,8 @@ namespace diptych::cli {
 namespace {
 
 struct RenderOptions {
-  std::string scene, recipe, size = "640x480", out = "out.png", graphOut, timingsOut, output;
+  std::string scene, recipe, size = "640x480", out = "out.png", graphOut, timingsOut;
+  std::vector<std::string> outputs;  // --output, repeatable
   std::string context = "osmesa";
   std::vector<std::string> slots;
   int frames = 5, warmup = 2;
@@ -107,9 +108,12 @@ void runRender(const RenderOptions& o) {
   FrameSettings frame{.width = width,
                       .height = height,
                       .camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
-  std::vector<std::string> outputs;
-  if (!o.output.empty()) outputs.push_back(o.output);
-  const CompiledGraph graph = compileGraph(recipe, builtinPasses(), scene, frame, outputs);
+  const CompiledGraph graph = compileGraph(recipe, builtinPasses(), scene, frame, o.outputs);
+  for (ResourceId id : graph.outputs)  // refuse before rendering, not after
+    if (formatIsInteger(graph.resources[id].desc.format))
+      throw InputError(
+          "--output", "",
+          "'" + graph.resources[id].name + "' holds integers and cannot be written as an image");
 
   std::unique_ptr<gl::GlContext> context;
   if (graph.usesGl()) context = gl::createContext(contextKind, width, height);
@@ -123,13 +127,15 @@ void runRender(const RenderOptions& o) {
     if (tty) std::fprintf(stderr, "\rframe %d/%d%s", f + 1, total, f + 1 == total ? "\n" : "");
   }
 
-  const std::string outputName = graph.resources[graph.outputs.front()].name;
-  const Surface& result = executor.output(outputName);
-  if (formatIsInteger(result.desc.format))
-    throw InputError("--output", "",
-                     "'" + outputName + "' holds integers and cannot be written as an image");
-  writeImage(o.out, result.toImage(), ToneMap{o.exposure});
-  std::printf("wrote %s (%s, %dx%d)\n", o.out.c_str(), outputName.c_str(), width, height);
+  // The first output goes to --out; any further one beside it, named after the resource
+  // (out.png + "shade.variance" -> out.shade.variance.png).
+  for (std::size_t i = 0; i < graph.outputs.size(); ++i) {
+    const std::string name = graph.resources[graph.outputs[i]].name;
+    std::filesystem::path file(o.out);
+    if (i > 0) file.replace_filename(file.stem().string() + "." + name + file.extension().string());
+    writeImage(file, executor.output(name).toImage(), ToneMap{o.exposure});
+    std::printf("wrote %s (%s, %dx%d)\n", file.string().c_str(), name.c_str(), width, height);
+  }
 
   if (!o.graphOut.empty()) {
     writeText(o.graphOut, extensionOf(o.graphOut) == ".dot"
@@ -164,8 +170,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option(
       "--slot", options->slots,
       "Override a technique slot: SLOT=TYPE[:key=value,...] (see docs/technique-slots.md)");
-  cmd->add_option("--output", options->output,
-                  "Graph resource to write (default: the recipe's first output)");
+  cmd->add_option(
+      "--output", options->outputs,
+      "Graph resource(s) to write (repeatable; default: the recipe's outputs). The first "
+      "goes to --out, others to OUT_STEM.RESOURCE.EXT");
   cmd->add_option("--graph-out", options->graphOut, "Write the compiled graph (.dot or .json)");
   cmd->add_option("--timings", options->timingsOut, "Write per-node timings and the graph as JSON");
   cmd->add_option("--frames", options->frames, "Measured frames (median reported)")

@@ -88,12 +88,16 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
     const std::string graphFile = "graphs/" + v.name + ".json";
     std::filesystem::create_directories(dir / "graphs");
     std::ofstream(dir / graphFile) << v.result["graph"].dump(2);
+    const std::string dotFile = "graphs/" + v.name + ".dot";
+    std::ofstream(dir / dotFile) << v.dot;
     written.push_back(graphFile);
+    written.push_back(dotFile);
     v.result["files"] = {{"exr", "images/" + v.name + ".exr"},
                          {"png", "images/" + v.name + ".png"},
                          {"heatmap", "heatmaps/" + v.name + ".png"},
                          {"panel", "panels/" + v.name + ".png"},
-                         {"graph", graphFile}};
+                         {"graph", graphFile},
+                         {"graph_dot", dotFile}};
     nlohmann::json entry = v.result;
     entry.erase("graph");  // kept in its own file
     results["variants"].push_back(entry);

@@ -15,6 +15,7 @@ namespace diptych::cli {
 struct ReportVariant {
   std::string name;
   Image image, heatmap;
+  std::string dot;        // the compiled graph with its timings, Graphviz DOT
   nlohmann::json result;  // the variant's entry of results.json (metrics, timings, signals...)
 };
 

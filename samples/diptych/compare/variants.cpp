@@ -126,6 +126,7 @@ Recipe ReferenceSpec::recipe() const {
   if (passType != "rt_whitted") params["spp"] = spp;
   r.passes = {{.name = "reference", .type = passType, .params = params, .place = "--reference"}};
   r.outputs = {"reference.color"};
+  if (passType == "rt_path") r.outputs.push_back("reference.variance");  // per-pixel variance
   return r;
 }
 
