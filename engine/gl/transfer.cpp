@@ -28,7 +28,7 @@ void checkLayer(const Texture& t, int layer) {
 }
 
 // Reverses the row order in place: top-first <-> bottom-first.
-void flipRows(std::vector<std::uint32_t>& words, std::size_t rowWords, int rows) {
+void flipRows(std::span<std::uint32_t> words, std::size_t rowWords, int rows) {
   for (int top = 0, bottom = rows - 1; top < bottom; ++top, --bottom) {
     std::swap_ranges(words.begin() + std::ptrdiff_t(top * rowWords),
                      words.begin() + std::ptrdiff_t((top + 1) * rowWords),
@@ -43,11 +43,13 @@ std::size_t texelWordCount(const Texture& t, int level) {
   return std::size_t(s.width) * s.height * formatInfo(t.format()).components;
 }
 
-std::vector<std::uint32_t> readTexture(const Texture& t, int layer, int level) {
+void readTextureInto(const Texture& t, std::span<std::uint32_t> words, int layer, int level) {
   checkLayer(t, layer);
   const LevelSize s = levelSize(t, level);
   const FormatInfo& f = formatInfo(t.format());
-  std::vector<std::uint32_t> words(texelWordCount(t, level));
+  if (words.size() != texelWordCount(t, level))
+    throw Error("texture readback into " + std::to_string(words.size()) + " words; the level has " +
+                std::to_string(texelWordCount(t, level)));
   // Rows of 32-bit words are always 4-byte aligned, which is the default pack alignment; set
   // it anyway since it is global state another pass may have changed.
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -55,6 +57,11 @@ std::vector<std::uint32_t> readTexture(const Texture& t, int layer, int level) {
   glGetTextureSubImage(t.id(), level, 0, 0, zoffset, s.width, s.height, 1, f.pixelFormat,
                        f.pixelType, GLsizei(words.size() * 4), words.data());
   flipRows(words, std::size_t(s.width) * f.components, s.height);
+}
+
+std::vector<std::uint32_t> readTexture(const Texture& t, int layer, int level) {
+  std::vector<std::uint32_t> words(texelWordCount(t, level));
+  readTextureInto(t, words, layer, level);
   return words;
 }
 

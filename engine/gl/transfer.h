@@ -6,6 +6,7 @@
 //   R32UI, RGBA32UI: the unsigned integer;  D32F: the depth as float32 bits.
 // SRGB8_ALPHA8 transfers its stored (encoded) values; no sRGB conversion is applied.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/gl/objects.h"
@@ -17,6 +18,9 @@ std::size_t texelWordCount(const Texture& texture, int level = 0);
 
 // `layer`: array layer, or cube face in GL order (+x, -x, +y, -y, +z, -z); 0 for 2D.
 std::vector<std::uint32_t> readTexture(const Texture& texture, int layer = 0, int level = 0);
+// The same into caller storage of exactly texelWordCount(texture, level) words (no copy).
+void readTextureInto(const Texture& texture, std::span<std::uint32_t> words, int layer = 0,
+                     int level = 0);
 void uploadTexture(const Texture& texture, const std::vector<std::uint32_t>& words, int layer = 0,
                    int level = 0);
 

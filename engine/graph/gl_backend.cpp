@@ -43,10 +43,9 @@ void GlBackend::readback(int handle, Surface& into) {
   if (!(into.desc == d))
     throw Error("readback into a surface of another description: " + describe(into.desc));
   const std::size_t layerWords = std::size_t(d.width) * d.height * formatChannels(d.format);
-  for (int layer = 0; layer < d.layers; ++layer) {
-    const std::vector<std::uint32_t> words = gl::readTexture(textures_[handle], layer);
-    std::copy(words.begin(), words.end(), into.words.begin() + std::ptrdiff_t(layer * layerWords));
-  }
+  for (int layer = 0; layer < d.layers; ++layer)
+    gl::readTextureInto(textures_[handle],
+                        std::span(into.words).subspan(std::size_t(layer) * layerWords, layerWords), layer);
 }
 
 void GlBackend::upload(const Surface& from, int handle) {
