@@ -45,7 +45,8 @@ void GlBackend::readback(int handle, Surface& into) {
   const std::size_t layerWords = std::size_t(d.width) * d.height * formatChannels(d.format);
   for (int layer = 0; layer < d.layers; ++layer)
     gl::readTextureInto(textures_[handle],
-                        std::span(into.words).subspan(std::size_t(layer) * layerWords, layerWords), layer);
+                        std::span(into.words).subspan(std::size_t(layer) * layerWords, layerWords),
+                        layer);
 }
 
 void GlBackend::upload(const Surface& from, int handle) {
