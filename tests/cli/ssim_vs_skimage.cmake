@@ -1,4 +1,5 @@
-# SSIM of `diptych diff` against scikit-image on generated PNG and EXR pairs
+# SSIM of `diptych diff` against scikit-image on generated PNG and EXR pairs and on real pairs
+# (renders of the sample scenes by the raster and the hybrid recipe)
 # (tests/tools/ssim_reference.py). Needs /usr/bin/python3 with Debian's python3-skimage; when it
 # is missing this test FAILS (it does not skip): .ci/install-deps installs it.
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
@@ -12,6 +13,7 @@ if(NOT rc EQUAL 0)
 endif()
 execute_process(COMMAND ${python} ${SOURCE_DIR}/tests/tools/ssim_reference.py
                         --diptych ${DIPTYCH} --work ${WORK_DIR} --tolerance 1e-4
+                        --samples ${SOURCE_DIR}/samples
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
 message(STATUS "${out}")
 if(NOT rc EQUAL 0)

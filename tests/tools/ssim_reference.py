@@ -85,6 +85,8 @@ def main():
     parser.add_argument("--diptych", required=True)
     parser.add_argument("--work", required=True)
     parser.add_argument("--tolerance", type=float, default=1e-4)
+    parser.add_argument("--samples", help="samples/ folder: adds real pairs, renders of the "
+                        "sample scenes by the hybrid and the raster recipe")
     args = parser.parse_args()
     oiiotool = shutil.which("oiiotool")
     if not oiiotool:
@@ -101,16 +103,39 @@ def main():
         ("hdr-160x90", 90, 160, 3, "exr", 4.0, 0.7, 0.02),
         ("hdr-53x211", 211, 53, 3, "exr", 16.0, 3.0, 0.005),
     ]
+    # Real pairs: the same scene rendered by the raster and by the hybrid recipe (8-bit sRGB
+    # PNG, read back and decoded to linear exactly as diptych decodes it).
+    real = []
+    if args.samples:
+        for scene in ("whitted", "cornell-point"):
+            paths = []
+            for recipe in ("raster", "hybrid"):
+                out = os.path.join(args.work, f"real-{scene}-{recipe}.png")
+                subprocess.run([args.diptych, "render", os.path.join(args.samples, "scenes", scene + ".json"),
+                                "--recipe", os.path.join(args.samples, "graphs", recipe + ".json"),
+                                "--size", "160x120", "--frames", "1", "--warmup", "0", "--out", out],
+                               check=True, capture_output=True)
+                paths.append(out)
+            real.append((f"real-{scene}", paths))
+
+    def read_png(path):
+        data = np.asarray(Image.open(path).convert("RGB")).astype(np.float64) / 255.0
+        return srgb_to_linear(data)
+
     failures = 0
     print(f"{'case':18} {'data_range':>12} {'diptych':>12} {'skimage':>12} {'|diff|':>10}")
-    for name, h, w, ch, fmt, peak, blur, noise in cases:
-        ref = picture(rng, h, w, ch, peak)
-        test = distorted(rng, ref, blur, noise, peak)
-        ext = "." + fmt
-        paths = [os.path.join(args.work, f"{name}-{k}{ext}") for k in ("test", "ref")]
-        write = (lambda p, i: write_png(p, i)) if fmt == "png" else (
-            lambda p, i: write_exr(p, i, oiiotool))
-        a, b = write(paths[0], test), write(paths[1], ref)
+    for name, h, w, ch, fmt, peak, blur, noise in cases + [(n, 0, 0, 3, "real", 0, 0, 0) for n, _ in real]:
+        if fmt == "real":
+            paths = dict(real)[name]
+            a, b = read_png(paths[0]), read_png(paths[1])
+        else:
+            ref = picture(rng, h, w, ch, peak)
+            test = distorted(rng, ref, blur, noise, peak)
+            ext = "." + fmt
+            paths = [os.path.join(args.work, f"{name}-{k}{ext}") for k in ("test", "ref")]
+            write = (lambda p, i: write_png(p, i)) if fmt == "png" else (
+                lambda p, i: write_exr(p, i, oiiotool))
+            a, b = write(paths[0], test), write(paths[1], ref)
         data_range = float(b.max() - b.min())
         expected = structural_similarity(
             a if ch > 1 else a[..., 0], b if ch > 1 else b[..., 0], gaussian_weights=True,
@@ -136,7 +161,7 @@ def main():
     if failures:
         print(f"ssim_reference: {failures} case(s) disagree beyond {args.tolerance}")
         return 1
-    print(f"ssim_reference: all {len(cases)} cases agree within {args.tolerance}")
+    print(f"ssim_reference: all {len(cases) + len(real)} cases agree within {args.tolerance}")
     return 0
 
 
