@@ -1,5 +1,7 @@
 #include "tests/support/test_paths.h"
 
+#include <unistd.h>
+
 namespace diptych::testing {
 std::string samplesDir() {
   return DIPTYCH_SAMPLES_DIR_VALUE;
@@ -12,5 +14,14 @@ std::string testsDir() {
 }
 std::string sourceShaderDir() {
   return DIPTYCH_SOURCE_SHADER_DIR_VALUE;
+}
+}  // namespace diptych::testing
+
+namespace diptych::testing {
+std::filesystem::path scratchDir(const std::string& name) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir;
 }
 }  // namespace diptych::testing

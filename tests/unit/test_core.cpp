@@ -7,6 +7,7 @@
 #include "engine/core/timing.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/world_geometry.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 
@@ -17,7 +18,7 @@ TEST(Timing, MedianOfOddAndEvenCounts) {
 }
 
 TEST(Image, ExrRoundTripIsExactAndPngIsSrgbEncoded) {
-  const auto dir = std::filesystem::temp_directory_path() / "diptych_test_core";
+  const auto dir = ::diptych::testing::scratchDir("diptych_test_core");
   Image img(3, 2, 3);
   for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = 0.1f * float(i) + 0.01f;
   writeImage(dir / "a.exr", img);

@@ -18,12 +18,13 @@
 #include "gl_test_context.h"
 #include "passes/common/visibility_texel.h"
 #include "passes/registry.h"
+#include "tests/support/test_paths.h"
 
 namespace diptych {
 namespace {
 
 Scene sceneFromJson(const std::string& name, const std::string& json) {
-  const auto dir = std::filesystem::temp_directory_path() / "diptych_forward_producers";
+  const auto dir = ::diptych::testing::scratchDir("diptych_forward_producers");
   std::filesystem::create_directories(dir);
   const auto path = dir / (name + ".json");
   std::ofstream(path) << json;

@@ -8,6 +8,7 @@
 
 #include "engine/core/error.h"
 #include "engine/metrics/metrics.h"
+#include "tests/support/test_paths.h"
 
 using namespace diptych;
 
@@ -245,7 +246,7 @@ TEST(Metrics, ViridisMatchesMatplotlibsTable) {
 }
 
 TEST(Metrics, ReadLinearImageDecodesPngButNotExr) {
-  const auto dir = std::filesystem::temp_directory_path() / "diptych_metrics_io";
+  const auto dir = ::diptych::testing::scratchDir("diptych_metrics_io");
   std::filesystem::create_directories(dir);
   const Image grey(2, 2, 3, 0.5f);
   writeImage(dir / "g.png", grey);  // sRGB encoded on write

@@ -23,7 +23,7 @@ using namespace diptych;
 namespace {
 
 std::filesystem::path writeScene(const std::string& name, const std::string& json) {
-  const auto dir = std::filesystem::temp_directory_path() / "diptych_references";
+  const auto dir = ::diptych::testing::scratchDir("diptych_references");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / name) << json;
   return dir / name;

@@ -18,7 +18,7 @@ using namespace diptych;
 namespace {
 
 std::filesystem::path writeScene(const std::string& name, const std::string& json) {
-  const auto dir = std::filesystem::temp_directory_path() / "diptych_rt_producers";
+  const auto dir = ::diptych::testing::scratchDir("diptych_rt_producers");
   std::filesystem::create_directories(dir);
   std::ofstream(dir / name) << json;
   return dir / name;

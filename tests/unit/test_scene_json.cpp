@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path tempDir() {
-  const fs::path dir = fs::temp_directory_path() / "diptych_test_scene_json";
+  const fs::path dir = ::diptych::testing::scratchDir("diptych_test_scene_json");
   fs::create_directories(dir);
   return dir;
 }

@@ -53,7 +53,7 @@ Scene smallScene(const std::string& name, const json& light) {
                          {"radius", 1},
                          {"segments", {96, 48}},
                          {"transform", {{"translate", {1.5, 1.5, 1}}}}}}}};
-  const auto dir = std::filesystem::temp_directory_path() / "diptych-shadow-map-tests";
+  const auto dir = ::diptych::testing::scratchDir("diptych-shadow-map-tests");
   std::filesystem::create_directories(dir);
   const auto path = dir / (name + ".json");
   std::ofstream(path) << scene.dump(1);
