@@ -70,47 +70,38 @@ void setDefaultSampling(GLuint id, const FormatInfo& info, int levels) {
 
 }  // namespace
 
-Texture Texture::create2D(TextureFormat format, int width, int height, int levels) {
-  checkSize(width, height, 1, levels);
-  Texture t;
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &id);
-  t.handle_ = GlHandle<detail::deleteTexture>(id);
-  glTextureStorage2D(id, levels, formatInfo(format).internalFormat, width, height);
-  setDefaultSampling(id, formatInfo(format), levels);
-  t.format_ = format;
-  t.kind_ = TextureKind::Tex2D;
-  t.width_ = width, t.height_ = height, t.layers_ = 1, t.levels_ = levels;
-  return t;
-}
-
-Texture Texture::create2DArray(TextureFormat format, int width, int height, int layers,
-                               int levels) {
+// The one place a texture is created: storage of the kind's shape, default sampling, metadata.
+Texture Texture::create(TextureKind kind, TextureFormat format, int width, int height, int layers,
+                        int levels) {
   checkSize(width, height, layers, levels);
+  static constexpr GLenum kTargets[] = {GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY, GL_TEXTURE_CUBE_MAP};
   Texture t;
   GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+  glCreateTextures(kTargets[int(kind)], 1, &id);
   t.handle_ = GlHandle<detail::deleteTexture>(id);
-  glTextureStorage3D(id, levels, formatInfo(format).internalFormat, width, height, layers);
+  const GLenum internal = formatInfo(format).internalFormat;
+  if (kind == TextureKind::Tex2DArray)
+    glTextureStorage3D(id, levels, internal, width, height, layers);
+  else  // 2D and cube: a cube's six faces come with 2D storage
+    glTextureStorage2D(id, levels, internal, width, height);
   setDefaultSampling(id, formatInfo(format), levels);
   t.format_ = format;
-  t.kind_ = TextureKind::Tex2DArray;
+  t.kind_ = kind;
   t.width_ = width, t.height_ = height, t.layers_ = layers, t.levels_ = levels;
   return t;
 }
 
+Texture Texture::create2D(TextureFormat format, int width, int height, int levels) {
+  return create(TextureKind::Tex2D, format, width, height, 1, levels);
+}
+
+Texture Texture::create2DArray(TextureFormat format, int width, int height, int layers,
+                               int levels) {
+  return create(TextureKind::Tex2DArray, format, width, height, layers, levels);
+}
+
 Texture Texture::createCube(TextureFormat format, int size, int levels) {
-  checkSize(size, size, 6, levels);
-  Texture t;
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &id);
-  t.handle_ = GlHandle<detail::deleteTexture>(id);
-  glTextureStorage2D(id, levels, formatInfo(format).internalFormat, size, size);
-  setDefaultSampling(id, formatInfo(format), levels);
-  t.format_ = format;
-  t.kind_ = TextureKind::Cube;
-  t.width_ = size, t.height_ = size, t.layers_ = 6, t.levels_ = levels;
-  return t;
+  return create(TextureKind::Cube, format, size, size, 6, levels);
 }
 
 void Texture::setLabel(std::string_view label) const {

@@ -94,6 +94,8 @@ class Texture {
   void setLabel(std::string_view label) const;
 
  private:
+  static Texture create(TextureKind kind, TextureFormat format, int width, int height, int layers,
+                        int levels);
   GlHandle<detail::deleteTexture> handle_;
   TextureFormat format_ = TextureFormat::RGBA8;
   TextureKind kind_ = TextureKind::Tex2D;

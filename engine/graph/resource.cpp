@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "engine/core/error.h"
 
 namespace diptych {
@@ -49,11 +51,14 @@ std::string describe(const ResourceDesc& d) {
 }
 
 void Surface::fill(const vec4& value) {
+  // Encode one texel, then repeat it: default nodes fill whole frames every frame.
   const int channels = formatChannels(desc.format);
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    const float v = value[int(i % channels)];
-    words[i] = formatIsInteger(desc.format) ? std::uint32_t(v) : std::bit_cast<std::uint32_t>(v);
-  }
+  std::uint32_t texel[4];
+  for (int c = 0; c < channels; ++c)
+    texel[c] = formatIsInteger(desc.format) ? std::uint32_t(value[c])
+                                            : std::bit_cast<std::uint32_t>(value[c]);
+  for (std::size_t i = 0; i < words.size(); i += std::size_t(channels))
+    std::copy(texel, texel + channels, words.begin() + std::ptrdiff_t(i));
 }
 
 Image Surface::toImage(int layer) const {

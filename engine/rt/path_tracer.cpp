@@ -128,7 +128,9 @@ float PathRng::next() {
 
 PathTracer::PathTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
                        PathSettings settings)
-    : scene_(scene), world_(world), rt_(rt), settings_(settings) {}
+    : scene_(scene), world_(world), rt_(rt), settings_(settings) {
+  for (const Light& light : scene.lights) lights_.push_back(shading::toShadingLight(light));
+}
 
 vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
                            std::uint32_t& rays) const {
@@ -137,12 +139,12 @@ vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
   const vec3& n = p.shadingNormal;
   const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
   vec3 sum(0.f);
-  for (const Light& light : scene_.lights) {
+  for (std::size_t i = 0; i < lights_.size(); ++i) {
+    const Light& light = scene_.lights[i];
     if (!isAreaLight(light)) {
       // Delta lights: S_i as in the shading model (point and spot I / d^2 with the cone
       // factor, directional E), so L = DIRECTA(l) S V.
-      const shading::LightSample s =
-          shading::sampleLight(shading::toShadingLight(light), p.position);
+      const shading::LightSample s = shading::sampleLight(lights_[i], p.position);
       const vec3 direct = lectureDirect(m, n, v, s.l);
       if (s.radiance == vec3(0.f) || direct == vec3(0.f)) continue;
       if (visible(rt_, makeShadowRay(light, receiver), rays)) sum += direct * s.radiance;

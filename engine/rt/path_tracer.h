@@ -22,6 +22,7 @@
 // Russian roulette (Arvo and Kirk 1990) after `rrDepth` vertices with survival probability
 // min(1, max component of the throughput); `maxDepth` vertices at most.
 #include <cstdint>
+#include <vector>
 
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface.h"
@@ -72,6 +73,7 @@ class PathTracer {
   const WorldGeometry& world_;
   const RtScene& rt_;
   PathSettings settings_;
+  std::vector<shading::ShadingLight> lights_;  // scene_.lights converted once, not per hit
 };
 
 }  // namespace diptych

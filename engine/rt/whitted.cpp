@@ -11,7 +11,9 @@ namespace diptych {
 
 WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
                              WhittedSettings settings)
-    : scene_(scene), world_(world), rt_(rt), settings_(settings) {}
+    : scene_(scene), world_(world), rt_(rt), settings_(settings) {
+  for (const Light& light : scene.lights) lights_.push_back(shading::toShadingLight(light));
+}
 
 vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
@@ -27,8 +29,9 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed) cons
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
   vec3 sum(0.f);
   const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
-  for (const Light& light : scene_.lights) {
-    const shading::LightSample s = shading::sampleLight(shading::toShadingLight(light), p.position);
+  for (std::size_t i = 0; i < lights_.size(); ++i) {
+    const Light& light = scene_.lights[i];
+    const shading::LightSample s = shading::sampleLight(lights_[i], p.position);
     if (s.radiance == vec3(0.f)) continue;  // no contribution: skip its shadow rays
     const float visibility = lightVisibility(rt_, light, receiver, settings_.areaSamples, seed);
     rays_.fetch_add(std::uint64_t(shadowRaysPerReceiver(light, settings_.areaSamples)),

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface.h"
@@ -60,6 +61,7 @@ class WhittedTracer {
   const WorldGeometry& world_;
   const RtScene& rt_;
   WhittedSettings settings_;
+  std::vector<shading::ShadingLight> lights_;  // scene_.lights converted once, not per hit
   mutable std::atomic<std::uint64_t> rays_{0};
   std::function<void(const RayTreeEvent&)> observer_;
 };
