@@ -1,6 +1,7 @@
 #include "passes/registry.h"
 
 #include "engine/core/error.h"
+#include "passes/cpu/no_shadows.h"
 #include "passes/cpu/shade.h"
 #include "passes/raster/env_cube.h"
 #include "passes/raster/env_dynamic_cube.h"
@@ -47,6 +48,9 @@ const PassRegistry& builtinPasses() {
                      {"shadow-map-2048-adaptive", "resolution=2048,bias=adaptive"},
                      {"shadow-map-4096-slope-pcss",
                       "resolution=4096,bias=slope,factor=2,units=2,filter=pcss"}}});
+    r.add<NoShadowsPass>({.name = "no_shadows",
+                          .slot = "visibility",
+                          .summary = "no shadows: V_i = 1 everywhere, the baseline (CPU)"});
     r.add<RtReflectionPass>(
         {.name = "rt_reflection",
          .slot = "reflection",
