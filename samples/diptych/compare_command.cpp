@@ -8,12 +8,14 @@
 #include <functional>
 
 #include "engine/core/error.h"
+#include "engine/core/log.h"
 #include "engine/core/timing.h"
 #include "engine/gl/context.h"
 #include "engine/graph/export.h"
 #include "engine/metrics/metrics.h"
 #include "engine/metrics/signal_metrics.h"
 #include "engine/scene/camera_math.h"
+#include "engine/scene/default_lighting.h"
 #include "engine/scene/load.h"
 #include "passes/registry.h"
 #include "samples/diptych/compare/report.h"
@@ -116,9 +118,10 @@ std::string cacheKey(const std::string& sceneFile, const ReferenceSpec& ref,
                      const FrameSettings& frame) {
   std::ifstream in(sceneFile, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string key = bytes + "|" + ref.recipe().passes[0].params.dump() + "|" + ref.passType +
-                          "|" + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
-                          "|diptych 0.1.0";
+  const std::string key =
+      bytes + "|" + ref.recipe().passes[0].params.dump() + "|" + ref.passType + "|" +
+      std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+      "|diptych 0.1.0|lights v2";  // v2: default lighting, photometric glTF lights
   return fmt::format("{:016x}", std::hash<std::string>{}(key));
 }
 
@@ -140,9 +143,10 @@ void runCompare(const CompareOptions& o) {
   std::vector<Recipe> recipes;
   for (const Variant& v : variants) recipes.push_back(v.build(registry));  // errors before any work
 
-  const Scene scene = loadScene(sceneFile);
+  Scene scene = loadScene(sceneFile);
   const FrameSettings frame{width, height,
                             scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
+  if (auto line = applyLighting(scene, frame.camera, {})) log().warn("{}", *line);
   auto context = gl::createContext(gl::ContextKind::Osmesa, width, height);
   RenderWorld world(scene, context.get());
   const std::filesystem::path dir(o.out);
