@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/tonemap.h"
 
 namespace diptych {
 namespace {
@@ -65,9 +66,17 @@ void writeImage(const std::filesystem::path& path, const Image& image, ToneMap t
   if (!linearFormat) spec.attribute("oiio:ColorSpace", "sRGB");
 
   std::vector<float> encoded = image.pixels;
-  if (!linearFormat) {
+  if (!linearFormat && image.channels >= 3) {
+    // Colour: the tone map works on RGB triples (Reinhard scales by luminance).
+    for (std::size_t p = 0; p < encoded.size(); p += image.channels) {
+      const vec3 display = toneMapPixel(vec3(encoded[p], encoded[p + 1], encoded[p + 2]), tone);
+      for (int c = 0; c < 3; ++c) encoded[p + c] = linearToSrgb(display[c]);
+      for (int c = 3; c < image.channels; ++c)  // alpha stays linear, clamped
+        encoded[p + c] = std::isfinite(encoded[p + c]) ? std::clamp(encoded[p + c], 0.f, 1.f) : 0.f;
+    }
+  } else if (!linearFormat) {
     const float scale = std::exp2(tone.exposure);
-    const bool hasAlpha = image.channels == 4 || image.channels == 2;
+    const bool hasAlpha = image.channels == 2;
     for (std::size_t i = 0; i < encoded.size(); ++i) {
       const bool isAlpha = hasAlpha && int(i % image.channels) == image.channels - 1;
       float v = isAlpha ? encoded[i] : encoded[i] * scale;

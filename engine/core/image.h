@@ -23,10 +23,14 @@ struct Image {
   }
 };
 
-// How a linear image becomes 8-bit display values: multiply by 2^exposure, clamp to [0,1],
-// then encode with the sRGB transfer function (IEC 61966-2-1).
+// How a linear image becomes 8-bit display values: multiply by 2^exposure, apply the operator,
+// clamp to [0,1], then encode with the sRGB transfer function (IEC 61966-2-1). Operators
+// (engine/core/tonemap.h, docs/materials.md): Clamp (none), Reinhard (L / (1 + L) on luminance,
+// Reinhard et al. 2002, eq. 3), AcesFit (Narkowicz 2015 fit of the ACES RRT + ODT).
+enum class ToneOperator { Clamp, Reinhard, AcesFit };
 struct ToneMap {
   float exposure = 0.f;
+  ToneOperator op = ToneOperator::Clamp;
 };
 
 // Reads any format OpenImageIO knows. Values are returned as stored (8-bit PNG/JPEG -> [0,1],

@@ -1,10 +1,12 @@
 #include "engine/rt/surface.h"
 
+#include <cmath>
 #include <string>
 
 #include "engine/core/error.h"
 #include "engine/rt/ray_offset.h"
 #include "engine/rt/texture_sampling.h"
+#include "engine/scene/gltf_pbr.h"
 
 namespace diptych {
 
@@ -24,7 +26,48 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
     const vec4 e = sampleTexture(*t, uv);
     m.emission *= vec3(e.x, e.y, e.z);
   }
+  if (const Texture* t = texture(material.metallicRoughnessTexture)) {
+    // Sampled, not averaged: the glTF inputs at this texel through the same mapping the loader
+    // used for the constants (engine/scene/gltf_pbr.h). C keeps the base-colour texture.
+    const vec4 mr = sampleTexture(*t, uv);
+    const Texture* colour = material.checker ? nullptr : texture(material.colorTexture);
+    const vec3 base = colour ? vec3(sampleTexture(*colour, uv)) : vec3(1.f);
+    const LectureCoefficients k =
+        gltfPbrToLecture(vec3(material.baseColorFactor) * base, material.metallicFactor * mr.z,
+                         material.roughnessFactor * mr.y, material.transmissionFactor, m.ior);
+    m.color = k.color;
+    m.kd = k.kd;
+    m.ks = k.ks;
+    m.exponent = k.exponent;
+    m.specularColor = k.specularColor;
+    m.kps = k.kps;
+    m.mirrorColor = k.mirrorColor;
+    m.kt = k.kt;
+    m.transmitColor = k.transmitColor;
+  }
+  if (const Texture* t = texture(material.occlusionTexture)) {
+    // glTF: occlusion darkens indirect light only; the lecture's ambient k_a is that term.
+    const float ao = sampleTexture(*t, uv).x;
+    m.ka *= 1.f + material.occlusionStrength * (ao - 1.f);
+  }
   return m;
+}
+
+vec3 normalMapped(const Texture& map, float scale, const vec3& n, const vec4& tangent, vec2 uv) {
+  const vec3 nn = glm::length(n) > 0.f ? glm::normalize(n) : n;
+  // Gram-Schmidt: interpolated t and n are no longer orthogonal inside a triangle.
+  vec3 t = vec3(tangent) - nn * glm::dot(nn, vec3(tangent));
+  const float len = glm::length(t);
+  if (!(len > 0.f) || !std::isfinite(len)) return n;
+  t /= len;
+  const vec3 b = glm::cross(nn, t) * (tangent.w < 0.f ? -1.f : 1.f);
+  // glTF 3.9.3: n_ts = (2 texel - 1) * (scale, scale, 1), normalised.
+  const vec4 texel = sampleTexture(map, uv);
+  const vec3 ts =
+      vec3((2.f * texel.x - 1.f) * scale, (2.f * texel.y - 1.f) * scale, 2.f * texel.z - 1.f);
+  const vec3 mapped = ts.x * t + ts.y * b + ts.z * nn;
+  const float mlen = glm::length(mapped);
+  return mlen > 0.f && std::isfinite(mlen) ? mapped / mlen : n;
 }
 
 SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit,
@@ -47,11 +90,15 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, co
   s.frontFacing = glm::dot(s.faceNormal, incoming) <= 0.f;
   s.geometricNormal = s.frontFacing ? s.faceNormal : -s.faceNormal;
   vec3 n = interpolateNormal(mesh, hit.primitive, hit.u, hit.v);
-  if (!s.frontFacing) n = -n;
-  s.shadingNormal = n;
   s.uv = interpolateUv(mesh, hit.primitive, hit.u, hit.v);
   s.material = mesh.material;
-  s.resolved = resolveMaterial(scene, scene.material(mesh.material), s.uv);
+  const Material& material = scene.material(mesh.material);
+  if (material.normalTexture >= 0 && material.normalTexture < int(scene.textures.size()) &&
+      !mesh.tangents.empty())
+    n = normalMapped(scene.textures[material.normalTexture], material.normalScale, n,
+                     interpolateTangent(mesh, hit.primitive, hit.u, hit.v), s.uv);
+  s.shadingNormal = s.frontFacing ? n : -n;  // mapped first: the back sees the same surface
+  s.resolved = resolveMaterial(scene, material, s.uv);
   return s;
 }
 

@@ -42,6 +42,14 @@ Ray spawnRay(const SurfacePoint& p, const vec3& direction);
 
 // The material's parameters at uv: C = color * colorTexture (or the checker, which replaces C),
 // alpha = alpha * colorTexture.a, M_E = emission * emissionTexture.
+// glTF materials with a metallicRoughnessTexture are re-mapped from the texel's metallic and
+// roughness; an occlusionTexture scales k_a (the lecture's ambient, glTF's indirect light).
 shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv);
+
+// A tangent-space normal map applied at uv: n' = normalize(T x + B y + N z) with (x, y, z) =
+// (2 texel - 1) * (scale, scale, 1), T Gram-Schmidt-orthogonalised against n and
+// B = w cross(N, T) (glTF 2.0, 3.9.3 and 3.7.2.1). n is the interpolated normal on the side the
+// front (CCW) side; a degenerate frame returns n unchanged.
+vec3 normalMapped(const Texture& map, float scale, const vec3& n, const vec4& tangent, vec2 uv);
 
 }  // namespace diptych

@@ -330,6 +330,8 @@ void includeGltf(JsonObject& o, const mat4& transform, const Context& ctx, Scene
   for (Material m : part.materials) {
     if (m.colorTexture >= 0) m.colorTexture += textureBase;
     if (m.emissionTexture >= 0) m.emissionTexture += textureBase;
+    for (int* t : {&m.metallicRoughnessTexture, &m.occlusionTexture, &m.normalTexture})
+      if (*t >= 0) *t += textureBase;
     scene.materials.push_back(std::move(m));
   }
   const int allIndex = allMaterial ? lookupMaterial(ctx, o, "material", *allMaterial) : -2;
@@ -492,6 +494,16 @@ Scene loadJsonSceneUnvalidated(const std::filesystem::path& path) {
   scene.sourceFiles.push_back(ctx.file);
   scene.sourceFiles.insert(scene.sourceFiles.end(), ctx.files.begin(), ctx.files.end());
   return scene;
+}
+
+Light parseLightJson(const std::string& text, const std::string& where) {
+  json value;
+  try {
+    value = json::parse(text);
+  } catch (const json::exception& e) {
+    throw InputError(where, "", std::string("malformed JSON: ") + e.what());
+  }
+  return readLight(JsonObject(value, "light", where));
 }
 
 }  // namespace diptych

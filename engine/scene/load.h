@@ -17,4 +17,8 @@ Scene loadScene(const std::filesystem::path& path);
 Scene loadGltfUnvalidated(const std::filesystem::path& path);
 Scene loadJsonSceneUnvalidated(const std::filesystem::path& path);
 
+// One light written as in a JSON scene's "lights" array ('{"type":"point","position":[0,5,0],
+// "intensity":20}'); `where` names the source in errors (e.g. "--light").
+Light parseLightJson(const std::string& text, const std::string& where);
+
 }  // namespace diptych

@@ -91,14 +91,25 @@ struct Material {
   int emissionTexture = -1;        // multiplies M_E
   std::optional<Checker> checker;  // replaces C when present
   bool fromGltfPbr = false;  // true when mapped from metallic-roughness (see docs/scene-format.md)
+  // glTF metallic-roughness inputs, kept so that textured materials can be mapped per hit
+  // (gltfPbrAt in engine/scene/gltf_pbr.h) instead of from one averaged constant.
+  vec4 baseColorFactor{1.f};
+  float metallicFactor = 1.f, roughnessFactor = 1.f, transmissionFactor = 0.f;
+  int metallicRoughnessTexture = -1;  // linear; G = roughness, B = metallic
+  int occlusionTexture = -1;          // linear; R scales k_a and A_G
+  float occlusionStrength = 1.f;
+  int normalTexture = -1;  // linear tangent-space normal map, (2 t - 1) * (scale, scale, 1)
+  float normalScale = 1.f;
   bool castsShadows = true;
 };
 
 enum class LightType { Point, Directional, Spot, QuadArea, DiscArea, SphereArea };
 
-// S_i of the lecture is color * intensity, with glTF units: point/spot in candela (W/sr),
-// directional in lux; area lights give radiance per unit area. Point/spot/area fall off with
-// 1/d^2 (glTF KHR_lights_punctual, range ignored except as a hard cut-off when > 0).
+// S_i of the lecture is color * intensity (/ d^2 for point and spot): the radiance a white
+// Lambertian surface facing the light reflects (docs/materials.md, "Light units"). JSON scenes
+// give it directly; the glTF loader converts KHR_lights_punctual candela and lux to it. Area
+// lights give radiance per unit area. Point/spot/area fall off with 1/d^2 (range ignored except
+// as a hard cut-off when > 0).
 struct Light {
   std::string name;
   LightType type = LightType::Point;

@@ -1,5 +1,7 @@
 #include "engine/scene/world_geometry.h"
 
+#include <cmath>
+
 namespace diptych {
 namespace {
 
@@ -19,6 +21,35 @@ std::vector<vec3> computeVertexNormals(const std::vector<vec3>& p,
 }
 
 }  // namespace
+
+std::vector<vec4> computeVertexTangents(const std::vector<vec3>& p, const std::vector<vec3>& n,
+                                        const std::vector<vec2>& uv,
+                                        const std::vector<std::uint32_t>& idx) {
+  std::vector<vec3> tSum(p.size(), vec3(0.f)), bSum(p.size(), vec3(0.f));
+  for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
+    const std::uint32_t a = idx[t], b = idx[t + 1], c = idx[t + 2];
+    const vec3 e1 = p[b] - p[a], e2 = p[c] - p[a];
+    const vec2 d1 = uv[b] - uv[a], d2 = uv[c] - uv[a];
+    const float det = d1.x * d2.y - d2.x * d1.y;
+    if (!(std::abs(det) > 0.f) || !std::isfinite(det)) continue;  // degenerate uv triangle
+    const float r = 1.f / det;
+    const vec3 dPdu = (e1 * d2.y - e2 * d1.y) * r;
+    const vec3 dPdv = (e2 * d1.x - e1 * d2.x) * r;
+    for (std::uint32_t k : {a, b, c}) {
+      tSum[k] += dPdu;
+      bSum[k] -= dPdv;  // image-up bitangent (see the header)
+    }
+  }
+  std::vector<vec4> out(p.size(), vec4(0.f, 0.f, 0.f, 1.f));
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    vec3 t = tSum[i] - n[i] * glm::dot(n[i], tSum[i]);
+    const float len = glm::length(t);
+    if (!(len > 0.f) || !std::isfinite(len)) continue;  // no uv gradient: left as zero
+    t /= len;
+    out[i] = vec4(t, glm::dot(glm::cross(n[i], t), bSum[i]) < 0.f ? -1.f : 1.f);
+  }
+  return out;
+}
 
 std::size_t WorldGeometry::triangleCount() const {
   std::size_t n = 0;
@@ -55,6 +86,22 @@ WorldGeometry flattenScene(const Scene& scene) {
       w.normals = computeVertexNormals(w.positions, w.indices);
     }
     if (mesh.uvs.size() == mesh.positions.size()) w.uvs = mesh.uvs;
+    if (scene.material(mesh.material).normalTexture >= 0 && !w.uvs.empty()) {
+      if (mesh.tangents.size() == mesh.positions.size()) {
+        const mat3 linear(inst.transform);
+        w.tangents.reserve(mesh.tangents.size());
+        for (const vec4& t : mesh.tangents) {
+          const vec3 moved = linear * vec3(t);
+          const float len = glm::length(moved);
+          // A mirroring transform turns the handedness of the frame over.
+          const float sign = (t.w < 0.f ? -1.f : 1.f) * (w.mirrored ? -1.f : 1.f);
+          w.tangents.push_back(
+              vec4(len > 0.f && std::isfinite(len) ? moved / len : vec3(0.f), sign));
+        }
+      } else {
+        w.tangents = computeVertexTangents(w.positions, w.normals, w.uvs, w.indices);
+      }
+    }
     for (const vec3& p : w.positions) world.bounds.extend(p);
     world.meshes.push_back(std::move(w));
   }
@@ -85,6 +132,14 @@ vec3 geometricNormal(const WorldMesh& m, std::uint32_t prim) {
       glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
   const float len = glm::length(n);
   return len > 0.f ? n / len : vec3(0.f, 1.f, 0.f);
+}
+
+vec4 interpolateTangent(const WorldMesh& m, std::uint32_t prim, float u, float v) {
+  if (m.tangents.empty()) return vec4(0.f, 0.f, 0.f, 1.f);
+  const std::uint32_t* t = &m.indices[3 * std::size_t(prim)];
+  const vec3 xyz = (1.f - u - v) * vec3(m.tangents[t[0]]) + u * vec3(m.tangents[t[1]]) +
+                   v * vec3(m.tangents[t[2]]);
+  return vec4(xyz, m.tangents[t[0]].w);
 }
 
 }  // namespace diptych

@@ -15,6 +15,10 @@ struct WorldMesh {
   std::vector<vec3> positions;         // world space
   std::vector<vec3> normals;           // world space, unit length (computed when the mesh has none)
   std::vector<vec2> uvs;               // empty when the mesh has none
+  // World-space unit tangent (xyz) and handedness w, bitangent = w cross(n, t); filled only for
+  // meshes whose material has a normal map: TANGENT when the file has it (w negated for mirrored
+  // instances), else generated from uv derivatives (computeVertexTangents).
+  std::vector<vec4> tangents;
   std::vector<std::uint32_t> indices;  // winding flipped for mirrored instances
   bool mirrored = false;               // det(transform) < 0
 };
@@ -33,5 +37,18 @@ vec3 interpolatePosition(const WorldMesh& mesh, std::uint32_t primitive, float u
 vec3 interpolateNormal(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
 vec2 interpolateUv(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
 vec3 geometricNormal(const WorldMesh& mesh, std::uint32_t primitive);  // unit, CCW front
+// Interpolated xyz (not normalised) and the w of vertex 0; (0,0,0,1) when there are none.
+vec4 interpolateTangent(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
+
+// Per-vertex tangent frames from uv derivatives (Lengyel 2001, "Computing Tangent Space Basis
+// Vectors for an Arbitrary Mesh"): per triangle T = dP/du and B = -dP/dv (glTF's v grows down
+// the image while a normal map's +Y points up it), summed over the triangles of each vertex,
+// T made orthogonal to n (Gram-Schmidt), w = sign(dot(cross(n, T), B)). MikkTSpace gives the
+// same frames on meshes whose uv charts are not split within a vertex's fan; it differs in
+// weighting (angle, not uv-area) and in splitting vertices at chart seams.
+std::vector<vec4> computeVertexTangents(const std::vector<vec3>& positions,
+                                        const std::vector<vec3>& normals,
+                                        const std::vector<vec2>& uvs,
+                                        const std::vector<std::uint32_t>& indices);
 
 }  // namespace diptych

@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "engine/core/error.h"
+#include "engine/core/log.h"
 #include "engine/core/timing.h"
 #include "engine/gl/context.h"
 #include "engine/graph/device_info.h"
@@ -15,6 +16,7 @@
 #include "engine/metrics/metrics.h"
 #include "engine/metrics/signal_metrics.h"
 #include "engine/scene/camera_math.h"
+#include "engine/scene/default_lighting.h"
 #include "engine/scene/load.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
@@ -150,9 +152,10 @@ void runCompare(const CompareOptions& o) {
   std::vector<Recipe> recipes;
   for (const Variant& v : variants) recipes.push_back(v.build(registry));  // errors before any work
 
-  const Scene scene = loadScene(sceneFile);
+  Scene scene = loadScene(sceneFile);
   const FrameSettings frame{width, height,
                             scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
+  if (auto line = applyLighting(scene, frame.camera, {})) log().warn("{}", *line);
   // One-time costs, measured apart from every frame: context creation, the Embree BVH build, the
   // GL scene upload. Frames (reference and variants alike) are medians after warm-up.
   nlohmann::json oneTime;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,12 +13,14 @@
 #include "engine/core/known.h"
 #include "engine/core/log.h"
 #include "engine/core/timing.h"
+#include "engine/core/tonemap.h"
 #include "engine/gl/context.h"
 #include "engine/graph/device_info.h"
 #include "engine/graph/executor.h"
 #include "engine/graph/export.h"
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
+#include "engine/scene/default_lighting.h"
 #include "engine/scene/load.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
@@ -31,7 +34,8 @@ struct RenderOptions {
   std::string context = "auto";
   std::vector<std::string> slots;
   int frames = 5, warmup = 2;
-  float exposure = 0.f;
+  std::string exposure = "0", tonemap = "clamp";
+  LightingOptions lighting;
   bool verbose = false;
 };
 
@@ -104,15 +108,33 @@ void runRender(const RenderOptions& o) {
   } catch (const Error& e) {
     throw InputError("--context", o.context, e.what());
   }
+  const std::optional<ToneOperator> toneOperator = parseToneOperator(o.tonemap);
+  if (!toneOperator)
+    throw InputError("--tonemap", "", "expected clamp, reinhard or aces, got '" + o.tonemap + "'");
+  std::optional<float> fixedExposure;  // nullopt: auto
+  if (o.exposure != "auto") {
+    std::size_t used = 0;
+    float ev = 0.f;
+    try {
+      ev = std::stof(o.exposure, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != o.exposure.size() || !std::isfinite(ev) || std::abs(ev) > 64.f)
+      throw InputError(
+          "--exposure", "",
+          "expected 'auto' or a number of stops in [-64, 64], got '" + o.exposure + "'");
+    fixedExposure = ev;
+  }
 
-  const Scene scene = loadScene(o.scene);
+  Scene scene = loadScene(o.scene);
   for (const std::string& w : scene.warnings) log().warn("{}", w);
+  const Camera camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds());
+  if (auto line = applyLighting(scene, camera, o.lighting)) log().warn("{}", *line);
   Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);
   for (const std::string& text : o.slots)
     applySlotOverride(recipe, parseSlotOverride(text), builtinPasses());
-  FrameSettings frame{.width = width,
-                      .height = height,
-                      .camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
+  FrameSettings frame{.width = width, .height = height, .camera = camera};
   const CompiledGraph graph = compileGraph(recipe, builtinPasses(), scene, frame, o.outputs);
   for (ResourceId id : graph.outputs)  // refuse before rendering, not after
     if (formatIsInteger(graph.resources[id].desc.format))
@@ -139,7 +161,15 @@ void runRender(const RenderOptions& o) {
     const std::string name = graph.resources[graph.outputs[i]].name;
     std::filesystem::path file(o.out);
     if (i > 0) file.replace_filename(file.stem().string() + "." + name + file.extension().string());
-    writeImage(file, executor.output(name).toImage(), ToneMap{o.exposure});
+    const Image image = executor.output(name).toImage();
+    if (!fixedExposure) {  // from the first output, then the same for every other one
+      fixedExposure = autoExposure(image);
+      std::printf(
+          "--exposure auto: %+.2f EV (log-average luminance of '%s' to 0.18, Reinhard "
+          "et al. 2002)\n",
+          *fixedExposure, name.c_str());
+    }
+    writeImage(file, image, ToneMap{*fixedExposure, *toneOperator});
     std::printf("wrote %s (%s, %dx%d)\n", file.string().c_str(), name.c_str(), width, height);
   }
 
@@ -190,8 +220,18 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--warmup", options->warmup, "Warm-up frames before measuring")
       ->capture_default_str();
   cmd->add_option("--exposure", options->exposure,
-                  "PNG tone map: multiply by 2^exposure, clamp, sRGB")
+                  "PNG/JPEG: multiply by 2^EV before tone mapping; 'auto' maps the log-average "
+                  "luminance to middle grey 0.18 (Reinhard et al. 2002). EXR/HDR stay linear")
       ->capture_default_str();
+  cmd->add_option("--tonemap", options->tonemap,
+                  "PNG/JPEG tone map after exposure: clamp, reinhard or aces (docs/materials.md)")
+      ->capture_default_str();
+  cmd->add_option("--env", options->lighting.environmentFile,
+                  "Equirect environment image (.hdr/.exr); replaces the scene's (see "
+                  "docs/materials.md, default lighting)");
+  cmd->add_option("--light", options->lighting.lightJson,
+                  "Add a light, JSON as in a scene's \"lights\" array, e.g. "
+                  "'{\"type\":\"directional\",\"direction\":[0,-1,0],\"intensity\":3}'");
   cmd->add_option(
          "--context", options->context,
          "OpenGL context: auto (EGL on a GPU, else OSMesa), osmesa, egl (headless) or glfw")

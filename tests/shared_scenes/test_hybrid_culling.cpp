@@ -148,7 +148,10 @@ TEST_P(HybridSharedModel, WithAHeadlightCastsShadowRaysAndStaysFinite) {
   // triangles) can be shadowed. Measured: 2 of 2804 covered pixels on OrientationTest, 0 on the
   // others. Self-shadowing from a bad ray offset would shadow a large fraction.
   EXPECT_LE(shadowed, c.covered / 100) << "covered " << c.covered;
-  EXPECT_GT(lit, c.covered / 2) << "covered " << c.covered;
+  // Metal texels (metallicRoughnessTexture sampled per hit, docs/materials.md) have no diffuse
+  // term, so with a black environment they are black outside the highlight: LightsPunctualLamp
+  // has 360 of 804 covered pixels lit. A quarter still catches a headlight that lights nothing.
+  EXPECT_GT(lit, c.covered / 4) << "covered " << c.covered;
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, HybridSharedModel,

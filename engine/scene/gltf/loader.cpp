@@ -122,6 +122,18 @@ std::vector<int> rootNodes(const tinygltf::Model& model, const std::vector<int>&
   return roots;
 }
 
+// KHR_lights_punctual gives candela (point, spot) and lux (directional); the shading's S_i is the
+// radiance a white Lambertian surface facing the light reflects, E / pi (docs/materials.md,
+// "Light units"). Point and spot: I [W/sr] = cd / 683 lm/W, the SI luminous efficacy at 555 nm
+// that Blender's exporter multiplies by (PBR_WATTS_TO_LUMENS), so S d^2 = cd / (683 pi).
+// Directional: Blender's exporter writes the sun's W/m^2 unchanged as "lux" (and reads it back
+// so), so lux is taken as W/m^2 and S = lux / pi; an SI-lux sun (1e5 lx) needs --exposure auto.
+float photometricToShading(LightType type) {
+  constexpr float kPi = 3.14159265358979f;
+  constexpr float kLumensPerWatt = 683.f;
+  return type == LightType::Directional ? 1.f / kPi : 1.f / (kLumensPerWatt * kPi);
+}
+
 void addLight(const tinygltf::Model& model, int lightIndex, const mat4& world,
               const std::string& file, const std::string& place, Scene& scene) {
   if (lightIndex < 0 || lightIndex >= int(model.lights.size()))
@@ -143,7 +155,7 @@ void addLight(const tinygltf::Model& model, int lightIndex, const mat4& world,
         "unknown light type '" + src.type + "'");
   }
   if (src.color.size() >= 3) light.color = vec3(src.color[0], src.color[1], src.color[2]);
-  light.intensity = float(src.intensity);  // candela (point, spot) or lux (directional)
+  light.intensity = float(src.intensity) * photometricToShading(light.type);
   light.range = float(src.range);
   // Lights sit at the node origin and shine along the node's local -Z.
   light.position = vec3(world * vec4(0.f, 0.f, 0.f, 1.f));

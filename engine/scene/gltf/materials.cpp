@@ -6,14 +6,10 @@
 
 #include "engine/core/error.h"
 #include "engine/scene/gltf/gltf_internal.h"
+#include "engine/scene/gltf_pbr.h"
 
 namespace diptych::gltf {
 namespace {
-
-// Rec. 709 luminance, used to collapse an RGB reflectance into the scalar k_s / k_ps.
-float luminance(const vec3& c) {
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
 
 vec3 toVec3(const std::vector<double>& v, vec3 fallback) {
   return v.size() >= 3 ? vec3(float(v[0]), float(v[1]), float(v[2])) : fallback;
@@ -94,6 +90,20 @@ class TextureTable {
   // Scene texture index for glTF texture `index`, decoded as sRGB colour; `place` names the
   // material slot that uses it, for errors.
   int colorTexture(const tinygltf::TextureInfo& info, const std::string& place) {
+    return texture(info.index, info.texCoord, info.extensions, place, true);
+  }
+  // The same for data textures (metallic-roughness, occlusion, normal): values stay linear.
+  template <typename Info>
+  int dataTexture(const Info& info, const std::string& place) {
+    return texture(info.index, info.texCoord, info.extensions, place, false);
+  }
+
+  int texture(int index, int texCoord, const tinygltf::ExtensionMap& extensions,
+              const std::string& place, bool srgb) {
+    tinygltf::TextureInfo info;
+    info.index = index;
+    info.texCoord = texCoord;
+    info.extensions = extensions;
     if (info.index < 0) return -1;
     if (info.index >= int(model_.textures.size()))
       throw InputError(file_, place + ".index",
@@ -103,7 +113,10 @@ class TextureTable {
                                 std::to_string(info.texCoord) + "; only TEXCOORD_0 is read");
     if (info.extensions.count("KHR_texture_transform"))
       scene_.warnings.push_back(file_ + ": " + place + ": KHR_texture_transform ignored");
-    auto found = made_.find(info.index);
+    // One scene texture per (glTF texture, encoding): an image used both as colour and as data
+    // would be decoded twice, differently.
+    const int key = 2 * info.index + (srgb ? 1 : 0);
+    auto found = made_.find(key);
     if (found != made_.end()) return found->second;
 
     const tinygltf::Texture& tex = model_.textures[info.index];
@@ -122,8 +135,8 @@ class TextureTable {
     }
     Texture out;
     out.name = tex.name.empty() ? texPlace : tex.name;
-    out.image = toLinearRgba(pixels, true);
-    out.srgbSource = true;
+    out.image = toLinearRgba(pixels, srgb);
+    out.srgbSource = srgb;
     if (tex.sampler >= 0) {
       if (tex.sampler >= int(model_.samplers.size()))
         throw InputError(file_, texPlace + ".sampler",
@@ -135,12 +148,12 @@ class TextureTable {
       out.magFilter = filterMode(s.magFilter, out.magFilter);
     }
     scene_.textures.push_back(std::move(out));
-    return made_[info.index] = int(scene_.textures.size()) - 1;
+    return made_[key] = int(scene_.textures.size()) - 1;
   }
 
   // Mean of the green (roughness) and blue (metallic) channels of a metallicRoughnessTexture,
-  // or (1, 1) when there is none. The lecture model has per-material, not per-texel,
-  // coefficients, so a texture contributes its average (documented approximation).
+  // or (1, 1) when there is none: the material's constants (what the GL side shades with);
+  // the CPU side samples the texture per hit instead (engine/rt/surface.cpp).
   vec2 meanRoughnessMetallic(const tinygltf::TextureInfo& info, const std::string& place) {
     if (info.index < 0) return vec2(1.f);
     if (info.index >= int(model_.textures.size()))
@@ -199,29 +212,29 @@ Material convertMaterial(const tinygltf::Material& src, const std::string& place
   if (const tinygltf::Value* ext = extension(src, "KHR_materials_emissive_strength"))
     emissiveStrength = valueNumber(*ext, "emissiveStrength", 1.f);
 
-  // Dielectric reflectance at normal incidence from the IOR, F0 = ((n-1)/(n+1))^2 (0.04 for the
-  // default 1.5); metals reflect their base colour (glTF spec appendix B).
-  const float dielectricF0 = std::pow((m.ior - 1.f) / (m.ior + 1.f), 2.f);
-  const vec3 f0 = glm::mix(vec3(dielectricF0), vec3(base), metallic);
-
-  // Diffuse: metals have none, and transmission replaces diffuse (the glTF dielectric BRDF is
-  // mix(diffuse, transmission, transmissionFactor)).
-  m.color = vec3(base) * (1.f - metallic);
+  const LectureCoefficients k =
+      gltfPbrToLecture(vec3(base), metallic, roughness, transmission, m.ior);
+  m.color = k.color;
   m.ka = 0.f;  // metallic-roughness has no ambient term; A_G is still added by the shading
-  m.kd = 1.f - transmission;
-  m.ks = luminance(f0);
-  m.specularColor = m.ks > 0.f ? f0 / m.ks : vec3(1.f);
-  // Blinn-Phong exponent equivalent to a Beckmann/GGX lobe of width alpha = roughness^2:
-  // e = 2/alpha^2 - 2 (Walter et al. 2007, eq. 30). alpha is clamped to 0.01 so a perfectly
-  // smooth surface gets e = 19998 rather than infinity.
-  const float alpha = std::max(roughness * roughness, 0.01f);
-  m.exponent = std::max(2.f / (alpha * alpha) - 2.f, 1.f);
-  // Mirror fraction: the normal-incidence reflectance, fading out as roughness blurs the mirror.
-  m.kps = m.ks * (1.f - roughness);
-  m.mirrorColor = m.specularColor;
-  m.kt = transmission * (1.f - metallic);
-  m.transmitColor = vec3(base);  // glTF transmission is tinted by the base colour
-
+  m.kd = k.kd;
+  m.ks = k.ks;
+  m.specularColor = k.specularColor;
+  m.exponent = k.exponent;
+  m.kps = k.kps;
+  m.mirrorColor = k.mirrorColor;
+  m.kt = k.kt;
+  m.transmitColor = k.transmitColor;
+  // The inputs, for per-hit mapping of textured materials (engine/rt/surface.cpp).
+  m.baseColorFactor = base;
+  m.metallicFactor = std::clamp(float(pbr.metallicFactor), 0.f, 1.f);
+  m.roughnessFactor = std::clamp(float(pbr.roughnessFactor), 0.f, 1.f);
+  m.transmissionFactor = transmission;
+  m.metallicRoughnessTexture = textures.dataTexture(
+      pbr.metallicRoughnessTexture, place + ".pbrMetallicRoughness.metallicRoughnessTexture");
+  m.occlusionTexture = textures.dataTexture(src.occlusionTexture, place + ".occlusionTexture");
+  m.occlusionStrength = std::clamp(float(src.occlusionTexture.strength), 0.f, 1.f);
+  m.normalTexture = textures.dataTexture(src.normalTexture, place + ".normalTexture");
+  m.normalScale = float(src.normalTexture.scale);
   m.emission = toVec3(src.emissiveFactor, vec3(0.f)) * emissiveStrength;
   m.alpha = base.w;
   m.alphaMode = src.alphaMode == "MASK"    ? AlphaMode::Mask

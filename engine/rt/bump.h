@@ -1,0 +1,30 @@
+#pragma once
+// The lecture's bump mapping (shaders/common/bump.glsl) compiled as C++, plus the finite
+// differences of a greyscale height texture sampled the way the CPU side samples textures.
+#include "engine/rt/shading.h"
+
+namespace diptych::shading {
+#define in
+#define SHADING_FN inline
+#include "shaders/common/bump.glsl"
+#undef SHADING_FN
+#undef in
+}  // namespace diptych::shading
+
+namespace diptych {
+
+// n' at uv for a height texture (red channel, bilinear, the texture's wrap modes): d_u and d_v
+// by the lecture's central differences with step `delta` in uv, scaled by k; then
+// shading::bumpNormal(tu, tv, n, d_u, d_v).
+vec3 bumpNormalFromTexture(const Texture& height, vec2 uv, float k, float delta, const vec3& tu,
+                           const vec3& tv, const vec3& n);
+
+// dP/du and dP/dv of a triangle from its positions and uvs (constant over the triangle, the
+// lecture's "constantes en cada polígono"); zero vectors when the uv triangle is degenerate.
+struct SurfaceTangents {
+  vec3 tu{0.f}, tv{0.f};
+};
+SurfaceTangents triangleTangents(const vec3& p0, const vec3& p1, const vec3& p2, vec2 uv0, vec2 uv1,
+                                 vec2 uv2);
+
+}  // namespace diptych

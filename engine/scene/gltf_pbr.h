@@ -1,0 +1,25 @@
+#pragma once
+// glTF metallic-roughness parameters mapped onto the lecture's coefficients (docs/scene-format.md,
+// "glTF material mapping"; docs/materials.md). One function, used by the glTF loader for the
+// material's constants and by the CPU surface code per hit when a metallicRoughnessTexture is
+// sampled, so both give the same coefficients for the same inputs.
+#include "engine/core/math.h"
+
+namespace diptych {
+
+struct LectureCoefficients {
+  vec3 color{0.f};  // C
+  float kd = 1.f, ks = 0.f, exponent = 1.f;
+  vec3 specularColor{1.f};
+  float kps = 0.f;
+  vec3 mirrorColor{1.f};
+  float kt = 0.f;
+  vec3 transmitColor{1.f};
+};
+
+// base: linear base colour (alpha ignored); metallic, roughness, transmission in [0, 1] (clamped
+// here); ior of the dielectric.
+LectureCoefficients gltfPbrToLecture(vec3 base, float metallic, float roughness, float transmission,
+                                     float ior);
+
+}  // namespace diptych
