@@ -17,7 +17,7 @@
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
@@ -38,14 +38,14 @@ Agreement compareHybridWithReference(const char* sceneFile, int w, int h) {
   recipe.passes.push_back({.name = "reference", .type = "rt_whitted", .place = "test"});
   const FrameSettings frame{w, h, scene.camera};
   const CompiledGraph g = compileGraph(recipe, builtinPasses(), scene, frame,
-                                       {"shade.color", "reference.color", "gbuffer.visibility"});
+                                       {"shade.color", "reference.color", "gbuffer.hits"});
   auto context = gl::createContext(gl::ContextKind::Osmesa, w, h);
   RenderWorld world(scene, context.get());
   GraphExecutor ex(g, world);
   ex.runFrame();
   const Surface& hybrid = ex.output("shade.color");
   const Surface& reference = ex.output("reference.color");
-  const Surface& gbuffer = ex.output("gbuffer.visibility");
+  const Surface& gbuffer = ex.output("gbuffer.hits");
 
   double num = 0, den = 0;
   int mismatched = 0, analyticPixels = 0;
