@@ -183,7 +183,8 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
       break;
     }
     const SurfacePoint p = makeSurfacePoint(
-        scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v}, ray.direction);
+        scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
+        ray.direction);
     const shading::ShadingMaterial& m = p.resolved;
     const vec3 v = -ray.direction;
     out.radiance += throughput * (m.emission + nextEvent(p, v, rng, out.rays));

@@ -9,7 +9,9 @@
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
+#include "engine/rt/analytic_geometry.h"
 #include "engine/rt/texture_sampling.h"
+#include "engine/scene/sdf.h"
 
 namespace diptych {
 namespace {
@@ -91,6 +93,16 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
       if (!m.checker && t >= 0 && t < int(scene->textures.size()))
         data.alphaTexture = &scene->textures[std::size_t(t)];
     }
+    if (mesh.analytic && options.analytic) {  // quadrics and SDF objects
+      data.analytic = &*mesh.analytic;
+      RTCGeometry geom = newAnalyticGeometry(dev, data);
+      rtcCommitGeometry(geom);
+      rtcAttachGeometryByID(scene_, geom, unsigned(id));
+      rtcReleaseGeometry(geom);
+      device.check("adding analytic instance " + std::to_string(id));
+      ++analytic_;
+      continue;
+    }
     const std::size_t triangles = mesh.indices.size() / 3;
     if (triangles == 0 || mesh.positions.empty()) continue;
     RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -133,6 +145,24 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
   device.check("rtcCommitScene");
 }
 
+RtScene::SdfStepStats RtScene::sdfStepStats() const {
+  SdfStepStats s;
+  for (const GeometryData& g : geometry_) {
+    if (!g.analytic || !g.analytic->sdf) continue;
+    const SdfStats& o = g.analytic->sdf->stats;
+    s.rays += o.rays.load(std::memory_order_relaxed);
+    s.steps += o.steps.load(std::memory_order_relaxed);
+    s.capped += o.capped.load(std::memory_order_relaxed);
+    s.maxSteps = std::max(s.maxSteps, o.maxSteps.load(std::memory_order_relaxed));
+  }
+  return s;
+}
+
+void RtScene::resetSdfStepStats() const {
+  for (const GeometryData& g : geometry_)
+    if (g.analytic && g.analytic->sdf) g.analytic->sdf->stats.reset();
+}
+
 RtScene::~RtScene() {
   if (scene_) rtcReleaseScene(scene_);
 }
@@ -154,6 +184,7 @@ std::optional<Hit> RtScene::intersect(const Ray& ray, float tnear, float tfar) c
   hit.v = rh.hit.v;
   hit.t = rh.ray.tfar;
   hit.Ng = vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+  hit.analytic = geometry_[rh.hit.geomID].analytic != nullptr;
   return hit;
 }
 

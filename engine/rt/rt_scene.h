@@ -22,6 +22,7 @@ struct Hit {
   float u = 0.f, v = 0.f;       // Embree barycentrics: u weights vertex 1, v weights vertex 2
   float t = 0.f;                // distance along the ray in units of |direction|
   vec3 Ng{0.f};  // Embree's unnormalised geometric normal; points like the CCW face normal (tested)
+  bool analytic = false;  // user geometry: primitive is the shape's part, (u, v) its uv
 };
 
 // A segment [tnear, tfar] of origin + t * direction. tnear > tfar marks an inactive ray
@@ -38,6 +39,10 @@ struct RtSceneOptions {
   // RTC_SCENE_FLAG_ROBUST: watertight traversal, no missed hits on shared edges or at grazing
   // angles, at some speed cost. Exactness is the engine's reason to trace rays, so it is on.
   bool robust = true;
+  // Instances with an analytic shape are intersected exactly (Embree user geometry) rather
+  // than as their tessellation. Off: every instance is its triangles (what the rasterizer
+  // draws), e.g. to compare the G-buffer with Embree triangle for triangle.
+  bool analytic = true;
 };
 
 class RtScene {
@@ -79,6 +84,7 @@ class RtScene {
   // replaces the colour). AlphaMode::Blend geometry stays an opaque occluder for now.
   struct GeometryData {
     const WorldMesh* mesh = nullptr;
+    const AnalyticInstance* analytic = nullptr;  // set for user geometry
     bool alphaMasked = false;
     float alpha = 1.f;                      // Material::alpha
     float alphaCutoff = 0.5f;               // Material::alphaCutoff
@@ -86,6 +92,17 @@ class RtScene {
     // Coverage of triangle `primitive` at Embree barycentrics (u, v); read-only, thread-safe.
     float coverage(std::uint32_t primitive, float u, float v) const;
   };
+  // Sphere-tracing steps per ray over every SDF object since the last reset (all queries,
+  // closest-hit and occlusion alike, that reached an object's box).
+  struct SdfStepStats {
+    std::uint64_t rays = 0, steps = 0, capped = 0;  // capped: misses by the iteration cap
+    int maxSteps = 0;
+    double meanSteps() const { return rays ? double(steps) / double(rays) : 0.0; }
+  };
+  SdfStepStats sdfStepStats() const;
+  void resetSdfStepStats() const;
+  // Number of instances traced as analytic user geometry.
+  int analyticGeometries() const { return analytic_; }
   // Number of geometries with an alpha-mask filter installed.
   int alphaMaskedGeometries() const { return alphaMasked_; }
 
@@ -95,6 +112,7 @@ class RtScene {
   const RtDevice& device_;
   std::vector<GeometryData> geometry_;  // one per WorldMesh; sized once, addresses are stable
   int alphaMasked_ = 0;
+  int analytic_ = 0;
   RTCScene scene_ = nullptr;
   mutable std::atomic<std::uint64_t> raysTraced_{0};
 };

@@ -1,6 +1,8 @@
 #include "engine/rt/surface.h"
 
+#include <bit>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "engine/core/error.h"
@@ -70,11 +72,73 @@ vec3 normalMapped(const Texture& map, float scale, const vec3& n, const vec4& ta
   return mlen > 0.f && std::isfinite(mlen) ? mapped / mlen : n;
 }
 
+namespace {
+
+// SDF objects: the point is the tracer's (within the tolerance of the surface, outside it);
+// the offset scale is the object's box, as for quadrics. uv: (0, 0), as the polygonisation's.
+SurfacePoint makeSdfPoint(const Scene& scene, const WorldMesh& mesh, const SurfaceHit& hit,
+                          const vec3& incoming) {
+  const AnalyticInstance& a = *mesh.analytic;
+  const dvec3 p(hit.u, hit.v, std::bit_cast<float>(hit.primitive));
+  SurfacePoint s;
+  s.hit = hit;
+  s.position = sdfPosition(a, p);
+  s.positionMagnitude = a.magnitude;
+  s.faceNormal = sdfNormal(a, p);
+  s.frontFacing = glm::dot(s.faceNormal, incoming) <= 0.f;
+  s.geometricNormal = s.frontFacing ? s.faceNormal : -s.faceNormal;
+  s.shadingNormal = s.geometricNormal;
+  s.material = mesh.material;
+  s.resolved = resolveMaterial(scene, scene.material(mesh.material), s.uv);
+  return s;
+}
+
+// The exact surface: position and normal rebuilt from the part's uv in double and rounded once.
+// The offset scale is the shape's world box (as vertexMagnitude is a triangle's): the rounding
+// of the point is at the scale of the shape's coordinates, not of the point's own.
+SurfacePoint makeAnalyticPoint(const Scene& scene, const WorldMesh& mesh, const SurfaceHit& hit,
+                               const vec3& incoming) {
+  if (mesh.analytic && mesh.analytic->sdf) return makeSdfPoint(scene, mesh, hit, incoming);
+  if (!mesh.analytic || int(hit.primitive) >= partCount(mesh.analytic->shape))
+    throw Error("makeSurfacePoint: instance " + std::to_string(hit.instance) +
+                " has no analytic part " + std::to_string(hit.primitive));
+  const AnalyticInstance& a = *mesh.analytic;
+  const int part = int(hit.primitive);
+  SurfacePoint s;
+  s.hit = hit;
+  s.uv = vec2(hit.u, hit.v);
+  s.position = analyticPosition(a, part, s.uv);
+  s.positionMagnitude = a.magnitude;
+  s.faceNormal = analyticNormal(a, part, s.uv);
+  s.frontFacing = glm::dot(s.faceNormal, incoming) <= 0.f;
+  s.geometricNormal = s.frontFacing ? s.faceNormal : -s.faceNormal;
+  s.shadingNormal = s.geometricNormal;  // exact: the gradient is the shading normal
+  s.material = mesh.material;
+  s.resolved = resolveMaterial(scene, scene.material(mesh.material), s.uv);
+  return s;
+}
+
+}  // namespace
+
+SurfaceHit liftToAnalytic(const WorldGeometry& world, const SurfaceHit& hit, const Ray& primary) {
+  if (hit.analytic || hit.instance < 0 || hit.instance >= int(world.meshes.size())) return hit;
+  const WorldMesh& mesh = world.meshes[std::size_t(hit.instance)];
+  if (!mesh.analytic) return hit;
+  const auto exact = intersectAnalytic(*mesh.analytic, primary.origin, primary.direction, 0.f,
+                                       std::numeric_limits<float>::infinity());
+  if (!exact) return hit;
+  if (mesh.analytic->sdf)
+    return {hit.instance, std::bit_cast<std::uint32_t>(float(exact->point.z)), exact->uv.x,
+            exact->uv.y, true};
+  return {hit.instance, std::uint32_t(exact->part), exact->uv.x, exact->uv.y, true};
+}
+
 SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit,
                               const vec3& incoming) {
   if (hit.instance < 0 || hit.instance >= int(world.meshes.size()))
     throw Error("makeSurfacePoint: instance " + std::to_string(hit.instance) + " out of range");
   const WorldMesh& mesh = world.meshes[hit.instance];
+  if (hit.analytic) return makeAnalyticPoint(scene, mesh, hit, incoming);
   if (std::size_t(hit.primitive) >= mesh.indices.size() / 3)
     throw Error("makeSurfacePoint: primitive " + std::to_string(hit.primitive) +
                 " out of range in instance " + std::to_string(hit.instance));

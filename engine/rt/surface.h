@@ -10,10 +10,16 @@
 namespace diptych {
 
 // What identifies a point on the world geometry: Embree's hit, or a visibility-buffer texel.
+// On an instance's analytic shape (WorldMesh::analytic, Embree user geometry) `analytic` is
+// true, `primitive` is the shape's part and (u, v) are its surface parameters (the
+// tessellation's texture coordinates), from which the point is rebuilt exactly. On an SDF
+// object (no parameters) (u, v) are the object-space hit point's x and y and `primitive` holds
+// the bits of its z.
 struct SurfaceHit {
   int instance = -1;
   std::uint32_t primitive = 0;
-  float u = 0.f, v = 0.f;  // Embree barycentrics
+  float u = 0.f, v = 0.f;  // Embree barycentrics, or the shape's uv
+  bool analytic = false;
 };
 
 struct SurfacePoint {
@@ -34,6 +40,14 @@ struct SurfacePoint {
 // Throws Error for an instance or primitive out of range.
 SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit,
                               const vec3& incoming);
+
+// A raster (G-buffer) hit on the tessellation of an analytic instance, moved onto the exact
+// surface: the closest hit of `primary` (the pixel's ray, the one the G-buffer intersected)
+// with that instance's shape, computed by the very function Embree's callback calls, so the
+// hybrid's exact producers shade the point the Whitted reference finds. Any other hit, or a ray
+// that misses the shape (impossible for an inscribed tessellation but for rounding), is
+// returned unchanged.
+SurfaceHit liftToAnalytic(const WorldGeometry& world, const SurfaceHit& hit, const Ray& primary);
 
 // A secondary ray leaving p along the unit `direction`: its origin is offset (offsetRayOrigin,
 // engine/rt/ray_offset.h) along the geometric normal on the side the direction points to, so

@@ -22,7 +22,8 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed) cons
   if (observer_) observer_({ray, depth, hit});
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
   const SurfacePoint p = makeSurfacePoint(
-      scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v}, ray.direction);
+      scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
+      ray.direction);
   return shade(p, -ray.direction, depth, seed);
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "engine/scene/json_reader.h"
+#include "engine/scene/json_sdf.h"
 #include "engine/scene/load.h"
 #include "engine/scene/primitives.h"
 
@@ -247,6 +248,9 @@ Mesh readPolygonMesh(JsonObject& o, const Context& ctx) {
 }
 
 Mesh readShape(JsonObject& o, const std::string& type, const Context& ctx) {
+  const bool quadric = type == "sphere" || type == "disc" || type == "cylinder" || type == "cone";
+  if (!quadric && o.has("geometry"))
+    o.fail("geometry", "only sphere, disc, cylinder and cone have an analytic form");
   if (type == "plane") {
     const json* size = o.find("size");
     const vec2 extent = size ? toVector2(*size, o.pathOf("size"), ctx.file) : vec2(1.f);
@@ -267,23 +271,38 @@ Mesh readShape(JsonObject& o, const std::string& type, const Context& ctx) {
     if (!(size.x > 0.f && size.y > 0.f && size.z > 0.f)) o.fail("size", "must be positive");
     return makeBox(size);
   }
-  if (type == "sphere") {
-    const float radius = positive(o, "radius", 1.f);
-    const ivec2 seg = segmentPair(o, "segments", ivec2(64, 32), ivec2(3, 2));
-    return makeUvSphere(radius, seg.x, seg.y);
-  }
-  if (type == "disc")
-    return makeDisc(positive(o, "radius", 1.f), segmentCount(o, "segments", 64, 3));
-  if (type == "cylinder" || type == "cone") {
-    const float radius = positive(o, "radius", 1.f), height = positive(o, "height", 1.f);
-    const int slices = segmentCount(o, "segments", 64, 3);
-    const bool capped = o.boolean("capped", true);
-    return type == "cylinder" ? makeCylinder(radius, height, slices, capped)
-                              : makeCone(radius, height, slices, capped);
+  if (quadric) {
+    AnalyticShape shape;
+    shape.radius = positive(o, "radius", 1.f);
+    Mesh mesh;
+    if (type == "sphere") {
+      shape.type = ShapeType::Sphere;
+      const ivec2 seg = segmentPair(o, "segments", ivec2(64, 32), ivec2(3, 2));
+      mesh = makeUvSphere(shape.radius, seg.x, seg.y);
+    } else if (type == "disc") {
+      shape.type = ShapeType::Disc;
+      mesh = makeDisc(shape.radius, segmentCount(o, "segments", 64, 3));
+    } else {
+      shape.type = type == "cylinder" ? ShapeType::Cylinder : ShapeType::Cone;
+      shape.height = positive(o, "height", 1.f);
+      const int slices = segmentCount(o, "segments", 64, 3);
+      shape.capped = o.boolean("capped", true);
+      mesh = type == "cylinder" ? makeCylinder(shape.radius, shape.height, slices, shape.capped)
+                                : makeCone(shape.radius, shape.height, slices, shape.capped);
+    }
+    // "geometry": "analytic" -> ray tracers intersect the exact shape, rasterizers draw the
+    // "segments" tessellation; "tessellated" (the default) -> both use the triangles.
+    const std::string geometry = o.string("geometry").value_or("tessellated");
+    if (geometry == "analytic")
+      mesh.analytic = shape;
+    else if (geometry != "tessellated")
+      o.fail("geometry", "must be \"analytic\" or \"tessellated\" (is \"" + geometry + "\")");
+    return mesh;
   }
   if (type == "mesh") return readPolygonMesh(o, ctx);
+  if (type == "sdf") return readSdfObject(o);
   o.fail("type", "unknown object type '" + type +
-                     "' (plane, quad, box, sphere, disc, cylinder, cone, mesh, gltf)");
+                     "' (plane, quad, box, sphere, disc, cylinder, cone, mesh, sdf, gltf)");
 }
 
 int lookupMaterial(const Context& ctx, JsonObject& o, const std::string& key,

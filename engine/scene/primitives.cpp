@@ -179,4 +179,31 @@ Mesh makeCone(float radius, float height, int slices, bool capped) {
   return m;
 }
 
+Scene tessellateAnalytic(const Scene& scene, int segments) {
+  Scene out = scene;
+  for (Mesh& m : out.meshes) {
+    if (!m.analytic) continue;
+    const AnalyticShape s = *m.analytic;
+    Mesh t;
+    switch (s.type) {
+      case ShapeType::Sphere:
+        t = makeUvSphere(s.radius, segments, segments / 2);
+        break;
+      case ShapeType::Disc:
+        t = makeDisc(s.radius, segments);
+        break;
+      case ShapeType::Cylinder:
+        t = makeCylinder(s.radius, s.height, segments, s.capped);
+        break;
+      case ShapeType::Cone:
+        t = makeCone(s.radius, s.height, segments, s.capped);
+        break;
+    }
+    t.name = m.name;
+    t.material = m.material;
+    m = std::move(t);
+  }
+  return out;
+}
+
 }  // namespace diptych

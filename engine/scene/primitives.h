@@ -42,4 +42,9 @@ Mesh makeCylinder(float radius, float height, int slices, bool capped = true);
 // Triangles: slices, plus slices for the base when capped.
 Mesh makeCone(float radius, float height, int slices, bool capped = true);
 
+// The scene with every analytic quadric (Mesh::analytic) replaced by its tessellation at
+// `segments` around (spheres: segments x segments/2), traced as triangles: the "geometry"
+// comparison axis of `diptych compare` (docs/geometry.md). SDF objects are left as they are.
+Scene tessellateAnalytic(const Scene& scene, int segments);
+
 }  // namespace diptych

@@ -4,14 +4,18 @@
 // mutates it after loading.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/core/image.h"
 #include "engine/core/math.h"
+#include "engine/scene/analytic_shape.h"
 
 namespace diptych {
+
+struct SdfObject;  // engine/scene/sdf.h
 
 // An indexed triangle mesh in object space. normals/uvs/tangents are either empty or have one
 // entry per position. Triangles are counter-clockwise when seen from the front.
@@ -23,6 +27,12 @@ struct Mesh {
   std::vector<vec4> tangents;          // xyz tangent, w handedness (glTF convention)
   std::vector<std::uint32_t> indices;  // 3 per triangle
   int material = -1;                   // -1: the default material
+  // Set when the triangles tessellate an analytic shape that ray tracers should intersect
+  // exactly instead (JSON "geometry": "analytic"); rasterizers always draw the triangles.
+  std::optional<AnalyticShape> analytic;
+  // Set for a signed-distance object ("type": "sdf"): ray tracers sphere-trace it; the
+  // triangles are its surface-nets polygonisation.
+  std::shared_ptr<const SdfObject> sdf;
   std::size_t triangleCount() const { return indices.size() / 3; }
 };
 

@@ -1,6 +1,9 @@
 #include "engine/scene/world_geometry.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include "engine/scene/sdf.h"
 
 namespace diptych {
 namespace {
@@ -18,6 +21,59 @@ std::vector<vec3> computeVertexNormals(const std::vector<vec3>& p,
     v = len > 0.f && std::isfinite(len) ? v / len : vec3(0.f, 1.f, 0.f);
   }
   return n;
+}
+
+AnalyticInstance placeShape(const AnalyticShape& shape, std::shared_ptr<const SdfObject> sdf,
+                            const mat4& transform) {
+  AnalyticInstance a;
+  a.shape = shape;
+  a.sdf = std::move(sdf);
+  a.toWorld = dmat4(transform);
+  a.toObject = glm::inverse(a.toWorld);
+  dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (int part = 0; part < analyticPartCount(a); ++part) {
+    dvec3 plo, phi;
+    analyticPartBounds(a, part, plo, phi);
+    for (int corner = 0; corner < 8; ++corner) {
+      const dvec3 c((corner & 1) ? phi.x : plo.x, (corner & 2) ? phi.y : plo.y,
+                    (corner & 4) ? phi.z : plo.z);
+      const dvec3 w = dvec3(a.toWorld * glm::dvec4(c, 1.0));
+      lo = glm::min(lo, w);
+      hi = glm::max(hi, w);
+    }
+  }
+  // Rounded outward so the float box contains the double one.
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    a.bounds.lo[i] = std::nextafter(float(lo[i]), -kInf);
+    a.bounds.hi[i] = std::nextafter(float(hi[i]), kInf);
+  }
+  a.magnitude = glm::max(glm::abs(a.bounds.lo), glm::abs(a.bounds.hi));
+  return a;
+}
+
+// Sphere tracing inside the object's box: the ray is clipped to it by the slab test, so the
+// tracer never marches through empty space outside, and each ray's steps are recorded. The box
+// is padded by 4 tolerances: a box face can touch the surface (a cube, the sponge), and a ray
+// entering there must not start within 2 tolerances of it, where the tracer would take it for a
+// ray leaving the surface (sphereTrace).
+std::optional<ShapeHit> intersectSdf(const SdfObject& s, const dvec3& o, const dvec3& d, float tmin,
+                                     float tmax) {
+  double t0 = tmin, t1 = tmax;
+  const double pad = 4.0 * s.settings.tolerance;
+  for (int i = 0; i < 3; ++i) {
+    const double inv = 1.0 / d[i];
+    double a = (s.lo[i] - pad - o[i]) * inv, b = (s.hi[i] + pad - o[i]) * inv;
+    if (a > b) std::swap(a, b);
+    if (!std::isnan(a)) t0 = std::max(t0, a);
+    if (!std::isnan(b)) t1 = std::min(t1, b);
+  }
+  if (!(t0 <= t1)) return std::nullopt;
+  const SphereTraceResult r = sphereTrace(s.sdf, o, d, t0, t1, s.settings);
+  s.stats.record(r);
+  if (!r.t || float(*r.t) < tmin || float(*r.t) > tmax) return std::nullopt;
+  const dvec3 p = o + *r.t * d;
+  return ShapeHit{*r.t, 0, vec2(float(p.x), float(p.y)), p};
 }
 
 }  // namespace
@@ -49,6 +105,54 @@ std::vector<vec4> computeVertexTangents(const std::vector<vec3>& p, const std::v
     out[i] = vec4(t, glm::dot(glm::cross(n[i], t), bSum[i]) < 0.f ? -1.f : 1.f);
   }
   return out;
+}
+
+int analyticPartCount(const AnalyticInstance& a) {
+  return a.sdf ? 1 : partCount(a.shape);
+}
+
+void analyticPartBounds(const AnalyticInstance& a, int part, dvec3& lo, dvec3& hi) {
+  if (a.sdf) {  // with intersectSdf's padding
+    lo = a.sdf->lo - 4.0 * a.sdf->settings.tolerance;
+    hi = a.sdf->hi + 4.0 * a.sdf->settings.tolerance;
+    return;
+  }
+  partBounds(a.shape, part, lo, hi);
+}
+
+vec3 sdfPosition(const AnalyticInstance& a, const dvec3& p) {
+  return vec3(dvec3(a.toWorld * glm::dvec4(p, 1.0)));
+}
+
+vec3 sdfNormal(const AnalyticInstance& a, const dvec3& p) {
+  const dvec3 n = sdfNormal(a.sdf->sdf, p, a.sdf->settings.tolerance);
+  return vec3(glm::normalize(glm::transpose(glm::dmat3(a.toObject)) * n));
+}
+
+std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
+                                              const vec3& d, float tmin, float tmax) {
+  // An affine map keeps t: object-space o' + t d' is the image of o + t d.
+  const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
+  const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
+  if (a.sdf) return intersectSdf(*a.sdf, oo, od, tmin, tmax);
+  auto hit = part < 0 ? intersectShape(a.shape, oo, od, double(tmin), double(tmax))
+                      : intersectPart(a.shape, part, oo, od, double(tmin), double(tmax));
+  if (hit && !(float(hit->t) >= tmin && float(hit->t) <= tmax)) return std::nullopt;
+  return hit;
+}
+
+std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3& o, const vec3& d,
+                                          float tmin, float tmax) {
+  return intersectAnalyticPart(a, -1, o, d, tmin, tmax);
+}
+
+vec3 analyticPosition(const AnalyticInstance& a, int part, vec2 uv) {
+  return vec3(dvec3(a.toWorld * glm::dvec4(shapePoint(a.shape, part, uv), 1.0)));
+}
+
+vec3 analyticNormal(const AnalyticInstance& a, int part, vec2 uv) {
+  const dvec3 n = glm::transpose(glm::dmat3(a.toObject)) * shapeNormal(a.shape, part, uv);
+  return vec3(glm::normalize(n));
 }
 
 std::size_t WorldGeometry::triangleCount() const {
@@ -103,6 +207,10 @@ WorldGeometry flattenScene(const Scene& scene) {
       }
     }
     for (const vec3& p : w.positions) world.bounds.extend(p);
+    if (mesh.analytic || mesh.sdf) {
+      w.analytic = placeShape(mesh.analytic.value_or(AnalyticShape{}), mesh.sdf, inst.transform);
+      world.bounds.extend(w.analytic->bounds);
+    }
     world.meshes.push_back(std::move(w));
   }
   return world;

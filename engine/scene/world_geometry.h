@@ -3,11 +3,22 @@
 // G-buffer and the Embree scene are both built from these arrays, so a (instance, primitive,
 // barycentrics) triple names the same point on both sides, bit for bit.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "engine/scene/scene.h"
 
 namespace diptych {
+
+// An analytic shape placed by its instance transform. Rays are intersected in object space in
+// double (intersectAnalytic); points and normals go back to world space once, rounded to float.
+struct AnalyticInstance {
+  AnalyticShape shape;
+  std::shared_ptr<const SdfObject> sdf;  // set: the surface is this SDF (shape unused)
+  dmat4 toWorld{1.0}, toObject{1.0};     // the instance transform and its inverse
+  Aabb bounds;                           // world space, rounded outward
+  vec3 magnitude{0.f};  // per-axis max |coordinate| of bounds: the rounding scale of its points
+};
 
 struct WorldMesh {
   int instance = 0;
@@ -21,6 +32,7 @@ struct WorldMesh {
   std::vector<vec4> tangents;
   std::vector<std::uint32_t> indices;  // winding flipped for mirrored instances
   bool mirrored = false;               // det(transform) < 0
+  std::optional<AnalyticInstance> analytic;  // the exact surface, for ray tracers (see Mesh)
 };
 
 struct WorldGeometry {
@@ -30,6 +42,25 @@ struct WorldGeometry {
 };
 
 WorldGeometry flattenScene(const Scene& scene);
+
+// Closest hit of the float world ray o + t d, t in [tmin, tmax], with the placed shape: the ray
+// is taken to object space in double, so Embree's callback and a G-buffer texel lifted onto the
+// shape (liftToAnalytic in engine/rt/surface.h) compute bit-identical hits for the same ray.
+std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3& o, const vec3& d,
+                                          float tmin, float tmax);
+// The one-part variant (an Embree user primitive is one part).
+std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
+                                              const vec3& d, float tmin, float tmax);
+// World point and unit outward normal ((M^-1)^T n, right for mirrors too) at a part's uv.
+vec3 analyticPosition(const AnalyticInstance& a, int part, vec2 uv);
+vec3 analyticNormal(const AnalyticInstance& a, int part, vec2 uv);
+// SDF objects: world point and unit normal (central differences at the tolerance) of an
+// object-space hit point.
+vec3 sdfPosition(const AnalyticInstance& a, const dvec3& objectPoint);
+vec3 sdfNormal(const AnalyticInstance& a, const dvec3& objectPoint);
+int analyticPartCount(const AnalyticInstance& a);
+// Object-space box of one part (the SDF's bounds for SDF objects).
+void analyticPartBounds(const AnalyticInstance& a, int part, dvec3& lo, dvec3& hi);
 
 // Exact world position of a hit: p = (1-u-v) p0 + u p1 + v p2 with Embree's barycentric
 // convention (u weights vertex 1, v weights vertex 2), evaluated in one fixed order.

@@ -16,4 +16,18 @@ inline std::optional<SurfaceHit> hitsTexel(const Surface& hits, int x, int y) {
                     std::bit_cast<float>(hits.u(x, y, 3))};
 }
 
+// The texel as the exact producers see it: a hit on the tessellation of an analytic instance
+// (quadric or SDF) is moved onto the exact surface along the pixel-centre ray the G-buffer traced
+// (liftToAnalytic), so rt_shadows, rt_reflection, rt_transmission and the CPU shade pass shade the
+// point the Whitted reference finds; raster producers keep reading hitsTexel (the triangles).
+inline std::optional<SurfaceHit> exactTexel(const Surface& hits, const WorldGeometry& world,
+                                            const Camera& camera, int x, int y) {
+  auto hit = hitsTexel(hits, x, y);
+  if (hit && world.meshes.at(std::size_t(hit->instance)).analytic) {
+    const int w = hits.desc.width, h = hits.desc.height;
+    hit = liftToAnalytic(world, *hit, primaryRay(camera, w, h, x + 0.5f, y + 0.5f));
+  }
+  return hit;
+}
+
 }  // namespace diptych

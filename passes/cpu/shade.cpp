@@ -41,7 +41,7 @@ void ShadePass::execute(PassContext& c) {
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       const Ray eye = primaryRay(frame.camera, frame.width, frame.height, x + 0.5f, y + 0.5f);
-      const auto hit = hitsTexel(hits, x, y);
+      const auto hit = exactTexel(hits, world.geometry(), frame.camera, x, y);
       vec3 radiance;
       if (!hit) {
         radiance = sampleEnvironment(scene.environment, eye.direction);

@@ -34,7 +34,7 @@ void RtSecondaryPass::execute(PassContext& c) {
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
-      if (const auto hit = hitsTexel(hits, x, y)) {
+      if (const auto hit = exactTexel(hits, world.geometry(), frame.camera, x, y)) {
         const Material& m =
             scene.material(scene.meshes[scene.instances[hit->instance].mesh].material);
         if (reflection ? m.kps > 0.f : m.kt > 0.f) {

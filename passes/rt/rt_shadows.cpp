@@ -39,8 +39,14 @@ void RtShadowsPass::execute(PassContext& c) {
   tbb::parallel_for(0, h, [&](int y) {
     std::size_t i = std::size_t(rowCount[y]);
     for (int x = 0; x < w; ++x) {
-      const auto hit = hitsTexel(hits, x, y);
+      const auto hit = exactTexel(hits, world.geometry(), c.frame().camera, x, y);
       if (!hit) continue;
+      if (hit->analytic) {
+        const SurfacePoint p = makeSurfacePoint(world.scene(), world.geometry(), *hit, vec3(0.f));
+        receivers[i] = {p.position, p.faceNormal, p.positionMagnitude};
+        pixelOf[i++] = std::uint32_t(y * w + x);
+        continue;
+      }
       const WorldMesh& mesh = world.geometry().meshes.at(hit->instance);
       const std::uint32_t* tri = &mesh.indices.at(3 * std::size_t(hit->primitive));
       receivers[i] = {

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <memory>
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
@@ -18,6 +20,7 @@
 #include "engine/scene/camera_math.h"
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/load.h"
+#include "engine/scene/primitives.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
 #include "samples/diptych/compare/report.h"
@@ -153,6 +156,15 @@ void runCompare(const CompareOptions& o) {
   for (const Variant& v : variants) recipes.push_back(v.build(registry));  // errors before any work
 
   Scene scene = loadScene(sceneFile);
+  // The geometry axis joins the defaults where the scene has analytic quadrics.
+  const bool analytic = std::any_of(scene.meshes.begin(), scene.meshes.end(),
+                                    [](const Mesh& m) { return bool(m.analytic); });
+  if (o.variants.empty() && analytic) {
+    for (const Variant& v : geometryVariants()) {
+      variants.push_back(v);
+      recipes.push_back(v.build(registry));
+    }
+  }
   const FrameSettings frame{width, height,
                             scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
   if (auto line = applyLighting(scene, frame.camera, {})) log().warn("{}", *line);
@@ -231,7 +243,18 @@ void runCompare(const CompareOptions& o) {
     const bool hasGbuffer = std::any_of(recipe.passes.begin(), recipe.passes.end(),
                                         [](const RecipePass& p) { return p.type == "gbuffer"; });
     if (!hasGbuffer) outs = {recipe.outputs.front()};
-    const GraphRun run = runGraph(recipe, world, frame, outs, o.warmup, o.frames);
+    // A geometry variant runs on its own world: the scene with the quadrics tessellated.
+    std::unique_ptr<Scene> tessellated;
+    std::unique_ptr<RenderWorld> tessellatedWorld;
+    if (v.tessellation > 0) {
+      tessellated = std::make_unique<Scene>(tessellateAnalytic(scene, v.tessellation));
+      tessellatedWorld = std::make_unique<RenderWorld>(*tessellated, context.get());
+    }
+    RenderWorld& variantWorld = tessellatedWorld ? *tessellatedWorld : world;
+    std::size_t tracedTriangles = 0;
+    for (const WorldMesh& m : variantWorld.geometry().meshes)
+      if (!m.analytic) tracedTriangles += m.indices.size() / 3;
+    const GraphRun run = runGraph(recipe, variantWorld, frame, outs, o.warmup, o.frames);
     ReportVariant rv;
     rv.name = v.name;
     rv.image = run.outputs.at(recipe.outputs.front()).toImage();
@@ -244,6 +267,8 @@ void runCompare(const CompareOptions& o) {
     rv.result = {{"name", v.name},
                  {"recipe", v.recipeFile.empty() ? "<built-in hybrid>" : v.recipeFile},
                  {"slots", v.slots},
+                 {"tessellation", v.tessellation},
+                 {"traced_triangles", tracedTriangles},
                  {"total_ms", run.totalMs},
                  {"first_frame_ms", run.firstFrameMs},
                  {"pass_ms", run.passMs},

@@ -4,7 +4,8 @@ file(WRITE "${WORK_DIR}/variants.json" "{\"variants\": [
   {\"name\": \"reference-self\", \"recipe\": \"${SOURCE_DIR}/samples/graphs/whitted.json\"},
   {\"name\": \"hybrid-exact\"},
   {\"name\": \"sm-256\", \"slots\": [\"visibility=shadow_map:resolution=256,bias=slope\"]},
-  {\"name\": \"sm-4096\", \"slots\": [\"visibility=shadow_map:resolution=4096,bias=slope\"]}]}")
+  {\"name\": \"sm-4096\", \"slots\": [\"visibility=shadow_map:resolution=4096,bias=slope\"]},
+  {\"name\": \"geometry-16\", \"tessellation\": 16}]}")
 expect_success(compare ARGS compare "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --variants variants.json
                --size 192x144 --frames 1 --warmup 1 --out cmp
                FILES cmp/results.json cmp/results.csv cmp/report.html cmp/plot.svg)

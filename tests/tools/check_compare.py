@@ -23,7 +23,7 @@ def main():
     with open(os.path.join(out, "results.json")) as f:
         results = json.load(f)
     variants = {v["name"]: v for v in results["variants"]}
-    expected = ["reference-self", "hybrid-exact", "sm-256", "sm-4096"]
+    expected = ["reference-self", "hybrid-exact", "sm-256", "sm-4096", "geometry-16"]
     if sorted(variants) != sorted(expected):
         fail("variants %s, expected %s" % (sorted(variants), expected))
     for name in ["plot.svg", "plot.png", "report.html", "results.csv", "images/reference.exr",
@@ -46,6 +46,15 @@ def main():
     exact = variants["hybrid-exact"]["metrics"]
     if not exact["relmse"] < 1e-6 or not exact["flip_mean"] < 1e-3:
         fail("the all-exact hybrid must score ~0 against the Whitted reference: %s" % exact)
+    # The geometry axis: the analytic sphere traced as a 16 x 8 tessellation (224 triangles, plus
+    # the plane's 2) is measurably wrong where the exact hybrid is not.
+    geo = variants["geometry-16"]
+    if geo["tessellation"] != 16 or geo["traced_triangles"] != 226:
+        fail("geometry-16: tessellation %s, traced triangles %s (expected 16, 226)" %
+             (geo["tessellation"], geo["traced_triangles"]))
+    if not geo["metrics"]["rmse"] > 10 * max(exact["rmse"], 1e-9):
+        fail("geometry-16 (rmse %g) must score clearly worse than the exact hybrid (%g)" %
+             (geo["metrics"]["rmse"], exact["rmse"]))
     for metric in ["rmse", "flip_mean"]:
         lo, hi = variants["sm-4096"]["metrics"][metric], variants["sm-256"]["metrics"][metric]
         if not hi > lo:

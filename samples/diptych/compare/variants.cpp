@@ -42,6 +42,13 @@ std::vector<Variant> defaultVariants(const PassRegistry& registry) {
   return out;
 }
 
+std::vector<Variant> geometryVariants() {
+  std::vector<Variant> out;
+  for (int segments : {16, 64, 256})
+    out.push_back({"geometry-" + std::to_string(segments), "", {}, segments});
+  return out;
+}
+
 std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& registry) {
   if (std::filesystem::path(spec).extension() == ".json") {
     std::ifstream in(spec);
@@ -65,7 +72,7 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
       if (!v.is_object() || !v.contains("name") || !v["name"].is_string())
         throw InputError(spec, place, "expected an object with a \"name\"");
       for (const auto& [key, value] : v.items())
-        if (key != "name" && key != "recipe" && key != "slots")
+        if (key != "name" && key != "recipe" && key != "slots" && key != "tessellation")
           throw InputError(spec, place + "." + key, "unknown key");
       Variant variant{v["name"].get<std::string>(), "", {}};
       if (!names.insert(variant.name).second)
@@ -83,11 +90,18 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
           variant.slots.push_back(s.get<std::string>());
         }
       }
+      if (v.contains("tessellation")) {
+        const auto& t = v["tessellation"];
+        if (!t.is_number_integer() || t.get<long long>() < 3 || t.get<long long>() > 4096)
+          throw InputError(spec, place + ".tessellation", "expected an integer in 3..4096");
+        variant.tessellation = t.get<int>();
+      }
       out.push_back(variant);
     }
     return out;
   }
-  const std::vector<Variant> all = defaultVariants(registry);
+  std::vector<Variant> all = defaultVariants(registry);
+  for (const Variant& v : geometryVariants()) all.push_back(v);
   std::vector<Variant> out;
   std::size_t start = 0;
   while (start <= spec.size()) {

@@ -12,12 +12,18 @@ namespace diptych::cli {
 
 struct Variant {
   std::string name;
-  std::string recipeFile;                            // empty: the built-in hybrid recipe
-  std::vector<std::string> slots;                    // --slot overrides, "SLOT=TYPE[:k=v,...]"
+  std::string recipeFile;          // empty: the built-in hybrid recipe
+  std::vector<std::string> slots;  // --slot overrides, "SLOT=TYPE[:k=v,...]"
+  // > 0: the scene's analytic quadrics are traced as tessellations of this many segments
+  // (tessellateAnalytic), the "geometry" axis; 0: as the scene says.
+  int tessellation = 0;
   Recipe build(const PassRegistry& registry) const;  // recipe with the overrides applied
 };
 
 std::vector<Variant> defaultVariants(const PassRegistry& registry);
+// The geometry axis, added to the defaults when the scene has analytic quadrics: the all-exact
+// hybrid with them tessellated at 16, 64 and 256 segments.
+std::vector<Variant> geometryVariants();
 // A .json file ({"variants": [{"name", "recipe"?, "slots"?}]}) or comma-separated names from
 // the default set. Throws InputError naming the file/element or the unknown name.
 std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& registry);

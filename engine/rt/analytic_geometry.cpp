@@ -1,0 +1,98 @@
+#include "engine/rt/analytic_geometry.h"
+
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace diptych {
+namespace {
+
+const AnalyticInstance& shapeOf(void* userPtr) {
+  return *static_cast<const RtScene::GeometryData*>(userPtr)->analytic;
+}
+
+void boundsCallback(const RTCBoundsFunctionArguments* args) {
+  const AnalyticInstance& a = shapeOf(args->geometryUserPtr);
+  dvec3 lo, hi, wlo(std::numeric_limits<double>::max()), whi(-std::numeric_limits<double>::max());
+  analyticPartBounds(a, int(args->primID), lo, hi);
+  for (int corner = 0; corner < 8; ++corner) {
+    const dvec3 c((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                  (corner & 4) ? hi.z : lo.z);
+    const dvec3 w = dvec3(a.toWorld * glm::dvec4(c, 1.0));
+    wlo = glm::min(wlo, w);
+    whi = glm::max(whi, w);
+  }
+  // Rounded outward, so the float box holds the double one; a flat part (disc) gets a box of
+  // nonzero width from the rounding, which Embree's traversal needs no more than that.
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  RTCBounds* b = args->bounds_o;
+  b->lower_x = std::nextafter(float(wlo.x), -kInf);
+  b->lower_y = std::nextafter(float(wlo.y), -kInf);
+  b->lower_z = std::nextafter(float(wlo.z), -kInf);
+  b->upper_x = std::nextafter(float(whi.x), kInf);
+  b->upper_y = std::nextafter(float(whi.y), kInf);
+  b->upper_z = std::nextafter(float(whi.z), kInf);
+}
+
+// Ray i of a packet as our types.
+struct PacketRay {
+  vec3 origin, direction;
+  float tnear, tfar;
+};
+PacketRay readRay(RTCRayN* rays, unsigned n, unsigned i) {
+  return {vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i)),
+          vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i)),
+          RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i)};
+}
+
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+  const AnalyticInstance& a = shapeOf(args->geometryUserPtr);
+  const unsigned n = args->N;
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
+  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
+  const int part = int(args->primID);
+  for (unsigned i = 0; i < n; ++i) {
+    if (args->valid[i] != -1) continue;
+    const PacketRay r = readRay(rays, n, i);
+    const auto hit = intersectAnalyticPart(a, part, r.origin, r.direction, r.tnear, r.tfar);
+    if (!hit) continue;
+    // SDF hits carry their object-space point: x, y as (u, v), z's bits as the primitive id
+    // (SurfaceHit's encoding, engine/rt/surface.h).
+    const vec3 normal = a.sdf ? sdfNormal(a, hit->point) : analyticNormal(a, part, hit->uv);
+    const unsigned primitive = a.sdf ? std::bit_cast<unsigned>(float(hit->point.z)) : args->primID;
+    RTCRayN_tfar(rays, n, i) = float(hit->t);
+    RTCHitN_Ng_x(hits, n, i) = normal.x;
+    RTCHitN_Ng_y(hits, n, i) = normal.y;
+    RTCHitN_Ng_z(hits, n, i) = normal.z;
+    RTCHitN_u(hits, n, i) = hit->uv.x;
+    RTCHitN_v(hits, n, i) = hit->uv.y;
+    RTCHitN_primID(hits, n, i) = primitive;
+    RTCHitN_geomID(hits, n, i) = args->geomID;
+    RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
+  }
+}
+
+void occludedCallback(const RTCOccludedFunctionNArguments* args) {
+  const AnalyticInstance& a = shapeOf(args->geometryUserPtr);
+  const unsigned n = args->N;
+  for (unsigned i = 0; i < n; ++i) {
+    if (args->valid[i] != -1) continue;
+    const PacketRay r = readRay(args->ray, n, i);
+    if (intersectAnalyticPart(a, int(args->primID), r.origin, r.direction, r.tnear, r.tfar))
+      RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();  // Embree: hit
+  }
+}
+
+}  // namespace
+
+RTCGeometry newAnalyticGeometry(RTCDevice device, RtScene::GeometryData& data) {
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geom, unsigned(analyticPartCount(*data.analytic)));
+  rtcSetGeometryUserData(geom, &data);
+  rtcSetGeometryBoundsFunction(geom, boundsCallback, &data);
+  rtcSetGeometryIntersectFunction(geom, intersectCallback);
+  rtcSetGeometryOccludedFunction(geom, occludedCallback);
+  return geom;
+}
+
+}  // namespace diptych
