@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/json_text.h"
 
 namespace diptych {
 
@@ -20,17 +21,18 @@ double PassParams::number(const std::string& key, double fallback, double lo, do
   read_.insert(key);
   if (!values_.contains(key)) return fallback;
   const auto& v = values_.at(key);
-  if (!v.is_number()) fail(key, "expected a number, got " + v.dump());
+  if (!v.is_number()) fail(key, "expected a number, got " + describeJson(v));
   const double d = v.get<double>();
   if (!std::isfinite(d) || d < lo || d > hi)
-    fail(key, "value " + v.dump() + " is outside [" + nlohmann::json(lo).dump() + ", " +
+    fail(key, "value " + describeJson(v) + " is outside [" + nlohmann::json(lo).dump() + ", " +
                   nlohmann::json(hi).dump() + "]");
   return d;
 }
 
 int PassParams::integer(const std::string& key, int fallback, int lo, int hi) const {
   const double d = number(key, fallback, lo, hi);
-  if (d != std::floor(d)) fail(key, "expected a whole number, got " + values_.at(key).dump());
+  if (d != std::floor(d))
+    fail(key, "expected a whole number, got " + describeJson(values_.at(key)));
   return int(d);
 }
 
