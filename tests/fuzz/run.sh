@@ -9,6 +9,6 @@ mkdir -p "$work/corpus" "$work/crashes"
 seeds=()
 for d in "$@"; do [ -e "$d" ] && seeds+=("$d"); done
 dict=$(dirname "$0")/json.dict
-exec "$harness" -max_total_time="$seconds" -max_len=65536 -timeout=20 -rss_limit_mb=4096 \
+exec "$harness" -max_total_time="$seconds" -max_len=65536 -timeout=60 -rss_limit_mb=4096 \
   -dict="$dict" -artifact_prefix="$work/crashes/" -print_final_stats=1 \
   "$work/corpus" "${seeds[@]}"
