@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/input_file.h"
 #include "engine/core/tonemap.h"
 
 namespace diptych {
@@ -17,6 +18,16 @@ Image readFrom(OIIO::ImageInput* in, const std::string& name) {
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw InputError(name, "", "image has no pixels");
+  // A header may claim any size; refuse before allocating (docs/robustness.md).
+  if (spec.width > kMaxImageSide || spec.height > kMaxImageSide || spec.nchannels > 64 ||
+      std::uint64_t(spec.width) * std::uint64_t(spec.height) * std::uint64_t(spec.nchannels) >
+          kMaxImageValues)
+    throw InputError(name, "",
+                     "image is " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                         "x" + std::to_string(spec.nchannels) + "; the limit is " +
+                         std::to_string(kMaxImageSide) + " per side, 64 channels and " +
+                         std::to_string(kMaxImageValues) + " values");
+  if (spec.deep) throw InputError(name, "", "deep images are not supported");
   Image img(spec.width, spec.height, spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
     throw InputError(name, "", "cannot decode image: " + in->geterror());
@@ -33,7 +44,7 @@ std::string lowerExtension(const std::filesystem::path& p) {
 }  // namespace
 
 Image readImage(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) throw InputError(path.string(), "", "file not found");
+  checkInputFile(path, kMaxBinaryFileBytes);
   auto in = OIIO::ImageInput::open(path.string());
   return readFrom(in.get(), path.string());
 }

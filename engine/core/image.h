@@ -1,6 +1,7 @@
 #pragma once
 // A float image with interleaved channels, read and written through OpenImageIO.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -33,8 +34,13 @@ struct ToneMap {
   ToneOperator op = ToneOperator::Clamp;
 };
 
-// Reads any format OpenImageIO knows. Values are returned as stored (8-bit PNG/JPEG -> [0,1],
-// still sRGB-encoded; HDR/EXR -> linear). Throws InputError naming the file on failure.
+// Largest image read: 32768 per side and 2^28 values (1 GiB as float).
+constexpr int kMaxImageSide = 32768;
+constexpr std::uint64_t kMaxImageValues = std::uint64_t(1) << 28;
+
+// Reads any format OpenImageIO knows (a regular file of at most kMaxBinaryFileBytes). Values are
+// returned as stored (8-bit PNG/JPEG -> [0,1], still sRGB-encoded; HDR/EXR -> linear). Throws
+// InputError naming the file on failure.
 Image readImage(const std::filesystem::path& path);
 // Decodes an in-memory encoded image (e.g. a PNG embedded in a .glb). `name` is used in errors.
 Image readImageFromMemory(const std::string& name, const void* data, std::size_t size);

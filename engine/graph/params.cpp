@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "engine/core/error.h"
+#include "engine/core/json_text.h"
 #include "engine/core/known.h"
 
 namespace diptych {
@@ -72,13 +73,13 @@ void PassParams::check(const ParamSpec& spec, const nlohmann::json& v) const {
   switch (spec.type) {
     case ParamSpec::Type::Number:
     case ParamSpec::Type::Integer: {
-      if (!v.is_number()) fail(key, "expected a number, got " + v.dump());
+      if (!v.is_number()) fail(key, "expected a number, got " + describeJson(v));
       const double d = v.get<double>();
       if (!std::isfinite(d) || d < spec.lo || d > spec.hi)
-        fail(key, "value " + v.dump() + " is outside [" + nlohmann::json(spec.lo).dump() + ", " +
-                      nlohmann::json(spec.hi).dump() + "]");
+        fail(key, "value " + describeJson(v) + " is outside [" + nlohmann::json(spec.lo).dump() +
+                      ", " + nlohmann::json(spec.hi).dump() + "]");
       if (spec.type == ParamSpec::Type::Integer && d != std::floor(d))
-        fail(key, "expected a whole number, got " + v.dump());
+        fail(key, "expected a whole number, got " + describeJson(v));
       return;
     }
     case ParamSpec::Type::Boolean:

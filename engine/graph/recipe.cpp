@@ -1,9 +1,10 @@
 #include "engine/graph/recipe.h"
 
-#include <fstream>
 #include <set>
 
 #include "engine/core/error.h"
+#include "engine/core/input_file.h"
+#include "engine/core/json_text.h"
 
 namespace diptych {
 namespace {
@@ -84,16 +85,8 @@ Recipe parseRecipe(const nlohmann::json& json, const std::string& file) {
 }
 
 Recipe loadRecipe(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string(), "", "cannot open recipe (file not found?)");
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path.string(), "byte " + std::to_string(e.byte),
-                     std::string("malformed JSON: ") + e.what());
-  }
-  return parseRecipe(json, path.string());
+  const std::string text = readInputFile(path, kMaxJsonFileBytes);
+  return parseRecipe(parseJsonText(text, path.string()), path.string());
 }
 
 }  // namespace diptych

@@ -72,6 +72,12 @@ constexpr double kFeatureWidth = 0.082;  // degrees: width of the edge/point fea
 // One term a * sqrt(pi / b) * exp(-pi^2 r^2 / b) of the spatial CSF approximations (r in
 // degrees). The paper's table: achromatic (1, 0.0047), red-green (1, 0.0053), blue-yellow
 // (34.1, 0.04) + (13.5, 0.025).
+// ceil(extent) as a kernel radius; computed in double so that no extent overflows an int.
+// ppd is range-checked (kMaxFlipPpd) before any filter is built, so this is only a backstop.
+int kernelRadius(double extent) {
+  return int(std::clamp(std::ceil(extent), 1.0, 0.5 * kMaxFlipPpd));
+}
+
 struct CsfTerm {
   double a, b;
 };
@@ -111,7 +117,7 @@ struct Features {
 // weights scaled to sum 1 and its negative weights to sum -1, as the paper specifies.
 Features detectFeatures(const Plane& grey, double ppd) {
   const double sigma = 0.5 * kFeatureWidth * ppd;
-  const int radius = int(std::ceil(3 * sigma));
+  const int radius = kernelRadius(3 * sigma);
   const std::vector<double> g = gaussianKernel(sigma, radius);
   std::vector<double> d1(g.size()), d2(g.size());
   for (int i = -radius; i <= radius; ++i) {
@@ -150,7 +156,7 @@ Prepared prepare(const std::array<Plane, 3>& rgb, double ppd) {
   }
   // One radius for all channels, from the widest Gaussian (b = 0.04): 3 standard deviations.
   const double bMax = 0.04;
-  const int radius = int(std::ceil(3 * std::sqrt(bMax / (2 * kPi * kPi)) * ppd));
+  const int radius = kernelRadius(3 * std::sqrt(bMax / (2 * kPi * kPi)) * ppd);
   Prepared p;
   p.filtered[0] = csfFilter(ycc[0], {{1, 0.0047}}, ppd, radius);
   p.filtered[1] = csfFilter(ycc[1], {{1, 0.0053}}, ppd, radius);

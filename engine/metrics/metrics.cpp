@@ -1,4 +1,6 @@
 // computeMetrics: the chosen metric groups, with the parameters they used stated beside them.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -32,6 +34,9 @@ bool withinUnitRange(const Image& image) {
 }
 
 FlipResult flipFor(const Image& test, const Image& reference, double ppd) {
+  if (!(ppd >= kMinFlipPpd && ppd <= kMaxFlipPpd))
+    throw InputError("flip", "pixels per degree",
+                     fmt::format("{:g} is outside [{:g}, {:g}]", ppd, kMinFlipPpd, kMaxFlipPpd));
   // LDR-FLIP is defined for display-referred images; anything outside [0, 1] is HDR.
   return withinUnitRange(test) && withinUnitRange(reference) ? ldrFlip(test, reference, ppd)
                                                              : hdrFlip(test, reference, ppd);

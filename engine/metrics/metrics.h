@@ -12,6 +12,11 @@
 
 namespace diptych {
 
+// FLIP pixels per degree accepted (docs/robustness.md): 1 (a thumbnail seen from far away) to
+// 1000 (beyond any display); the filter radii grow as 0.135 * ppd pixels, so 1e9 would mean
+// kernels of 1e8 taps and minutes per image. Outside the range computeMetrics throws InputError.
+constexpr double kMinFlipPpd = 1.0, kMaxFlipPpd = 1000.0;
+
 struct MetricOptions {
   // PSNR peak: the reference's maximum value by default (stated in the result as "psnr_peak");
   // set > 0 to force one (1.0 for LDR images).

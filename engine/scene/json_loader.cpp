@@ -1,14 +1,16 @@
 // The Diptych JSON scene format (docs/scene-format.md): camera, ambient, environment, named
 // materials with the lecture's coefficients, lights, and objects (tessellated analytic shapes,
 // explicit polygon meshes, included glTF files). Every error names the JSON path.
-#include <fstream>
 #include <map>
-#include <sstream>
+
+#include "engine/core/input_file.h"
+#include "engine/core/json_text.h"
 
 #include "engine/scene/json_reader.h"
 #include "engine/scene/json_sdf.h"
 #include "engine/scene/load.h"
 #include "engine/scene/primitives.h"
+#include "engine/scene/validate.h"
 
 namespace diptych {
 namespace {
@@ -65,6 +67,10 @@ ivec2 segmentPair(JsonObject& o, const std::string& key, ivec2 fallback, ivec2 m
   if (glm::any(glm::lessThan(out, minimum)) || glm::any(glm::greaterThan(out, ivec2(kMaxSegments))))
     o.fail(key,
            "must be between " + std::to_string(minimum.x) + " and " + std::to_string(kMaxSegments));
+  // Refused before tessellating: a 4096 x 4096 grid is 33M triangles (validate.h kMaxTriangles).
+  if (2 * std::size_t(out.x) * std::size_t(out.y) > kMaxTriangles)
+    o.fail(key, "[" + std::to_string(out.x) + ", " + std::to_string(out.y) + "] makes more than " +
+                    std::to_string(kMaxTriangles) + " triangles");
   return out;
 }
 
@@ -234,10 +240,12 @@ Mesh readPolygonMesh(JsonObject& o, const Context& ctx) {
     std::vector<std::uint32_t> poly;
     for (std::size_t k = 0; k < faces[f].size(); ++k) {
       const json& v = faces[f][k];
-      if (!v.is_number_integer() || v.get<long long>() < 0 ||
-          v.get<long long>() >= (long long)mesh.positions.size())
+      if (!v.is_number_integer())
         throw InputError(ctx.file, indexed(place, k),
-                         "vertex index " + v.dump() + " is out of range (" +
+                         "expected an integer vertex index, found " + describeJson(v));
+      if (v.get<long long>() < 0 || v.get<long long>() >= (long long)mesh.positions.size())
+        throw InputError(ctx.file, indexed(place, k),
+                         "vertex index " + describeJson(v) + " is out of range (" +
                              std::to_string(mesh.positions.size()) + " vertices)");
       poly.push_back(v.get<std::uint32_t>());
     }
@@ -460,23 +468,12 @@ void readEnvironment(JsonObject o, const Context& ctx, Scene& scene) {
 }
 
 json parseFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot open file");
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return json::parse(text.str());
-  } catch (const json::exception& e) {
-    // Syntax errors carry line and column; a number literal that overflows a double (1e999) is
-    // rejected here by nlohmann ("number overflow"), before any path is known.
-    throw InputError(path.string(), "", std::string("malformed JSON: ") + e.what());
-  }
+  return parseJsonText(readInputFile(path, kMaxJsonFileBytes), path.string());
 }
 
 }  // namespace
 
 Scene loadJsonSceneUnvalidated(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) throw InputError(path.string(), "", "file not found");
   Context ctx{path.string(), path.parent_path(), {}, false};
   const json document = parseFile(path);
   JsonObject top(document, "", ctx.file);

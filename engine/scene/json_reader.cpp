@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "engine/core/json_text.h"
+
 namespace diptych::jsonread {
 
 std::string describeType(const json& v) {
@@ -15,7 +17,7 @@ float toNumber(const json& v, const std::string& path, const std::string& file) 
   const double d = v.get<double>();
   const float f = float(d);
   if (!std::isfinite(d) || !std::isfinite(f))
-    throw InputError(file, path, "non-finite number (" + v.dump() + ")");
+    throw InputError(file, path, "non-finite number (" + describeJson(v) + ")");
   return f;
 }
 
@@ -77,7 +79,7 @@ float JsonObject::requiredNumber(const std::string& key) {
 std::optional<int> JsonObject::integer(const std::string& key) {
   const json* v = find(key);
   if (!v) return std::nullopt;
-  if (!v->is_number_integer()) fail(key, "expected an integer, found " + v->dump());
+  if (!v->is_number_integer()) fail(key, "expected an integer, found " + describeJson(*v));
   const long long i = v->get<long long>();
   if (i < -(1ll << 30) || i > (1ll << 30)) fail(key, "integer out of range");
   return int(i);

@@ -1,6 +1,9 @@
 #include "engine/scene/validate.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <glm/gtx/component_wise.hpp>
 
 #include "engine/core/error.h"
 
@@ -45,6 +48,21 @@ class SceneChecker {
   void nonNegative(const vec3& v, const std::string& place) const {
     finiteValue(v, place);
     if (v.x < 0.f || v.y < 0.f || v.z < 0.f) fail(place, "components must not be negative");
+  }
+  // A non-negative value (or each component) at most `limit`.
+  template <typename T>
+  void bounded(const T& v, float limit, const std::string& place) const {
+    nonNegative(v, place);
+    if (glm::compMax(vec3(v)) > limit)
+      fail(place, fmt::format("must be at most {:g} (is {:g})", limit, glm::compMax(vec3(v))));
+  }
+  // Each component's magnitude at most `limit`.
+  template <typename T>
+  void magnitude(const T& v, float limit, const std::string& place) const {
+    finiteValue(v, place);
+    if (glm::compMax(glm::abs(vec3(v))) > limit)
+      fail(place, fmt::format("magnitude must be at most {:g} (is {:g})", limit,
+                              glm::compMax(glm::abs(vec3(v)))));
   }
   [[noreturn]] void fail(const std::string& place, const std::string& message) const {
     throw InputError(file_, place, message);
@@ -107,20 +125,20 @@ void checkMesh(Mesh& mesh, std::size_t index, const Scene& scene, const SceneChe
 void checkMaterial(const Material& m, std::size_t index, const Scene& scene,
                    const SceneChecker& check) {
   const std::string place = "materials[" + std::to_string(index) + "] '" + m.name + "'";
-  check.nonNegative(m.color, place + " color");
-  check.nonNegative(m.ka, place + " ka");
-  check.nonNegative(m.kd, place + " kd");
-  check.nonNegative(m.ks, place + " ks");
-  check.nonNegative(m.exponent, place + " exponent");
-  check.nonNegative(m.specularColor, place + " specular_color");
-  check.nonNegative(m.kps, place + " kps");
-  check.nonNegative(m.mirrorColor, place + " mirror_color");
-  check.nonNegative(m.kt, place + " kt");
-  check.nonNegative(m.transmitColor, place + " transmit_color");
-  check.nonNegative(m.emission, place + " emission");
-  check.nonNegative(m.thickness, place + " thickness");
+  check.bounded(m.color, kMaxReflectance, place + " color");
+  check.bounded(m.ka, kMaxReflectance, place + " ka");
+  check.bounded(m.kd, kMaxReflectance, place + " kd");
+  check.bounded(m.ks, kMaxReflectance, place + " ks");
+  check.bounded(m.exponent, kMaxExponent, place + " exponent");
+  check.bounded(m.specularColor, kMaxReflectance, place + " specular_color");
+  check.bounded(m.kps, kMaxReflectance, place + " kps");
+  check.bounded(m.mirrorColor, kMaxReflectance, place + " mirror_color");
+  check.bounded(m.kt, kMaxReflectance, place + " kt");
+  check.bounded(m.transmitColor, kMaxReflectance, place + " transmit_color");
+  check.bounded(m.emission, kMaxEmitted, place + " emission");
+  check.bounded(m.thickness, kMaxCoordinate, place + " thickness");
   check.nonNegative(m.attenuationColor, place + " attenuation_color");
-  check.nonNegative(m.attenuationDistance, place + " attenuation_distance");
+  check.bounded(m.attenuationDistance, kMaxCoordinate, place + " attenuation_distance");
   check.finiteValue(m.ior, place + " ior");
   if (m.ior <= 0.f) check.fail(place + " ior", "must be positive");
   check.finiteValue(m.alpha, place + " alpha");
@@ -129,10 +147,11 @@ void checkMaterial(const Material& m, std::size_t index, const Scene& scene,
     if (t < -1 || t >= int(scene.textures.size()))
       check.fail(place, "texture " + std::to_string(t) + " does not exist");
   if (m.checker) {
-    check.nonNegative(m.checker->colorA, place + " checker.a");
-    check.nonNegative(m.checker->colorB, place + " checker.b");
+    check.bounded(m.checker->colorA, kMaxReflectance, place + " checker.a");
+    check.bounded(m.checker->colorB, kMaxReflectance, place + " checker.b");
     check.finiteValue(m.checker->scale, place + " checker.scale");
     if (m.checker->scale <= 0.f) check.fail(place + " checker.scale", "must be positive");
+    check.magnitude(m.checker->scale, kMaxCoordinate, place + " checker.scale");
   }
 }
 
@@ -140,12 +159,13 @@ void checkLight(const Light& l, std::size_t index, const SceneChecker& check) {
   const std::string place = "lights[" + std::to_string(index) + "] '" + l.name + "'";
   check.nonNegative(l.color, place + " color");
   check.nonNegative(l.intensity, place + " intensity");
-  check.finiteValue(l.position, place + " position");
+  check.bounded(l.color * l.intensity, kMaxEmitted, place + " color x intensity");
+  check.magnitude(l.position, kMaxCoordinate, place + " position");
   check.finiteValue(l.direction, place + " direction");
-  check.nonNegative(l.range, place + " range");
-  check.finiteValue(l.edgeU, place + " edge_u");
-  check.finiteValue(l.edgeV, place + " edge_v");
-  check.nonNegative(l.radius, place + " radius");
+  check.bounded(l.range, kMaxCoordinate, place + " range");
+  check.magnitude(l.edgeU, kMaxCoordinate, place + " edge_u");
+  check.magnitude(l.edgeV, kMaxCoordinate, place + " edge_v");
+  check.bounded(l.radius, kMaxCoordinate, place + " radius");
   const bool directed = l.type == LightType::Directional || l.type == LightType::Spot ||
                         l.type == LightType::DiscArea;
   if (directed && glm::length(l.direction) == 0.f)
@@ -164,8 +184,8 @@ void checkLight(const Light& l, std::size_t index, const SceneChecker& check) {
 }
 
 void checkCamera(const Camera& c, const SceneChecker& check) {
-  check.finiteValue(c.position, "camera position");
-  check.finiteValue(c.target, "camera target");
+  check.magnitude(c.position, kMaxCoordinate, "camera position");
+  check.magnitude(c.target, kMaxCoordinate, "camera target");
   check.finiteValue(c.up, "camera up");
   check.finiteValue(c.verticalFov, "camera fov");
   check.nonNegative(c.aperture, "camera aperture");
@@ -179,6 +199,9 @@ void checkCamera(const Camera& c, const SceneChecker& check) {
   if (!(c.znear > 0.f) || !(c.zfar > c.znear) || !finite(c.zfar))
     check.fail("camera near/far", "need 0 < near < far");
   if (c.focusDistance <= 0.f) check.fail("camera focus_distance", "must be positive");
+  check.bounded(c.zfar, kMaxCoordinate, "camera near/far");
+  check.bounded(c.focusDistance, kMaxCoordinate, "camera focus_distance");
+  check.bounded(c.aperture, kMaxCoordinate, "camera aperture");
 }
 
 }  // namespace
@@ -201,6 +224,16 @@ std::vector<vec3> areaWeightedNormals(const Mesh& mesh) {
 void validateScene(Scene& scene) {
   const SceneChecker check(scene);
   std::vector<std::string> warnings;
+  if (scene.lights.size() > kMaxLights)
+    check.fail("lights",
+               fmt::format("{} lights; the limit is {}", scene.lights.size(), kMaxLights));
+  std::size_t triangles = 0;
+  for (const Instance& inst : scene.instances)
+    if (inst.mesh >= 0 && inst.mesh < int(scene.meshes.size()))
+      triangles += scene.meshes[inst.mesh].indices.size() / 3;
+  if (triangles > kMaxTriangles)
+    check.fail("instances",
+               fmt::format("{} triangles in all; the limit is {}", triangles, kMaxTriangles));
   for (std::size_t i = 0; i < scene.meshes.size(); ++i)
     checkMesh(scene.meshes[i], i, scene, check, warnings);
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
@@ -220,10 +253,16 @@ void validateScene(Scene& scene) {
   }
   for (std::size_t i = 0; i < scene.lights.size(); ++i) checkLight(scene.lights[i], i, check);
   checkCamera(scene.camera, check);
-  check.nonNegative(scene.ambient, "ambient");
+  check.bounded(scene.ambient, kMaxEmitted, "ambient");
   const Environment& env = scene.environment;
   check.nonNegative(env.color, "environment color");
   check.nonNegative(env.intensity, "environment intensity");
+  check.bounded(env.color * env.intensity, kMaxEmitted, "environment color x intensity");
+  // World bounds (after instance transforms), once every mesh and transform is finite.
+  if (const Aabb box = scene.bounds(); !box.empty()) {
+    check.magnitude(box.lo, kMaxCoordinate, "scene bounds (lowest corner)");
+    check.magnitude(box.hi, kMaxCoordinate, "scene bounds (highest corner)");
+  }
   if (env.type == EnvironmentType::Equirect) {
     if (env.equirect.empty()) check.fail("environment equirect", "image is empty");
     check.finiteArray(env.equirect.pixels, "environment equirect pixels");

@@ -14,7 +14,23 @@ namespace diptych {
 // Recovers (with one warning per mesh): zero-length normals are replaced by the area-weighted
 // normal of the faces around the vertex (or +Y if those faces are degenerate too), and
 // non-unit normals are renormalised silently.
+// Also rejects, naming the element, anything beyond these limits (docs/robustness.md): finite
+// values whose products in shading overflow a float (3.4e38) become Inf pixels otherwise.
 void validateScene(Scene& scene);
+
+// Lights are looped over per pixel (cost = pixels x lights); meshes are held in memory twice
+// (ours and Embree's or GL's).
+constexpr std::size_t kMaxLights = 1024;
+constexpr std::size_t kMaxTriangles = std::size_t(1) << 23;  // 8.4 million
+// World-space coordinates, lengths, radii, near/far: squares of lengths stay below 1e24.
+constexpr float kMaxCoordinate = 1e12f;
+// Emitted quantities: light colour x intensity, emission, ambient, environment colour x
+// intensity and pixels. A point light at 1e6 units needs intensity ~1e12 x its unit-scale value.
+constexpr float kMaxEmitted = 1e20f;
+// Reflectances and coefficients (colours, ka, kd, ks, kps, kt, checker colours): a product over
+// 8 bounces stays below 1e16, and times kMaxEmitted below the float range.
+constexpr float kMaxReflectance = 100.f;
+constexpr float kMaxExponent = 1e6f;  // Phong exponent
 
 // Area-weighted vertex normals: sum over incident triangles of cross(e1, e2) (its length is
 // twice the area, so larger faces weigh more), normalised. Zero where every face is degenerate.

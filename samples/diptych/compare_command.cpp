@@ -26,6 +26,7 @@
 #include "samples/diptych/compare/report.h"
 #include "samples/diptych/compare/runner.h"
 #include "samples/diptych/compare/variants.h"
+#include "samples/diptych/parse_size.h"
 
 namespace diptych::cli {
 namespace {
@@ -140,14 +141,9 @@ std::string cacheKey(const Scene& scene, const ReferenceSpec& ref, const FrameSe
 void runCompare(const CompareOptions& o) {
   const std::string sceneFile =
       o.scene.empty() ? std::string(DIPTYCH_SAMPLES_DIR) + "/scenes/whitted.json" : o.scene;
-  if (o.frames < 1 || o.warmup < 0)
-    throw InputError("--frames", "", "need at least one measured frame");
-  int width = 0, height = 0;
-  char x = 0;
-  if (std::sscanf(o.size.c_str(), "%d%c%d", &width, &x, &height) != 3 || x != 'x' || width <= 0 ||
-      height <= 0 || width > 8192 || height > 8192)
-    throw InputError("--size", "",
-                     "expected WIDTHxHEIGHT with each in 1..8192, got '" + o.size + "'");
+  if (o.frames < 1) throw InputError("--frames", "", "need at least one measured frame");
+  if (o.warmup < 0) throw InputError("--warmup", "", "must not be negative");
+  const auto [width, height] = parseSize(o.size, 8192);
   const PassRegistry& registry = builtinPasses();
   const ReferenceSpec reference = parseReference(o.reference, registry);
   std::vector<Variant> variants =

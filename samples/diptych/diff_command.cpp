@@ -72,6 +72,15 @@ Threshold parseThreshold(const std::string& text, bool above) {
   return t;
 }
 
+// CLI::PositiveNumber lets NaN and Inf through and prints its bound, not the value, on error.
+std::string finitePositive(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || !(v > 0))
+    return "'" + text + "' is not a finite positive number";
+  return {};
+}
+
 std::string formatValue(double v) {
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   return fmt::format("{:.6g}", v);
@@ -191,24 +200,32 @@ void addDiffCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::IsMember({"flip", "mse"}));
   cmd->add_option("--heatmap-max", options->heatmapMax,
                   "Error mapped to the top colour (default: 1 for flip, the maximum for mse)")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive);
   cmd->add_flag("--json", options->json, "Print JSON instead of a table");
   cmd->add_option("--fail-above", options->failAbove,
                   "METRIC=VALUE: exit 1 when METRIC exceeds VALUE (repeatable)");
   cmd->add_option("--fail-below", options->failBelow,
                   "METRIC=VALUE: exit 1 when METRIC is below VALUE (e.g. ssim, psnr)");
   cmd->add_option("--psnr-peak", options->psnrPeak, "PSNR peak (default: the reference's maximum)")
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive);
   cmd->add_option("--ssim-data-range", options->ssimDataRange,
                   "SSIM data range (default: max - min of the reference)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--ppd", options->ppd, "FLIP pixels per degree")
+      ->check(finitePositive);
+  cmd->add_option("--ppd", options->ppd, "FLIP pixels per degree (1 to 1000)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check([](const std::string& text) -> std::string {
+        // Checked on the text: CLI11's range message prints the bound, not the value given.
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !(v >= kMinFlipPpd && v <= kMaxFlipPpd))
+          return fmt::format("'{}' is not a number of pixels per degree in [{:g}, {:g}]", text,
+                             kMinFlipPpd, kMaxFlipPpd);
+        return {};
+      });
   cmd->add_option("--relmse-epsilon", options->relMseEpsilon,
                   "Relative MSE epsilon in (x-r)^2/(r^2+eps)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositive);
   // Threshold syntax is checked while parsing, so a bad one is a usage error (exit 2).
   // One METRIC=VALUE per occurrence, so a threshold never swallows the positional images.
   for (const char* name : {"--fail-above", "--fail-below"})

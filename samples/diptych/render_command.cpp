@@ -1,15 +1,20 @@
 #include "samples/diptych/render_command.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 
 #include "engine/core/error.h"
+#include "engine/core/image_check.h"
 #include "engine/core/known.h"
 #include "engine/core/log.h"
 #include "engine/core/timing.h"
@@ -24,6 +29,7 @@
 #include "engine/scene/load.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
+#include "samples/diptych/parse_size.h"
 
 namespace diptych::cli {
 namespace {
@@ -39,14 +45,26 @@ struct RenderOptions {
   bool verbose = false;
 };
 
-std::pair<int, int> parseSize(const std::string& text) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
-      w <= 0 || h <= 0 || w > 16384 || h > 16384)
-    throw InputError("--size", "",
-                     "expected WIDTHxHEIGHT with each in 1..16384, got '" + text + "'");
-  return {w, h};
+// Output files are checked before rendering so that a bad path never costs a render or leaves
+// some outputs written and others not. The parent folder must exist (render does not create
+// folders, so a typo in a folder name is an error rather than a new tree).
+void checkWritable(const std::string& option, const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path p(path);
+  const fs::path parent = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(parent, ec))
+    throw InputError(option, "", path + ": folder " + parent.string() + " does not exist");
+  if (fs::exists(p, ec) && !fs::is_regular_file(p, ec))
+    throw InputError(option, "", path + ": exists and is not a regular file");
+  // Open it for appending (access() says yes to root everywhere, even in /proc); remove it
+  // again if it did not exist, so that a failed render leaves nothing behind.
+  const bool existed = fs::exists(p, ec);
+  const int fd = ::open(p.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  if (fd < 0)
+    throw InputError(option, "", path + ": cannot be written (" + std::strerror(errno) + ")");
+  ::close(fd);
+  if (!existed) fs::remove(p, ec);
 }
 
 std::string extensionOf(const std::string& path) {
@@ -56,9 +74,7 @@ std::string extensionOf(const std::string& path) {
 }
 
 void writeText(const std::string& path, const std::string& text) {
-  const std::filesystem::path p(path);
-  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-  std::ofstream out(p);
+  std::ofstream out(path);
   out << text;
   if (!out) throw Error(path + ": cannot write file");
 }
@@ -92,8 +108,10 @@ void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const Ren
 
 void runRender(const RenderOptions& o) {
   if (o.verbose) setLogLevel(spdlog::level::debug);
-  if (o.frames < 1 || o.warmup < 0)
-    throw InputError("--frames", "", "need at least one measured frame");
+  if (o.frames < 1 || o.frames > 10000)
+    throw InputError("--frames", "", "must be in 1..10000 (got " + std::to_string(o.frames) + ")");
+  if (o.warmup < 0 || o.warmup > 10000)
+    throw InputError("--warmup", "", "must be in 0..10000 (got " + std::to_string(o.warmup) + ")");
   const std::string outExt = extensionOf(o.out);
   if (outExt != ".png" && outExt != ".exr" && outExt != ".hdr" && outExt != ".jpg")
     throw InputError("--out", "",
@@ -101,7 +119,7 @@ void runRender(const RenderOptions& o) {
   if (!o.graphOut.empty() && extensionOf(o.graphOut) != ".dot" &&
       extensionOf(o.graphOut) != ".json")
     throw InputError("--graph-out", "", "expected a .dot or .json file name");
-  const auto [width, height] = parseSize(o.size);
+  const auto [width, height] = parseSize(o.size, 16384);
   gl::ContextKind contextKind{};
   try {
     contextKind = gl::parseContextKind(o.context);
@@ -126,6 +144,9 @@ void runRender(const RenderOptions& o) {
           "expected 'auto' or a number of stops in [-64, 64], got '" + o.exposure + "'");
     fixedExposure = ev;
   }
+  checkWritable("--out", o.out);
+  if (!o.graphOut.empty()) checkWritable("--graph-out", o.graphOut);
+  if (!o.timingsOut.empty()) checkWritable("--timings", o.timingsOut);
 
   Scene scene = loadScene(o.scene);
   for (const std::string& w : scene.warnings) log().warn("{}", w);
@@ -156,12 +177,18 @@ void runRender(const RenderOptions& o) {
   }
 
   // The first output goes to --out; any further one beside it, named after the resource
-  // (out.png + "shade.variance" -> out.shade.variance.png).
+  // (out.png + "shade.variance" -> out.shade.variance.png). All are checked before any is
+  // written.
+  std::vector<Image> images;
+  for (ResourceId id : graph.outputs) {
+    images.push_back(executor.output(graph.resources[id].name).toImage());
+    requireFinite(images.back(), "render: output '" + graph.resources[id].name + "'");
+  }
   for (std::size_t i = 0; i < graph.outputs.size(); ++i) {
     const std::string name = graph.resources[graph.outputs[i]].name;
     std::filesystem::path file(o.out);
     if (i > 0) file.replace_filename(file.stem().string() + "." + name + file.extension().string());
-    const Image image = executor.output(name).toImage();
+    const Image& image = images[i];
     if (!fixedExposure) {  // from the first output, then the same for every other one
       fixedExposure = autoExposure(image);
       std::printf(

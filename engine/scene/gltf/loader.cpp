@@ -8,6 +8,8 @@
 #include <set>
 
 #include "engine/core/error.h"
+#include "engine/core/input_file.h"
+#include "engine/core/json_text.h"
 #include "engine/scene/gltf/gltf_internal.h"
 #include "engine/scene/load.h"
 
@@ -39,6 +41,41 @@ bool decodeImage(tinygltf::Image* image, const int index, std::string*, std::str
     decoded.errors[index] = e.what();
   }
   return true;
+}
+
+// tinygltf reads external buffers and images through these: the same regular-file and size
+// checks as every other input (docs/robustness.md), no path expansion, and never a write.
+bool fileExists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+std::string expandNothing(const std::string& path, void*) {
+  return path;
+}
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void*) {
+  try {
+    const std::string bytes = readInputFile(path, kMaxBinaryFileBytes);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const Error& e) {
+    if (err) *err += std::string(e.what()) + "\n";
+    return false;
+  }
+}
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "writing is disabled\n";
+  return false;
+}
+
+// tinygltf turns "extras" and "extensions" into Values recursively: refuse deep nesting in the
+// JSON (for a .glb, its first chunk) before handing it over.
+void checkGltfDepth(const std::string& bytes, bool binary, const std::string& file) {
+  if (!binary) return checkJsonDepth(bytes, file);
+  if (bytes.size() < 20) return;  // tinygltf reports the short header
+  std::uint32_t length = 0;
+  for (int i = 0; i < 4; ++i) length |= std::uint32_t(std::uint8_t(bytes[12 + i])) << (8 * i);
+  checkJsonDepth(bytes.substr(20, length), file);
 }
 
 mat4 localTransform(const tinygltf::Node& node) {
@@ -237,17 +274,26 @@ void convertNodes(const tinygltf::Model& model, const std::vector<std::vector<in
 
 Scene loadGltfUnvalidated(const std::filesystem::path& path) {
   const std::string file = path.string();
-  if (!std::filesystem::exists(path)) throw InputError(file, "", "file not found");
   tinygltf::TinyGLTF loader;
   gltf::DecodedImages decoded;
   loader.SetImageLoader(&decodeImage, &decoded);
+  loader.SetFsCallbacks({&fileExists, &expandNothing, &readWholeFile, &refuseWrite, nullptr});
   tinygltf::Model model;
   std::string err, warn;
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
-  const bool ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, file)
-                                : loader.LoadASCIIFromFile(&model, &err, &warn, file);
+  const bool binary = ext == ".glb";
+  const std::string bytes = readInputFile(path, binary ? kMaxBinaryFileBytes : kMaxJsonFileBytes);
+  checkGltfDepth(bytes, binary, file);
+  // tinygltf takes 32-bit lengths; both limits are far below 4 GiB.
+  const std::string base = path.parent_path().string();
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                           reinterpret_cast<const unsigned char*>(bytes.data()),
+                                           unsigned(bytes.size()), base)
+             : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()),
+                                          base);
   if (!ok) {
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     throw InputError(file, "", "glTF parse error (tinygltf): " + (err.empty() ? warn : err));

@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/error.h"
+#include "engine/core/input_file.h"
+#include "engine/core/json_text.h"
 #include "engine/core/known.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
@@ -51,15 +53,7 @@ std::vector<Variant> geometryVariants() {
 
 std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& registry) {
   if (std::filesystem::path(spec).extension() == ".json") {
-    std::ifstream in(spec);
-    if (!in) throw InputError(spec, "", "cannot open variants file (file not found?)");
-    nlohmann::json j;
-    try {
-      j = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::parse_error& e) {
-      throw InputError(spec, "byte " + std::to_string(e.byte),
-                       std::string("malformed JSON: ") + e.what());
-    }
+    nlohmann::json j = parseJsonText(readInputFile(spec, kMaxJsonFileBytes), spec);
     if (!j.is_object() || !j.contains("variants") || !j["variants"].is_array() ||
         j["variants"].empty())
       throw InputError(spec, "variants", "expected a non-empty array");

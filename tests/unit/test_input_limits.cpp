@@ -1,0 +1,126 @@
+// Hostile input (docs/robustness.md): the file checks, the JSON depth limit and bounded value
+// descriptions, the FLIP ppd range, the final NaN/Inf check on output images.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "engine/core/error.h"
+#include "engine/core/image_check.h"
+#include "engine/core/input_file.h"
+#include "engine/core/json_text.h"
+#include "engine/metrics/metrics.h"
+#include "tests/support/test_paths.h"
+
+using namespace diptych;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The message of the InputError `f` throws ("" when it throws nothing).
+template <typename F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string nested(int depth) {
+  return std::string(std::size_t(depth), '[') + std::string(std::size_t(depth), ']');
+}
+
+}  // namespace
+
+TEST(InputFile, ReadsARegularFileAndRefusesEverythingElse) {
+  const fs::path dir = ::diptych::testing::scratchDir("diptych_input_file");
+  std::ofstream(dir / "ok.json") << "{\"a\": 1}";
+  EXPECT_EQ(readInputFile(dir / "ok.json", 100), "{\"a\": 1}");
+
+  EXPECT_NE(errorOf([&] { readInputFile(dir / "ok.json", 4); }).find("the limit is 4"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { readInputFile(dir / "missing.json", 100); }).find("file not found"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { readInputFile(dir, 100); }).find("is a directory"), std::string::npos);
+  EXPECT_NE(errorOf([&] { readInputFile("/dev/zero", 100); }).find("not a regular file"),
+            std::string::npos);
+  // A link is judged by its target: a link to /dev/zero is refused, a link to a file is read.
+  fs::remove(dir / "zero.json");
+  fs::create_symlink("/dev/zero", dir / "zero.json");
+  const std::string viaLink = errorOf([&] { readInputFile(dir / "zero.json", 100); });
+  EXPECT_NE(viaLink.find("zero.json"), std::string::npos) << viaLink;
+  EXPECT_NE(viaLink.find("not a regular file"), std::string::npos) << viaLink;
+  fs::remove(dir / "link.json");
+  fs::create_symlink(dir / "ok.json", dir / "link.json");
+  EXPECT_EQ(readInputFile(dir / "link.json", 100), "{\"a\": 1}");
+  // A FIFO would block the open() itself.
+  ASSERT_EQ(mkfifo((dir / "fifo").c_str(), 0600), 0);
+  EXPECT_NE(errorOf([&] { readInputFile(dir / "fifo", 100); }).find("not a regular file"),
+            std::string::npos);
+}
+
+TEST(JsonText, DepthIsLimitedAtParseTimeAndStringsDoNotCount) {
+  EXPECT_NO_THROW(parseJsonText(nested(kMaxJsonDepth), "f.json"));
+  const std::string deep = errorOf([] { parseJsonText(nested(kMaxJsonDepth + 1), "f.json"); });
+  EXPECT_NE(deep.find("f.json: byte 256: JSON nested deeper than 256"), std::string::npos) << deep;
+  EXPECT_NO_THROW(parseJsonText("{\"a\": \"" + std::string(1000, '[') + "\\\"\"}", "f.json"));
+  EXPECT_NE(errorOf([] { parseJsonText("{\"a\": ", "f.json"); }).find("malformed JSON"),
+            std::string::npos);
+}
+
+TEST(JsonText, DescriptionsAreShortAndNeverRecurse) {
+  // nlohmann's parser itself is iterative; dump() of this value would overflow the stack.
+  const nlohmann::json deep = nlohmann::json::parse(nested(100000));
+  EXPECT_EQ(describeJson(deep), "an array of 1 elements");
+  EXPECT_EQ(describeJson(nlohmann::json::object({{"a", 1}, {"b", 2}})), "an object of 2 keys");
+  EXPECT_EQ(describeJson(nlohmann::json(-3)), "-3");
+  EXPECT_EQ(describeJson(nlohmann::json("short")), "\"short\"");
+  const std::string longText = describeJson(nlohmann::json(std::string(100000, 'a')));
+  EXPECT_LT(longText.size(), 80u);
+  EXPECT_NE(longText.find("(100000 bytes)"), std::string::npos);
+  // Cutting inside a UTF-8 sequence must not throw (dump() would, on invalid UTF-8).
+  std::string euros;
+  for (int i = 0; i < 30; ++i) euros += "\xE2\x82\xAC";
+  EXPECT_NO_THROW(describeJson(nlohmann::json(euros)));
+}
+
+TEST(FlipPixelsPerDegree, OutsideTheDocumentedRangeIsAnInputError) {
+  Image a(8, 8, 3, 0.25f), b(8, 8, 3, 0.5f);
+  MetricOptions options;
+  options.metrics = {"flip"};
+  for (double ppd : {0.0, 0.5, 1001.0, 1e9, 1e12, std::numeric_limits<double>::quiet_NaN()}) {
+    options.flipPixelsPerDegree = ppd;
+    EXPECT_NE(errorOf([&] { computeMetrics(a, b, options); }).find("pixels per degree"),
+              std::string::npos)
+        << ppd;
+  }
+  for (double ppd : {kMinFlipPpd, 67.0, kMaxFlipPpd}) {
+    options.flipPixelsPerDegree = ppd;
+    const double mean = computeMetrics(a, b, options).at("flip_mean");
+    EXPECT_TRUE(mean > 0 && mean <= 1) << ppd << ": " << mean;
+  }
+}
+
+TEST(ImageCheck, CountsNaNAndInfAndNamesTheFirstPixel) {
+  Image img(4, 3, 3, 0.5f);
+  EXPECT_EQ(findNonFinite(img).count, 0u);
+  EXPECT_NO_THROW(requireFinite(img, "out"));
+  img.at(2, 1, 1) = std::numeric_limits<float>::quiet_NaN();
+  img.at(3, 2, 0) = std::numeric_limits<float>::infinity();
+  const NonFiniteValues bad = findNonFinite(img);
+  EXPECT_EQ(bad.count, 2u);
+  EXPECT_EQ(bad.x, 2);
+  EXPECT_EQ(bad.y, 1);
+  try {
+    requireFinite(img, "render: output 'shade.color'");
+    FAIL() << "expected an Error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'shade.color': 2 NaN/Inf values (first at pixel 2, 1)"),
+              std::string::npos)
+        << e.what();
+  }
+}
