@@ -37,7 +37,9 @@ TEST(NoShadows, LightsEveryPixelAndOnlyAddsLight) {
         ASSERT_GE(unshadowed.f(x, y, ch), shadowed.f(x, y, ch)) << x << "," << y;
         more = more || unshadowed.f(x, y, ch) > shadowed.f(x, y, ch);
         // Where every light reaches the point, V = 1 either way: the same radiance, bit for bit.
-        if (lit) ASSERT_EQ(unshadowed.f(x, y, ch), shadowed.f(x, y, ch)) << x << "," << y;
+        if (lit) {
+          ASSERT_EQ(unshadowed.f(x, y, ch), shadowed.f(x, y, ch)) << x << "," << y;
+        }
       }
       inShadow += lit ? 0 : 1;
       brighter += more ? 1 : 0;
