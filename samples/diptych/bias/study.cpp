@@ -98,6 +98,39 @@ nlohmann::json curveSummary(const std::string& mode, const std::string& key,
   return c;
 }
 
+// A renderer ships one setting: the amount whose mean misclassification over every curve of the
+// mode (resolutions, elevations, filters) is least, with its mean and its worst curve.
+nlohmann::json oneAmountForAll(const std::string& key,
+                               const std::map<std::string, std::vector<nlohmann::json>>& curves,
+                               const std::vector<std::string>& order) {
+  nlohmann::json best;
+  const std::size_t amounts = curves.at(order.front()).size();
+  for (std::size_t i = 0; i < amounts; ++i) {
+    double sum = 0, worst = -1;
+    std::string worstCurve;
+    for (const auto& id : order) {
+      const auto& points = curves.at(id);
+      if (i >= points.size()) return nlohmann::json();
+      const double e = points[i]["signal"]["misclassified"].get<double>();
+      sum += e;
+      if (e > worst) {
+        worst = e;
+        nlohmann::json params = points[i]["params"];
+        if (!key.empty()) params.erase(key);
+        worstCurve = params.dump();
+      }
+    }
+    const double mean = sum / double(order.size());
+    if (best.is_null() || mean < best["mean_misclassified"].get<double>())
+      best = {
+          {"amount", key.empty() ? nlohmann::json() : curves.at(order.front())[i]["params"][key]},
+          {"mean_misclassified", mean},
+          {"worst_misclassified", worst},
+          {"worst_curve", worstCurve}};
+  }
+  return best;
+}
+
 }  // namespace
 
 std::string biasAmountKey(const std::string& mode) {
@@ -202,6 +235,7 @@ nlohmann::json runBiasStudy(const BiasStudyOptions& o) {
         {"mode", mode}, {"key", key}, {"folder", mode}, {"curves", nlohmann::json::array()}};
     for (const auto& id : order) m["curves"].push_back(curveSummary(mode, key, curves[id]));
     m["points"] = results["points"];
+    m["one_amount"] = oneAmountForAll(key, curves, order);
     summary["modes"].push_back(m);
   }
   return summary;

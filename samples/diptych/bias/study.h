@@ -18,7 +18,7 @@ struct BiasStudyOptions {
   std::vector<int> resolutions = {256, 1024};
   std::vector<double> elevations = {15, 40, 70};  // degrees; only for a directional light
   std::vector<std::string> filters = {"none"};
-  int points = 9;  // amounts per mode, log spaced
+  int points = 13;  // amounts per mode, log spaced
   int width = 320, height = 240, frames = 1, warmup = 0, light = 0;
   std::string receiver;
   std::filesystem::path out = "shadow-bias";

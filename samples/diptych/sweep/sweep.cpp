@@ -187,6 +187,8 @@ nlohmann::json runSweep(const SweepOptions& o) {
 
   // Every check before any rendering: the light, the receiver, and each point's recipe compiled
   // (the producer's own parameter checks reject unknown keys and bad values).
+  if (o.light < 0 || (o.light >= int(scene.lights.size()) && !scene.lights.empty()))
+    throw InputError("--light", std::to_string(o.light), "the scene has no such light");
   const bool sweepsLight =
       std::any_of(o.axes.begin(), o.axes.end(), [](auto& a) { return a.light; });
   if (sweepsLight) {
