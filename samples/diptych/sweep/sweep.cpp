@@ -217,7 +217,9 @@ nlohmann::json runSweep(const SweepOptions& o) {
     try {
       compileGraph(recipe, registry, sceneAt(scene, point, o.light), frame, {signal});
     } catch (const InputError& e) {
-      throw InputError("--vary", point.dump(), e.message());
+      // e.place() names the key ("passes[1].params.kernel"), e.message() what is wrong with it.
+      throw InputError("--vary", point.dump(),
+                       (e.place().empty() ? "" : e.place() + ": ") + e.message());
     }
   }
 
