@@ -5,6 +5,7 @@
 #include "engine/core/error.h"
 #include "samples/diptych/compare_command.h"
 #include "samples/diptych/diff_command.h"
+#include "samples/diptych/passes_command.h"
 #include "samples/diptych/render_command.h"
 #include "samples/diptych/sweep_command.h"
 
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   diptych::cli::addRenderCommand(app, exitCode);
   diptych::cli::addCompareCommand(app, exitCode);
   diptych::cli::addDiffCommand(app, exitCode);
+  diptych::cli::addPassesCommand(app, exitCode);
   diptych::cli::addSweepCommand(app, exitCode);
   diptych::cli::addShadowBiasCommand(app, exitCode);
   try {

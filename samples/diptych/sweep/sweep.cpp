@@ -15,7 +15,7 @@
 #include "engine/rt/surface.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 #include "passes/raster/shadow_map_frusta.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
@@ -80,7 +80,7 @@ struct StateReference {
 
 // Geometry of the receiver pixels against the camera and the swept light.
 void measureGeometry(StateReference& s, const FrameSettings& frame, int light) {
-  const Surface& gb = s.exact.outputs.at("gbuffer.visibility");
+  const Surface& gb = s.exact.outputs.at("gbuffer.hits");
   const int w = gb.desc.width, h = gb.desc.height;
   s.footprint.assign(std::size_t(w) * h, 0.f);
   const double pixelAngle = 2.0 * std::tan(frame.camera.verticalFov / 2.0) / h;
@@ -89,7 +89,7 @@ void measureGeometry(StateReference& s, const FrameSettings& frame, int light) {
     for (int x = 0; x < w; ++x) {
       const std::size_t i = std::size_t(y) * w + x;
       if (!s.mask[i]) continue;
-      const auto hit = visibilityTexel(gb, x, y);
+      const auto hit = hitsTexel(gb, x, y);
       const vec3 eye = frame.camera.position;
       SurfacePoint p = makeSurfacePoint(*s.scene, s.world->geometry(), *hit, vec3(0.f));
       const vec3 view = p.position - eye;
@@ -280,11 +280,11 @@ nlohmann::json runSweep(const SweepOptions& o) {
       state->world = std::make_unique<RenderWorld>(*state->scene, context.get());
       const Recipe exactRecipe = defaultHybridRecipe();
       state->exactSignal = slotSignal(exactRecipe, base.slot);
-      state->exact = runGraph(exactRecipe, *state->world, frame,
-                              {"gbuffer.visibility", state->exactSignal}, 0, 1);
-      state->mask = coverage(state->exact.outputs.at("gbuffer.visibility"));
+      state->exact =
+          runGraph(exactRecipe, *state->world, frame, {"gbuffer.hits", state->exactSignal}, 0, 1);
+      state->mask = coverage(state->exact.outputs.at("gbuffer.hits"));
       if (!receivers.empty()) {
-        const Surface& gb = state->exact.outputs.at("gbuffer.visibility");
+        const Surface& gb = state->exact.outputs.at("gbuffer.hits");
         for (int y = 0; y < o.height; ++y)
           for (int x = 0; x < o.width; ++x) {
             auto& m = state->mask[std::size_t(y) * o.width + x];
