@@ -1,6 +1,8 @@
 #include "engine/metrics/signal_metrics.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "engine/core/error.h"
 
@@ -89,6 +91,116 @@ VisibilityConfusion compareVisibility(const std::vector<float>& approx,
     }
   c.meanBoundaryDisplacement = c.boundarySamples ? sum / double(c.boundarySamples) : 0.0;
   return c;
+}
+
+double ShadowArtifacts::acneRate() const {
+  return litOutside ? double(acne) / double(litOutside) : 0.0;
+}
+double ShadowArtifacts::peterPanningRate() const {
+  return shadowOutside ? double(peterPanning) / double(shadowOutside) : 0.0;
+}
+double ShadowArtifacts::lightLeakRate() const {
+  return shadowOutside ? double(lightLeak) / double(shadowOutside) : 0.0;
+}
+double ShadowArtifacts::misclassified() const {
+  const long long outside = litOutside + shadowOutside;
+  return outside ? double(acne + peterPanning + lightLeak) / double(outside) : 0.0;
+}
+
+ShadowArtifacts classifyShadows(const std::vector<float>& approx, const std::vector<float>& exact,
+                                const std::vector<std::uint8_t>& mask, int w, int h,
+                                const std::vector<float>& footprint, int band, int reach) {
+  const std::size_t n = std::size_t(w) * h;
+  if (!footprint.empty() && footprint.size() != n)
+    throw Error("classifyShadows: the footprint must have width x height values");
+  // The band and the displacement are compareVisibility's (one definition of both).
+  const VisibilityConfusion c = compareVisibility(approx, exact, mask, w, h, band);
+  auto lit = [](float v) { return v >= 0.5f; };
+  auto at = [&](int x, int y) { return std::size_t(y) * w + x; };
+  // Chebyshev distance to the nearest exact boundary (band) and to the nearest exactly lit
+  // receiver (peter-panning vs leak): two-pass chamfer transforms with unit 8-neighbour steps,
+  // which are exact for the Chebyshev metric.
+  const int far = w + h;
+  auto distanceTo = [&](auto&& seed) {
+    std::vector<int> d(n, far);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) d[at(x, y)] = seed(x, y) ? 0 : far;
+    auto relax = [&](int x, int y, int dx, int dy) {
+      const int xx = x + dx, yy = y + dy;
+      if (xx >= 0 && yy >= 0 && xx < w && yy < h)
+        d[at(x, y)] = std::min(d[at(x, y)], d[at(xx, yy)] + 1);
+    };
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (auto [dx, dy] : {std::pair{-1, 0}, {-1, -1}, {0, -1}, {1, -1}}) relax(x, y, dx, dy);
+    for (int y = h - 1; y >= 0; --y)
+      for (int x = w - 1; x >= 0; --x)
+        for (auto [dx, dy] : {std::pair{1, 0}, {1, 1}, {0, 1}, {-1, 1}}) relax(x, y, dx, dy);
+    return d;
+  };
+  const std::vector<int> toBoundary = distanceTo([&](int x, int y) {
+    if (!mask[at(x, y)]) return false;
+    const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
+    for (int k = 0; k < 4; ++k)
+      if (nx[k] >= 0 && ny[k] >= 0 && nx[k] < w && ny[k] < h && mask[at(nx[k], ny[k])] &&
+          lit(exact[at(nx[k], ny[k])]) != lit(exact[at(x, y)]))
+        return true;
+    return false;
+  });
+  const std::vector<int> toLit =
+      distanceTo([&](int x, int y) { return mask[at(x, y)] && lit(exact[at(x, y)]); });
+
+  ShadowArtifacts a;
+  a.band = band;
+  a.reach = reach;
+  a.classes.assign(n, ShadowClass::Background);
+  double absError = 0, bandFootprint = 0;
+  long long bandPixels = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!mask[i]) continue;
+    ++a.receivers;
+    absError += std::abs(double(approx[i]) - double(exact[i]));
+    const bool e = lit(exact[i]), m = lit(approx[i]), inBand = toBoundary[i] <= band;
+    if (inBand && !footprint.empty()) {
+      bandFootprint += footprint[i];
+      ++bandPixels;
+    }
+    if (!inBand) ++(e ? a.litOutside : a.shadowOutside);
+    ShadowClass& k = a.classes[i];
+    if (e == m)
+      k = e ? ShadowClass::Lit : ShadowClass::Shadow;
+    else if (inBand)
+      k = e ? ShadowClass::BoundaryShadow : ShadowClass::BoundaryLit;
+    else if (e)
+      k = ShadowClass::Acne;
+    else
+      k = toLit[i] <= reach ? ShadowClass::PeterPanning : ShadowClass::LightLeak;
+    a.acne += k == ShadowClass::Acne;
+    a.peterPanning += k == ShadowClass::PeterPanning;
+    a.lightLeak += k == ShadowClass::LightLeak;
+    a.boundaryErrors += k == ShadowClass::BoundaryLit || k == ShadowClass::BoundaryShadow;
+  }
+  a.meanAbsError = a.receivers ? absError / double(a.receivers) : 0.0;
+  a.displacementPx = c.meanBoundaryDisplacement;
+  a.displacementWorld =
+      bandPixels ? c.meanBoundaryDisplacement * bandFootprint / double(bandPixels) : 0.0;
+  return a;
+}
+
+Image shadowClassImage(const ShadowArtifacts& a, int w, int h) {
+  // Background black, lit light grey, shadow dark grey, acne red, peter-panning blue, leak
+  // yellow, boundary errors (either way) magenta. Linear values.
+  static const float palette[8][3] = {
+      {0, 0, 0},          {0.6f, 0.6f, 0.6f}, {0.08f, 0.08f, 0.08f}, {0.9f, 0.02f, 0.02f},
+      {0.02f, 0.2f, 1.f}, {1.f, 0.85f, 0.f},  {0.8f, 0.f, 0.8f},     {0.8f, 0.f, 0.8f}};
+  if (a.classes.size() != std::size_t(w) * h)
+    throw Error("shadowClassImage: the class map is not width x height");
+  Image img(w, h, 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int ch = 0; ch < 3; ++ch)
+        img.at(x, y, ch) = palette[int(a.classes[std::size_t(y) * w + x])][ch];
+  return img;
 }
 
 SignalError compareRadiance(const Image& a, const Image& e, const std::vector<std::uint8_t>& mask) {

@@ -36,6 +36,49 @@ VisibilityConfusion compareVisibility(const std::vector<float>& approximate,
                                       const std::vector<std::uint8_t>& mask, int width, int height,
                                       int band = 2);
 
+// Shadow artifacts of one light (docs/shadow-bias.md): each receiver pixel (mask true) is put in
+// one class against the exact visibility (lit = visibility >= 0.5). Acne: false shadow farther
+// than `band` pixels from an exact boundary. Peter-panning: false light outside the band but
+// within `reach` pixels (Chebyshev) of an exactly lit pixel, i.e. a shadow edge that came loose
+// from its caster. Light leak: false light farther than `reach` from any exactly lit pixel.
+// Inside the band a wrong pixel is a boundary error (the boundary moved, see displacement).
+enum class ShadowClass : std::uint8_t {
+  Background = 0,
+  Lit,
+  Shadow,
+  Acne,
+  PeterPanning,
+  LightLeak,
+  BoundaryLit,
+  BoundaryShadow
+};
+struct ShadowArtifacts {
+  int band = 2, reach = 16;
+  long long receivers = 0, litOutside = 0, shadowOutside = 0;  // exact classes, outside the band
+  long long acne = 0, peterPanning = 0, lightLeak = 0, boundaryErrors = 0;
+  // Mean |approximate - exact| of the visibility values over receivers: soft filters (PCF,
+  // PCSS) are scored on their value, not only after the 0.5 threshold.
+  double meanAbsError = 0;
+  // compareVisibility's signed boundary displacement (px, > 0: the shadow grew), and the same
+  // in world units on the receiver: px times the mean pixel footprint at the sampled boundary.
+  double displacementPx = 0, displacementWorld = 0;
+  std::vector<ShadowClass> classes;  // per pixel, row-major
+
+  double acneRate() const;          // acne / litOutside
+  double peterPanningRate() const;  // peterPanning / shadowOutside
+  double lightLeakRate() const;     // lightLeak / shadowOutside
+  double misclassified() const;     // (acne + peterPanning + lightLeak) / outside-band receivers
+};
+
+// `footprint`: world size of each pixel on its receiver (empty: world displacement stays 0).
+ShadowArtifacts classifyShadows(const std::vector<float>& approximate,
+                                const std::vector<float>& exact,
+                                const std::vector<std::uint8_t>& mask, int width, int height,
+                                const std::vector<float>& footprint = {}, int band = 2,
+                                int reach = 16);
+// The class map as an RGB image (linear values of a fixed palette; see docs/shadow-bias.md).
+Image shadowClassImage(const ShadowArtifacts& artifacts, int width, int height);
+
 // Radiance error of a reflection/transmission signal over the pixels where the slot contributes
 // (mask true): RMSE and relative RMSE sqrt(sum |a - e|^2 / sum |e|^2), on RGB.
 struct SignalError {

@@ -1,7 +1,6 @@
 #include "samples/diptych/compare_command.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -37,27 +36,6 @@ struct CompareOptions {
   int frames = 3, warmup = 1;
 };
 
-// One line of progress: a bar on a terminal, a plain line otherwise (logs, CI).
-void progress(int done, int total, const std::string& what) {
-  if (isatty(fileno(stderr))) {
-    const int width = 30, filled = total ? width * done / total : width;
-    std::fprintf(stderr, "\r[%s%s] %d/%d %-40.40s", std::string(filled, '#').c_str(),
-                 std::string(width - filled, '.').c_str(), done, total, what.c_str());
-    if (done == total) std::fputc('\n', stderr);
-  } else {
-    std::fprintf(stderr, "compare: %d/%d %s\n", done, total, what.c_str());
-  }
-  std::fflush(stderr);
-}
-
-std::vector<std::uint8_t> coverage(const Surface& gbuffer) {
-  std::vector<std::uint8_t> mask(std::size_t(gbuffer.desc.width) * gbuffer.desc.height);
-  for (int y = 0; y < gbuffer.desc.height; ++y)
-    for (int x = 0; x < gbuffer.desc.width; ++x)
-      mask[std::size_t(y) * gbuffer.desc.width + x] = gbuffer.u(x, y, 0) != 0u;
-  return mask;
-}
-
 // Pixels whose material has the coefficient `pick` > 0 (k_ps for reflection, k_t for transmission).
 std::vector<std::uint8_t> materialMask(const Scene& scene, const Surface& gbuffer,
                                        const std::function<float(const Material&)>& pick) {
@@ -70,13 +48,6 @@ std::vector<std::uint8_t> materialMask(const Scene& scene, const Surface& gbuffe
       mask[std::size_t(y) * gbuffer.desc.width + x] = pick(m) > 0.f;
     }
   return mask;
-}
-
-std::vector<float> layer(const Surface& s, int l) {
-  std::vector<float> v(std::size_t(s.desc.width) * s.desc.height);
-  for (int y = 0; y < s.desc.height; ++y)
-    for (int x = 0; x < s.desc.width; ++x) v[std::size_t(y) * s.desc.width + x] = s.f(x, y, 0, l);
-  return v;
 }
 
 // Each slot's signal against the exact signal on the same G-buffer (docs/metrics.md).
@@ -186,7 +157,7 @@ void runCompare(const CompareOptions& o) {
   int step = 0;
 
   // The reference, cached by scene contents + settings.
-  progress(step, steps, "reference " + reference.text);
+  progress("compare", step, steps, "reference " + reference.text);
   const auto cached = dir / "cache" / ("reference-" + cacheKey(scene, reference, frame) + ".exr");
   Image referenceImage;
   double referenceMs = 0;
@@ -214,7 +185,7 @@ void runCompare(const CompareOptions& o) {
                                dir / "images/reference-variance.exr",
                                std::filesystem::copy_options::overwrite_existing);
   }
-  progress(++step, steps, "exact slot signals");
+  progress("compare", ++step, steps, "exact slot signals");
 
   // Exact slot signals on the shared G-buffer: the all-exact hybrid.
   const Recipe exactRecipe = defaultHybridRecipe();
@@ -225,7 +196,7 @@ void runCompare(const CompareOptions& o) {
     return outs;
   };
   const GraphRun exact = runGraph(exactRecipe, world, frame, signalOutputs(exactRecipe), 0, 1);
-  progress(++step, steps, "variants");
+  progress("compare", ++step, steps, "variants");
 
   std::vector<ReportVariant> results;
   for (std::size_t i = 0; i < variants.size(); ++i) {
@@ -276,7 +247,7 @@ void runCompare(const CompareOptions& o) {
                  {"culled", culled},
                  {"graph", graphToJson(run.graph, &run.timings)}};
     results.push_back(std::move(rv));
-    progress(++step, steps, v.name);
+    progress("compare", ++step, steps, v.name);
   }
 
   // Pareto front in (time, error): no other variant is at least as fast and as accurate, and

@@ -7,6 +7,7 @@
 #include "samples/diptych/diff_command.h"
 #include "samples/diptych/passes_command.h"
 #include "samples/diptych/render_command.h"
+#include "samples/diptych/sweep_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Diptych: rasterization tricks beside their exact ray-traced answers"};
@@ -17,6 +18,8 @@ int main(int argc, char** argv) {
   diptych::cli::addCompareCommand(app, exitCode);
   diptych::cli::addDiffCommand(app, exitCode);
   diptych::cli::addPassesCommand(app, exitCode);
+  diptych::cli::addSweepCommand(app, exitCode);
+  diptych::cli::addShadowBiasCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "engine/core/error.h"
 #include "engine/metrics/signal_metrics.h"
 
 using namespace diptych;
@@ -57,4 +58,46 @@ TEST(SignalError, RadianceErrorOverContributingPixelsOnly) {
   EXPECT_EQ(s.pixels, 2);
   EXPECT_NEAR(s.rmse, std::sqrt(4.0 / 6.0), 1e-12);
   EXPECT_NEAR(s.relativeRmse, std::sqrt(4.0 / 6.0), 1e-12);
+}
+
+// Shadow on columns 0..19 of a 40 x 10 frame. The approximate signal has one acne pixel deep in
+// the light, a shadow edge pulled back by 8 columns (peter-panning next to the boundary, the
+// nearest 3 columns inside the band) and one false-lit pixel 19 px from any exact light (leak).
+TEST(ShadowArtifacts, ClassesCountsErrorAndDisplacement) {
+  const int w = 40, h = 10;
+  const auto exact = halfShadow(w, h, 20);
+  auto approx = halfShadow(w, h, 12);
+  approx[5 * w + 35] = 0.f;  // acne
+  approx[5 * w + 1] = 1.f;   // leak: distance to column 20 is 19 > reach 16
+  const std::vector<std::uint8_t> mask(w * h, 1);
+  const std::vector<float> footprint(w * h, 0.5f);
+  const ShadowArtifacts a = classifyShadows(approx, exact, mask, w, h, footprint, 2, 16);
+  EXPECT_EQ(a.receivers, 400);
+  EXPECT_EQ(a.litOutside, 170);     // columns 23..39
+  EXPECT_EQ(a.shadowOutside, 170);  // columns 0..16
+  EXPECT_EQ(a.acne, 1);
+  EXPECT_EQ(a.peterPanning, 5 * 10);  // columns 12..16
+  EXPECT_EQ(a.lightLeak, 1);
+  EXPECT_EQ(a.boundaryErrors, 3 * 10);  // columns 17..19, inside the band
+  EXPECT_DOUBLE_EQ(a.acneRate(), 1.0 / 170);
+  EXPECT_DOUBLE_EQ(a.peterPanningRate(), 50.0 / 170);
+  EXPECT_DOUBLE_EQ(a.misclassified(), 52.0 / 340);
+  EXPECT_DOUBLE_EQ(a.meanAbsError, 82.0 / 400);
+  EXPECT_NEAR(a.displacementPx, -8.0, 1e-9);  // the whole +-8 px line came loose
+  EXPECT_NEAR(a.displacementWorld, -4.0, 1e-9);
+  EXPECT_EQ(a.classes[5 * w + 35], ShadowClass::Acne);
+  EXPECT_EQ(a.classes[5 * w + 14], ShadowClass::PeterPanning);
+  EXPECT_EQ(a.classes[5 * w + 1], ShadowClass::LightLeak);
+  EXPECT_EQ(shadowClassImage(a, w, h).width, w);
+}
+
+// A soft (PCF-like) signal is scored on its value: 0.4 where the exact answer is 0 is no
+// classification error (below 0.5) but a mean absolute error of 0.4 on those pixels.
+TEST(ShadowArtifacts, SoftValuesCountInTheMeanAbsoluteError) {
+  const std::vector<float> exact(16, 0.f), soft(16, 0.4f);
+  const std::vector<std::uint8_t> mask(16, 1);
+  const ShadowArtifacts a = classifyShadows(soft, exact, mask, 4, 4);
+  EXPECT_EQ(a.acne + a.peterPanning + a.lightLeak + a.boundaryErrors, 0);
+  EXPECT_NEAR(a.meanAbsError, 0.4, 1e-6);
+  EXPECT_THROW(classifyShadows(soft, exact, mask, 4, 4, std::vector<float>(3, 1.f)), Error);
 }

@@ -38,7 +38,21 @@ Image panel(const Image& variant, const Image& reference, const Image& heatmap) 
   return out;
 }
 
-std::string html(const std::string& s) {
+std::string number(const nlohmann::json& v) {
+  return v.is_number() ? fmt::format("{:.4g}", v.get<double>()) : "-";
+}
+
+const char* kStyle =
+    R"(body{font-family:system-ui,sans-serif;margin:24px;color:#222;max-width:1400px}
+table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:3px 7px;text-align:right}
+th{background:#f3f3f3}td:first-child{text-align:left}tr.pareto td:first-child{font-weight:bold;color:#b00}
+.variant{display:flex;gap:16px;align-items:flex-start;margin:18px 0}.split{position:relative;display:inline-block}
+.split img{display:block}.split img.top{position:absolute;top:0;left:0;clip-path:inset(0 calc(100% - var(--pos)) 0 0)}
+.split input{width:100%}.caption{font-size:12px;color:#555}img.plot{max-width:100%})";
+
+}  // namespace
+
+std::string htmlEscape(const std::string& s) {
   std::string out;
   for (char c : s) {
     if (c == '<')
@@ -55,19 +69,9 @@ std::string html(const std::string& s) {
   return out;
 }
 
-std::string number(const nlohmann::json& v) {
-  return v.is_number() ? fmt::format("{:.4g}", v.get<double>()) : "-";
+const char* reportStyle() {
+  return kStyle;
 }
-
-const char* kStyle =
-    R"(body{font-family:system-ui,sans-serif;margin:24px;color:#222;max-width:1400px}
-table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:3px 7px;text-align:right}
-th{background:#f3f3f3}td:first-child{text-align:left}tr.pareto td:first-child{font-weight:bold;color:#b00}
-.variant{display:flex;gap:16px;align-items:flex-start;margin:18px 0}.split{position:relative;display:inline-block}
-.split img{display:block}.split img.top{position:absolute;top:0;left:0;clip-path:inset(0 calc(100% - var(--pos)) 0 0)}
-.split input{width:100%}.caption{font-size:12px;color:#555}img.plot{max-width:100%})";
-
-}  // namespace
 
 std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlohmann::json& header,
                                      const Image& reference, std::vector<ReportVariant>& variants,
@@ -151,17 +155,18 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       std::string(kStyle) + "</style></head><body>\n";
   page += fmt::format(
       "<h1>Diptych comparison: {}</h1>\n<p>Reference: <b>{}</b> ({:.1f} ms{}). {}x{}. {}</p>\n",
-      html(header["scene"].get<std::string>()),
-      html(header["reference"]["spec"].get<std::string>()), header["reference"]["ms"].get<double>(),
+      htmlEscape(header["scene"].get<std::string>()),
+      htmlEscape(header["reference"]["spec"].get<std::string>()),
+      header["reference"]["ms"].get<double>(),
       header["reference"]["cached"].get<bool>() ? ", cached" : "",
       header["size"]["width"].get<int>(), header["size"]["height"].get<int>(),
-      html(header["method"].get<std::string>()));
+      htmlEscape(header["method"].get<std::string>()));
   std::string oneTime;
   for (const auto& [what, ms] : header["one_time_ms"].items())
     oneTime += fmt::format("{}{} {:.1f} ms", oneTime.empty() ? "" : ", ", what, ms.get<double>());
   page +=
       fmt::format("<p id=\"devices\">Measured on {}. One-time costs, not in any frame: {}.</p>\n",
-                  html(deviceSummary(header["devices"])), html(oneTime));
+                  htmlEscape(deviceSummary(header["devices"])), htmlEscape(oneTime));
   page +=
       "<h2>Error against time</h2>\n<img class=\"plot\" src=\"plot.svg\" alt=\"error versus time "
       "plot\">\n";
@@ -187,15 +192,15 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
                               v["signals"][slot]["relative_rmse"].get<double>());
     page +=
         fmt::format("<tr class=\"{}\"><td>{}</td><td>{:.2f}</td><td>{:.2f}x</td><td>{:.0f}</td>",
-                    v["pareto"].get<bool>() ? "pareto" : "", html(v["name"].get<std::string>()),
-                    v["total_ms"].get<double>(), v["speedup_vs_reference"].get<double>(),
-                    v["rays"].get<double>());
+                    v["pareto"].get<bool>() ? "pareto" : "",
+                    htmlEscape(v["name"].get<std::string>()), v["total_ms"].get<double>(),
+                    v["speedup_vs_reference"].get<double>(), v["rays"].get<double>());
     for (const auto& m : shown)
       page += "<td>" + number(v["metrics"].value(m, nlohmann::json())) + "</td>";
-    page += "<td style=\"text-align:left\">" + html(signal) + "</td></tr>\n";
+    page += "<td style=\"text-align:left\">" + htmlEscape(signal) + "</td></tr>\n";
   }
   page += "</table>\n<p class=\"caption\">Bold red: on the Pareto front of time and " +
-          html(plotMetric) +
+          htmlEscape(plotMetric) +
           ". Files: <a href=\"results.json\">results.json</a>, <a "
           "href=\"results.csv\">results.csv</a>.</p>\n";
   page +=
@@ -203,7 +208,7 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       "the reference. "
       "Beside it, the FLIP error heat map.</p>\n";
   for (const auto& v : results["variants"]) {
-    const std::string name = html(v["name"].get<std::string>());
+    const std::string name = htmlEscape(v["name"].get<std::string>());
     page += fmt::format(
         "<div class=\"variant\"><div><div class=\"caption\">{0}</div><div class=\"split\" "
         "style=\"--pos:50%\">"

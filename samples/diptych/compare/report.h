@@ -24,4 +24,8 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
                                      const Image& reference, std::vector<ReportVariant>& variants,
                                      const std::string& plotMetric);
 
+// Shared by every report page: HTML escaping and the style sheet.
+std::string htmlEscape(const std::string& s);
+const char* reportStyle();
+
 }  // namespace diptych::cli

@@ -1,5 +1,9 @@
 #include "samples/diptych/compare/runner.h"
 
+#include <unistd.h>
+
+#include <cstdio>
+
 #include "engine/core/timing.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
@@ -31,6 +35,34 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
     run.outputs[name] = ex.output(name);
   }
   return run;
+}
+
+// One line of progress: a bar on a terminal, a plain line otherwise (logs, CI).
+void progress(const char* label, int done, int total, const std::string& what) {
+  if (isatty(fileno(stderr))) {
+    const int width = 30, filled = total ? width * done / total : width;
+    std::fprintf(stderr, "\r[%s%s] %d/%d %-40.40s", std::string(filled, '#').c_str(),
+                 std::string(width - filled, '.').c_str(), done, total, what.c_str());
+    if (done == total) std::fputc('\n', stderr);
+  } else {
+    std::fprintf(stderr, "%s: %d/%d %s\n", label, done, total, what.c_str());
+  }
+  std::fflush(stderr);
+}
+
+std::vector<std::uint8_t> coverage(const Surface& gbuffer) {
+  std::vector<std::uint8_t> mask(std::size_t(gbuffer.desc.width) * gbuffer.desc.height);
+  for (int y = 0; y < gbuffer.desc.height; ++y)
+    for (int x = 0; x < gbuffer.desc.width; ++x)
+      mask[std::size_t(y) * gbuffer.desc.width + x] = gbuffer.u(x, y, 0) != 0u;
+  return mask;
+}
+
+std::vector<float> layer(const Surface& s, int l) {
+  std::vector<float> v(std::size_t(s.desc.width) * s.desc.height);
+  for (int y = 0; y < s.desc.height; ++y)
+    for (int x = 0; x < s.desc.width; ++x) v[std::size_t(y) * s.desc.width + x] = s.f(x, y, 0, l);
+  return v;
 }
 
 std::string slotSignal(const Recipe& recipe, const std::string& slot) {

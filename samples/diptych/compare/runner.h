@@ -30,4 +30,12 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
 // or empty when the recipe has no producer for it.
 std::string slotSignal(const Recipe& recipe, const std::string& slot);
 
+// One line of progress on stderr: a bar on a terminal, a plain "LABEL: done/total what" line
+// otherwise (logs, CI).
+void progress(const char* label, int done, int total, const std::string& what);
+// G-buffer coverage: 1 where a surface is seen.
+std::vector<std::uint8_t> coverage(const Surface& gbuffer);
+// One layer of a float surface, row-major.
+std::vector<float> layer(const Surface& s, int l);
+
 }  // namespace diptych::cli

@@ -1,0 +1,354 @@
+#include "samples/diptych/sweep/sweep.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <memory>
+
+#include "engine/core/error.h"
+#include "engine/core/image.h"
+#include "engine/gl/context.h"
+#include "engine/metrics/signal_metrics.h"
+#include "engine/rt/surface.h"
+#include "engine/scene/camera_math.h"
+#include "engine/scene/load.h"
+#include "passes/common/hits_texel.h"
+#include "passes/raster/shadow_map_frusta.h"
+#include "passes/registry.h"
+#include "passes/slots.h"
+#include "samples/diptych/compare/runner.h"
+
+namespace diptych::cli {
+namespace {
+
+constexpr double kDegrees = 3.14159265358979323846 / 180.0;
+
+// The scene with the swept light turned to (elevation, azimuth): elevation above the xz plane,
+// azimuth from +x toward +z; the light travels toward the scene.
+Scene sceneAt(const Scene& base, const nlohmann::json& point, int light) {
+  Scene s = base;
+  if (!point.contains("elevation") && !point.contains("azimuth")) return s;
+  Light& l = s.lights[light];
+  const vec3 toLight = -glm::normalize(l.direction);
+  double elevation = std::asin(std::clamp(double(toLight.y), -1.0, 1.0)) / kDegrees;
+  double azimuth = std::atan2(double(toLight.z), double(toLight.x)) / kDegrees;
+  elevation = point.value("elevation", elevation);
+  azimuth = point.value("azimuth", azimuth);
+  const double e = elevation * kDegrees, a = azimuth * kDegrees;
+  l.direction =
+      -vec3(float(std::cos(e) * std::cos(a)), float(std::sin(e)), float(std::cos(e) * std::sin(a)));
+  return s;
+}
+
+nlohmann::json splitPoint(const nlohmann::json& point, bool light) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [k, v] : point.items())
+    if ((std::find(lightKeys().begin(), lightKeys().end(), k) != lightKeys().end()) == light)
+      out[k] = v;
+  return out;
+}
+
+Recipe pointRecipe(const SlotOverride& base, const nlohmann::json& params) {
+  Recipe recipe = defaultHybridRecipe();
+  SlotOverride o = base;
+  o.params.update(params);
+  applySlotOverride(recipe, o, builtinPasses());
+  return recipe;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+// One scene state: its world, the exact signal, the receiver mask and per-pixel geometry.
+struct StateReference {
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<RenderWorld> world;
+  GraphRun exact;
+  std::string exactSignal;
+  std::vector<std::uint8_t> mask;
+  std::vector<float> footprint;  // world size of a pixel on its receiver (sqrt of its area)
+  std::vector<double> incidence, lightDepth;  // per receiver pixel (degrees; see texelWorld)
+  std::vector<double> receiverFootprints;
+  std::vector<vec3> slopeDirections;  // per receiver pixel: unit direction of steepest light depth
+};
+
+// Geometry of the receiver pixels against the camera and the swept light.
+void measureGeometry(StateReference& s, const FrameSettings& frame, int light) {
+  const Surface& gb = s.exact.outputs.at("gbuffer.hits");
+  const int w = gb.desc.width, h = gb.desc.height;
+  s.footprint.assign(std::size_t(w) * h, 0.f);
+  const double pixelAngle = 2.0 * std::tan(frame.camera.verticalFov / 2.0) / h;
+  const Light* l = light < int(s.scene->lights.size()) ? &s.scene->lights[light] : nullptr;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = std::size_t(y) * w + x;
+      if (!s.mask[i]) continue;
+      const auto hit = hitsTexel(gb, x, y);
+      const vec3 eye = frame.camera.position;
+      SurfacePoint p = makeSurfacePoint(*s.scene, s.world->geometry(), *hit, vec3(0.f));
+      const vec3 view = p.position - eye;
+      const double d = glm::length(view);
+      const double cosView = std::abs(glm::dot(glm::normalize(view), p.faceNormal));
+      s.footprint[i] = float(d * pixelAngle / std::sqrt(std::max(cosView, 1e-3)));
+      s.receiverFootprints.push_back(s.footprint[i]);
+      if (!l) continue;
+      const vec3 toLight = l->type == LightType::Directional
+                               ? -glm::normalize(l->direction)
+                               : glm::normalize(l->position - p.position);
+      vec3 n = p.faceNormal;
+      if (glm::dot(n, toLight) < 0) n = -n;  // the light's side, as shadow rays and maps do
+      const vec3 t = n - glm::dot(n, toLight) * toLight;  // n's part across the light ray
+      s.slopeDirections.push_back(glm::length(t) > 1e-6f ? glm::normalize(t) : vec3(0.f));
+      s.incidence.push_back(std::acos(std::clamp(double(glm::dot(n, toLight)), -1.0, 1.0)) /
+                            kDegrees);
+      const vec3 rel = p.position - l->position;
+      s.lightDepth.push_back(
+          l->type == LightType::Spot
+              ? double(glm::dot(rel, glm::normalize(l->direction)))
+              : double(std::max({std::abs(rel.x), std::abs(rel.y), std::abs(rel.z)})));
+    }
+}
+
+// World size w of one shadow-map texel at the receivers (median), for the point's resolution.
+// Orthographic maps: the texel's extent along the receiver's steepest light-depth direction t,
+// |t.u| w_u + |t.v| w_v (texels need not be square in world units: the fit is to the light-space
+// box of the scene), so that (w/2) tan(theta) bounds the depth change over half a texel.
+// Perspective and cube maps: the isotropic footprint at the receivers' light depth.
+double texelWorld(const StateReference& s, int resolution, int light) {
+  if (light >= int(s.scene->lights.size())) return 0;
+  shadowmap::FrustumOptions options;
+  options.resolution = resolution;
+  const auto frusta =
+      shadowmap::fitLightFrusta(s.scene->lights, s.world->geometry().bounds, options);
+  const auto& f = frusta[light];
+  if (f.kind == shadowmap::ViewKind::Unshadowed) return 0;
+  if (f.kind != shadowmap::ViewKind::Ortho) return f.texelScale * median(s.lightDepth);
+  const mat4& m = f.viewProj[0];  // column-major: row r is (m[0][r], m[1][r], m[2][r])
+  const vec3 du(m[0][0], m[1][0], m[2][0]), dv(m[0][1], m[1][1], m[2][1]);
+  const double wu = 2.0 / (resolution * glm::length(du)), wv = 2.0 / (resolution * glm::length(dv));
+  std::vector<double> w;
+  for (const vec3& t : s.slopeDirections)
+    w.push_back(glm::length(t) > 0.f ? std::abs(glm::dot(t, glm::normalize(du))) * wu +
+                                           std::abs(glm::dot(t, glm::normalize(dv))) * wv
+                                     : std::max(wu, wv));
+  return median(w);
+}
+
+void writeAtomically(const std::filesystem::path& path, const std::string& text) {
+  const auto tmp = path.string() + ".tmp";
+  std::ofstream(tmp) << text;
+  std::filesystem::rename(tmp, path);
+}
+
+std::string csvOf(const nlohmann::json& results) {
+  std::vector<std::string> keys, signal;
+  for (const auto& a : results["spec"]["axes"]) keys.push_back(a["key"]);
+  for (const auto& p : results["points"])
+    for (const auto& [k, _] : p["signal"].items())
+      if (std::find(signal.begin(), signal.end(), k) == signal.end()) signal.push_back(k);
+  std::string csv = "index";
+  for (const auto& k : keys) csv += "," + k;
+  csv += ",producer_ms,total_ms,texel_world,incidence_deg";
+  for (const auto& k : signal) csv += "," + k;
+  csv += "\n";
+  for (const auto& p : results["points"]) {
+    csv += std::to_string(p["index"].get<int>());
+    for (const auto& k : keys) {
+      const auto& v = p["params"][k];
+      csv += "," + (v.is_string() ? v.get<std::string>() : v.dump());
+    }
+    csv += fmt::format(",{},{},{},{}", p["producer_ms"].dump(), p["total_ms"].dump(),
+                       p["geometry"]["texel_world"].dump(), p["geometry"]["incidence_deg"].dump());
+    for (const auto& k : signal)
+      csv += "," + (p["signal"].contains(k) ? p["signal"][k].dump() : "");
+    csv += "\n";
+  }
+  return csv;
+}
+
+}  // namespace
+
+nlohmann::json runSweep(const SweepOptions& o) {
+  const PassRegistry& registry = builtinPasses();
+  if (o.axes.empty()) throw InputError("--vary", "", "nothing to sweep: give at least one --vary");
+  if (o.frames < 1 || o.warmup < 0)
+    throw InputError("--frames", "", "need at least one measured frame");
+  const SlotOverride base = parseSlotOverride(o.producer);
+  const std::vector<nlohmann::json> points = cartesianProduct(o.axes);
+  const Scene scene = loadScene(o.scene);
+  const FrameSettings frame{o.width, o.height,
+                            scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
+
+  // Every check before any rendering: the light, the receiver, and each point's recipe compiled
+  // (the producer's own parameter checks reject unknown keys and bad values).
+  if (o.light < 0 || (o.light >= int(scene.lights.size()) && !scene.lights.empty()))
+    throw InputError("--light", std::to_string(o.light), "the scene has no such light");
+  const bool sweepsLight =
+      std::any_of(o.axes.begin(), o.axes.end(), [](auto& a) { return a.light; });
+  if (sweepsLight) {
+    const auto& axis = *std::find_if(o.axes.begin(), o.axes.end(), [](auto& a) { return a.light; });
+    if (o.light < 0 || o.light >= int(scene.lights.size()))
+      throw InputError("--light", std::to_string(o.light), "the scene has no such light");
+    if (scene.lights[o.light].type != LightType::Directional)
+      throw InputError("--vary-light", axis.text,
+                       "light " + std::to_string(o.light) + " '" + scene.lights[o.light].name +
+                           "' is not directional: elevation and azimuth turn a directional light");
+  }
+  std::vector<int> receivers;
+  if (!o.receiver.empty()) {
+    std::string known;
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+      if (scene.instances[i].name == o.receiver) receivers.push_back(int(i));
+      known += (known.empty() ? "" : ", ") + scene.instances[i].name;
+    }
+    if (receivers.empty())
+      throw InputError("--receiver", o.receiver, "no object of that name (objects: " + known + ")");
+  }
+  std::string signal;
+  for (const nlohmann::json& point : points) {
+    const Recipe recipe = pointRecipe(base, splitPoint(point, false));
+    signal = slotSignal(recipe, base.slot);
+    try {
+      compileGraph(recipe, registry, sceneAt(scene, point, o.light), frame, {signal});
+    } catch (const InputError& e) {
+      // e.place() names the key ("passes[1].params.kernel"), e.message() what is wrong with it.
+      throw InputError("--vary", point.dump(),
+                       (e.place().empty() ? "" : e.place() + ": ") + e.message());
+    }
+  }
+
+  nlohmann::json spec = {{"scene", o.scene},
+                         {"producer", o.producer},
+                         {"size", {o.width, o.height}},
+                         {"frames", o.frames},
+                         {"warmup", o.warmup},
+                         {"light", o.light},
+                         {"band_px", o.band},
+                         {"reach_px", o.reach},
+                         {"receiver", o.receiver},
+                         {"axes", nlohmann::json::array()}};
+  for (const SweepAxis& a : o.axes)
+    spec["axes"].push_back({{"key", a.key}, {"text", a.text}, {"light", a.light}});
+  nlohmann::json results = {
+      {"spec", spec},
+      {"method",
+       fmt::format("each point: the producer beside the exact producer of slot '{}' on the same "
+                   "G-buffer ({}x{}); times: median CPU ms of {} frames after {} warm-up frames",
+                   base.slot, o.width, o.height, o.frames, o.warmup)},
+      {"points", nlohmann::json::array()}};
+  const auto resultsFile = o.out / "results.json";
+  std::map<std::string, nlohmann::json> done;
+  if (std::filesystem::exists(resultsFile)) {
+    nlohmann::json old;
+    try {
+      old = nlohmann::json::parse(std::ifstream(resultsFile));
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(resultsFile.string(), "", std::string("cannot resume: ") + e.what());
+    }
+    if (!old.contains("spec") || old["spec"] != spec)
+      throw InputError(resultsFile.string(), "spec",
+                       "belongs to a different sweep (scene, producer, axes or settings differ): "
+                       "use another --out or remove it");
+    for (const auto& p : old["points"]) done[p["params"].dump()] = p;
+  }
+  std::filesystem::create_directories(o.out / "classes");
+
+  auto context = gl::createContext(gl::ContextKind::Osmesa, o.width, o.height);
+  std::unique_ptr<StateReference> state;
+  std::string stateKey;
+  int resumed = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const nlohmann::json& point = points[i];
+    const std::string key = point.dump();
+    if (auto it = done.find(key); it != done.end()) {
+      results["points"].push_back(it->second);
+      ++resumed;
+      continue;
+    }
+    const nlohmann::json lightPart = splitPoint(point, true), passPart = splitPoint(point, false);
+    if (!state || lightPart.dump() != stateKey) {  // a new scene state: its exact reference
+      progress(o.label, int(i), int(points.size()), "exact reference " + lightPart.dump());
+      state.reset();
+      state = std::make_unique<StateReference>();
+      state->scene = std::make_unique<Scene>(sceneAt(scene, point, o.light));
+      state->world = std::make_unique<RenderWorld>(*state->scene, context.get());
+      const Recipe exactRecipe = defaultHybridRecipe();
+      state->exactSignal = slotSignal(exactRecipe, base.slot);
+      state->exact =
+          runGraph(exactRecipe, *state->world, frame, {"gbuffer.hits", state->exactSignal}, 0, 1);
+      state->mask = coverage(state->exact.outputs.at("gbuffer.hits"));
+      if (!receivers.empty()) {
+        const Surface& gb = state->exact.outputs.at("gbuffer.hits");
+        for (int y = 0; y < o.height; ++y)
+          for (int x = 0; x < o.width; ++x) {
+            auto& m = state->mask[std::size_t(y) * o.width + x];
+            m = m && std::count(receivers.begin(), receivers.end(), int(gb.u(x, y, 0)) - 1);
+          }
+      }
+      measureGeometry(*state, frame, o.light);
+      stateKey = lightPart.dump();
+    }
+    const Recipe recipe = pointRecipe(base, passPart);
+    const GraphRun run = runGraph(recipe, *state->world, frame, {signal}, o.warmup, o.frames);
+    const std::string node = signal.substr(0, signal.find('.'));
+    nlohmann::json row = {{"index", int(i)},
+                          {"params", point},
+                          {"producer_ms", run.passMs.value(node, 0.0)},
+                          {"total_ms", run.totalMs},
+                          {"pass_ms", run.passMs}};
+    const Surface& mine = run.outputs.at(signal);
+    const Surface& exact = state->exact.outputs.at(state->exactSignal);
+    nlohmann::json measured = nlohmann::json::object();
+    if (base.slot == "visibility") {
+      const int l = std::min(o.light, mine.desc.layers - 1);
+      const ShadowArtifacts a =
+          classifyShadows(layer(mine, l), layer(exact, l), state->mask, o.width, o.height,
+                          state->footprint, o.band, o.reach);
+      measured = {{"acne_rate", a.acneRate()},
+                  {"peter_panning_rate", a.peterPanningRate()},
+                  {"light_leak_rate", a.lightLeakRate()},
+                  {"misclassified", a.misclassified()},
+                  {"mean_abs_error", a.meanAbsError},
+                  {"displacement_px", a.displacementPx},
+                  {"displacement_world", a.displacementWorld},
+                  {"acne", a.acne},
+                  {"peter_panning", a.peterPanning},
+                  {"light_leak", a.lightLeak},
+                  {"boundary_errors", a.boundaryErrors},
+                  {"lit_outside", a.litOutside},
+                  {"shadow_outside", a.shadowOutside}};
+      const std::string classFile = fmt::format("classes/p{:04d}.png", i);
+      writeImage(o.out / classFile, shadowClassImage(a, o.width, o.height));
+      row["files"] = {{"classes", classFile}};
+    } else {
+      const SignalError e = compareRadiance(mine.toImage(), exact.toImage(), state->mask);
+      measured = {{"pixels", e.pixels}, {"rmse", e.rmse}, {"relative_rmse", e.relativeRmse}};
+    }
+    row["signal"] = measured;
+    // The receivers' geometry for the analytic predictions (docs/shadow-bias.md).
+    nlohmann::json params = base.params;
+    params.update(passPart);
+    row["geometry"] = {
+        {"texel_world", texelWorld(*state, params.value("resolution", 2048), o.light)},
+        {"incidence_deg", median(state->incidence)},
+        {"pixel_world", median(state->receiverFootprints)}};
+    results["points"].push_back(row);
+    writeAtomically(resultsFile, results.dump(1));
+    writeAtomically(o.out / "results.csv", csvOf(results));
+    progress(o.label, int(i) + 1, int(points.size()), passPart.dump() + " " + lightPart.dump());
+  }
+  // A completed resume rewrites the files in point order.
+  writeAtomically(resultsFile, results.dump(1));
+  writeAtomically(o.out / "results.csv", csvOf(results));
+  std::fprintf(stderr, "%s: %zu points, %d resumed from %s\n", o.label, points.size(), resumed,
+               resultsFile.string().c_str());
+  return results;
+}
+
+}  // namespace diptych::cli

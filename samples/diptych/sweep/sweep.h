@@ -1,0 +1,33 @@
+#pragma once
+// `diptych sweep` (docs/sweep.md): the cartesian product of parameter values of one slot
+// producer, each point measured against the exact producer of the same slot on the same
+// G-buffer, one exact reference per distinct scene state. results.json / results.csv are
+// rewritten after every point, so an interrupted sweep resumes from what it wrote.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "samples/diptych/sweep/spec.h"
+
+namespace diptych::cli {
+
+struct SweepOptions {
+  std::string scene;
+  std::string producer;  // SLOT=TYPE[:key=value,...], the fixed part of every point
+  std::vector<SweepAxis> axes;
+  int width = 320, height = 240, frames = 1, warmup = 0;
+  int light = 0;             // the light whose visibility is classified and --vary-light moves
+  int band = 2, reach = 16;  // classifyShadows (engine/metrics/signal_metrics.h)
+  std::string receiver;      // restrict the measurement to this object's pixels (empty: all)
+  std::filesystem::path out = "sweep";
+  const char* label = "sweep";  // progress prefix
+};
+
+// Validates everything (axes, keys through the producer's own parameter checks, the receiver,
+// a resumable results.json) before rendering; then renders the missing points. Returns the
+// results.json document: {"spec", "method", "points": [...]}.
+nlohmann::json runSweep(const SweepOptions& options);
+
+}  // namespace diptych::cli

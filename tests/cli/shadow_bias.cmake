@@ -1,0 +1,45 @@
+# diptych shadow-bias end to end on a small study, then report.html in headless Chromium (as
+# compare.cmake does): no console messages, every plot and class map loaded, every curve a row.
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
+expect_success(shadow-bias ARGS shadow-bias --modes none,constant,slope --resolutions 256
+               --elevations 20,60 --points 4 --size 96x72 --out sb
+               FILES sb/report.html sb/summary.json sb/summary.csv sb/plots/constant.svg
+                     sb/plots/constant.png sb/plots/slope.svg sb/plots/time.svg
+                     sb/constant/results.json sb/constant/results.csv)
+foreach(expected "constant" "slope" "predicted" "wrote")
+  string(FIND "${LAST_STDOUT}" "${expected}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "shadow-bias summary lacks '${expected}':\n${LAST_STDOUT}")
+  endif()
+endforeach()
+# The study resumes: a second run renders nothing.
+expect_success(shadow-bias-resume ARGS shadow-bias --modes none,constant,slope --resolutions 256
+               --elevations 20,60 --points 4 --size 96x72 --out sb FILES sb/report.html)
+string(FIND "${LAST_STDERR}" "exact reference" pos)
+if(NOT pos EQUAL -1)
+  message(FATAL_ERROR "the resumed study rendered again:\n${LAST_STDERR}")
+endif()
+expect_failure(shadow-bias-unknown-mode EXPECT "--modes" "sharp" ARGS shadow-bias --modes sharp)
+
+find_program(CHROMIUM chromium)
+if(NOT CHROMIUM)
+  message(FATAL_ERROR "chromium not found: install Debian's chromium (bash .ci/install-deps)")
+endif()
+set(flags --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking
+          --disable-component-update --disable-sync --user-data-dir=${WORK_DIR}/chromium-profile)
+execute_process(COMMAND ${CHROMIUM} ${flags} --enable-logging=stderr --v=0 --virtual-time-budget=5000
+                        --dump-dom "file://${WORK_DIR}/sb/report.html"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE dom ERROR_VARIABLE log TIMEOUT 120)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "chromium --dump-dom failed (${rc}):\n${log}")
+endif()
+string(REGEX MATCH "CONSOLE[^\n]*" console "${log}")
+if(console)
+  message(FATAL_ERROR "report.html logged to the console: ${console}")
+endif()
+# 2 curves (one per elevation, one resolution) for each of none, constant and slope.
+string(FIND "${dom}" "data-plots-loaded=\"true\"" loaded)
+string(FIND "${dom}" "data-rows=\"6\"" rows)
+if(loaded EQUAL -1 OR rows EQUAL -1)
+  message(FATAL_ERROR "report.html: plots not loaded or best-table rows missing:\n${dom}")
+endif()
