@@ -4,6 +4,7 @@
 
 #include "engine/core/error.h"
 #include "engine/scene/camera_math.h"
+#include "engine/scene/scene_transform.h"
 #include "engine/scene/validate.h"
 
 namespace diptych {
@@ -27,6 +28,9 @@ Scene loadScene(const std::filesystem::path& path) {
     if (!box.empty() && allFinite(box.lo) && allFinite(box.hi)) scene.camera = frameBounds(box);
   }
   validateScene(scene);
+  // Far from the origin, float world coordinates would spend their bits on the offset:
+  // move the world so the camera sits at the origin (docs/numerics.md).
+  rebaseIfFar(scene);
   return scene;
 }
 
