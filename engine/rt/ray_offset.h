@@ -9,17 +9,20 @@
 // normal n by d = |n| . error and each coordinate is then rounded one more float away from the
 // surface, so the addition's own rounding cannot pull it back.
 //
-// The error box. p = (1-u-v) p0 + u p1 + v p2 is rounded at the scale of the vertices, not of p
-// (a large triangle passing near an axis plane gives a p_i close to 0 whose error is an ULP of
-// the vertex coordinates), and Embree's watertight test, which re-finds the surface from the new
-// origin, works on vertex - origin differences whose rounding mixes the axes. So the bound used
-// is isotropic: error = kRelativeOffset * M on every axis, with
-//   M = max_i max(|p_i|, magnitude_i),   magnitude = vertexMagnitude() of the triangle,
-// and kRelativeOffset = 256 FLT_EPSILON, the size of Wächter and Binder's 256-ULP step (Ray
-// Tracing Gems ch. 6) that this code used before. Unlike that method there is no absolute step
-// near the origin: their 1/65536 fallback below |p| = 1/32 was the floor that dominated small
-// scenes (a 1e-6-scaled Whitted scene lost every shadow and secondary hit, issue 13).
-// The only floor left is FLT_MIN (denormals), i.e. scenes below ~1e-30 units.
+// The error box has two terms:
+//   e_i = kAxisOffset * max(|p_i|, magnitude_i) + kCrossOffset * M,   M = max_i of the same.
+// The first is the rounding of p_i itself. p = (1-u-v) p0 + u p1 + v p2 is rounded at the scale
+// of the vertices, not of p (a large triangle passing near an axis plane gives a p_i close to 0
+// whose error is an ULP of the vertex coordinates), hence magnitude = vertexMagnitude(); its
+// constant, 256 FLT_EPSILON, is the size of Wächter and Binder's 256-ULP step (Ray Tracing Gems
+// ch. 6) that this code used before. The second covers Embree's watertight test, which re-finds
+// the surface from vertex - origin differences whose rounding mixes the axes: a tilted plane
+// through y = 0 with x ~ 10 has an error ~ ulp(10) in its plane distance even where p_y = 0.
+// Measured (tests/numerics/test_reintersection.cpp): 1 FLT_EPSILON already gives no self hit
+// over scales and offsets 1e-6 .. 1e6; 4 is used. Neither term has an absolute floor: Wächter
+// and Binder's 1/65536 fallback below |p| = 1/32 was the floor that dominated small scenes (a
+// 1e-6-scaled Whitted scene lost every shadow and secondary hit, issue 13). The only floor left
+// is FLT_MIN (denormals), i.e. scenes below ~1e-30 units.
 //
 // Users with their own surfaces (analytic quadrics, SDFs) pass their own per-axis error bound to
 // offsetRayOriginByError (pbrt gives gamma(5) |p| for a reprojected sphere hit), or the
@@ -33,7 +36,8 @@
 namespace diptych {
 
 namespace ray_offset {
-inline constexpr float kRelativeOffset = 256.f * FLT_EPSILON;  // error bound per unit of M
+inline constexpr float kAxisOffset = 256.f * FLT_EPSILON;  // per unit of max(|p_i|, magnitude_i)
+inline constexpr float kCrossOffset = 4.f * FLT_EPSILON;   // per unit of M, on every axis
 }  // namespace ray_offset
 
 // pbrt-v4's OffsetRayOrigin: p moved along n (unit, pointing to the side the new ray leaves
@@ -43,19 +47,22 @@ inline vec3 offsetRayOriginByError(const vec3& p, const vec3& n, const vec3& err
   vec3 o = p + d * n;
   for (int i = 0; i < 3; ++i) {
     // Round away from the surface: the sum above was rounded to nearest, possibly back.
-    if (n[i] > 0.f) o[i] = std::nextafter(o[i], INFINITY);
-    else if (n[i] < 0.f) o[i] = std::nextafter(o[i], -INFINITY);
+    if (n[i] > 0.f)
+      o[i] = std::nextafter(o[i], INFINITY);
+    else if (n[i] < 0.f)
+      o[i] = std::nextafter(o[i], -INFINITY);
   }
   return o;
 }
 
-// The isotropic error bound of a point with coordinates p computed from coordinates of
-// magnitude `magnitude` (per axis; zero: p alone): kRelativeOffset * M on each axis, M as above,
-// never below FLT_MIN so that a point exactly at the origin still moves.
-inline vec3 positionErrorBound(const vec3& p, const vec3& magnitude = vec3(0.f)) {
+// The error bound e above of a point p computed from coordinates of magnitude `magnitude` (per
+// axis; zero: p alone). M is never below FLT_MIN, so a point exactly at the origin still moves.
+inline vec3 positionErrorBound(const vec3& p, const vec3& magnitude = vec3(0.f),
+                               float axisOffset = ray_offset::kAxisOffset,
+                               float crossOffset = ray_offset::kCrossOffset) {
   const vec3 m = glm::max(glm::abs(p), magnitude);
   const float scale = std::max({m.x, m.y, m.z, FLT_MIN});
-  return vec3(ray_offset::kRelativeOffset * scale);
+  return axisOffset * m + vec3(crossOffset * scale);
 }
 
 // p: a point reconstructed on a surface; n: that surface's unit geometric normal, pointing to

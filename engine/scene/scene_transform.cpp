@@ -24,9 +24,8 @@ Scene similarityTransformed(const Scene& input, double scale, const dvec3& trans
     throw Error("similarityTransformed: scale must be finite and positive, got " +
                 std::to_string(scale));
   Scene s = input;
-  const glm::dmat4 similarity =
-      glm::dmat4(scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0, translation.x, translation.y,
-                 translation.z, 1);
+  const glm::dmat4 similarity = glm::dmat4(scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0,
+                                           translation.x, translation.y, translation.z, 1);
   for (Instance& inst : s.instances) inst.transform = mat4(similarity * glm::dmat4(inst.transform));
   Camera& c = s.camera;
   c.position = moved(c.position, scale, translation);
@@ -62,8 +61,8 @@ dvec3 rebaseIfFar(Scene& s) {
   const vec3 side = box.hi - box.lo;
   const double extent = std::max({double(side.x), double(side.y), double(side.z)});
   const vec3& p = s.camera.position;
-  const double offset = std::max({std::fabs(double(p.x)), std::fabs(double(p.y)),
-                                  std::fabs(double(p.z))});
+  const double offset =
+      std::max({std::fabs(double(p.x)), std::fabs(double(p.y)), std::fabs(double(p.z))});
   if (!(offset > kRebaseRatio * extent)) return dvec3(0.0);
   const dvec3 origin(p);
   rebaseScene(s, origin);

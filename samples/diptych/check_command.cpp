@@ -44,9 +44,9 @@ std::vector<double> parseList(const std::string& option, const std::string& text
     }
     if (used != item.size() || !std::isfinite(v) || (positive ? !(v > 0) : false) ||
         std::fabs(v) > 1e30)
-      throw InputError(option, "", "expected comma-separated finite numbers" +
-                                       std::string(positive ? " > 0" : "") + ", got '" + item +
-                                       "'");
+      throw InputError(option, "",
+                       "expected comma-separated finite numbers" +
+                           std::string(positive ? " > 0" : "") + ", got '" + item + "'");
     values.push_back(v);
   }
   return values;
@@ -57,7 +57,8 @@ std::pair<int, int> parseSize(const std::string& text) {
   char x = 0, extra = 0;
   if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
       w <= 0 || h <= 0 || w > 4096 || h > 4096)
-    throw InputError("--size", "", "expected WIDTHxHEIGHT with each in 1..4096, got '" + text + "'");
+    throw InputError("--size", "",
+                     "expected WIDTHxHEIGHT with each in 1..4096, got '" + text + "'");
   return {w, h};
 }
 
@@ -166,7 +167,8 @@ int runCheck(const CheckOptions& o) {
   const Scene base = loadScene(o.scene);
   const std::vector<CheckCase> cases = checkCases(scales, offsets);
   std::filesystem::create_directories(o.out);
-  std::unique_ptr<gl::GlContext> context = gl::createContext(gl::ContextKind::Osmesa, width, height);
+  std::unique_ptr<gl::GlContext> context =
+      gl::createContext(gl::ContextKind::Osmesa, width, height);
 
   struct Reference {
     std::map<std::string, Image> images;
@@ -208,9 +210,9 @@ int runCheck(const CheckOptions& o) {
     Reference& ref = references[c.grazing];
     if (c.reference()) ref.probe = probe;
     const ShadowDifference shadows = compareShadows(probe, ref.probe);
-    jc["probe"] = {{"primary_hits", probe.primaryHits},   {"secondary_rays", probe.secondaryRays},
-                   {"self_hits", probe.selfHits},         {"lost_shadows", shadows.lost},
-                   {"gained_shadows", shadows.gained},    {"compared", shadows.compared}};
+    jc["probe"] = {{"primary_hits", probe.primaryHits}, {"secondary_rays", probe.secondaryRays},
+                   {"self_hits", probe.selfHits},       {"lost_shadows", shadows.lost},
+                   {"gained_shadows", shadows.gained},  {"compared", shadows.compared}};
     jc["shadow_map_warnings"] =
         anyShadowMap ? shadowMapDepthWarnings(scene, 2048) : std::vector<std::string>{};
     bool pass = probe.selfHits == 0;

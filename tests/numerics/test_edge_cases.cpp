@@ -55,8 +55,8 @@ TEST(EdgeCases, GrazingReflectionsAndShadowRaysLeaveThePlane) {
         selfHits += rt.intersect(spawnRay(p, r), 0.f, kInf) ? 1 : 0;
         // A light just above the horizon, 100 units away.
         Light light;
-        light.position = p.position + 100.f * scale *
-                                          vec3(float(std::cos(angle)), float(std::sin(angle)), 0.f);
+        light.position =
+            p.position + 100.f * scale * vec3(float(std::cos(angle)), float(std::sin(angle)), 0.f);
         const OcclusionRay s =
             makeShadowRay(light, {p.position, p.faceNormal, p.positionMagnitude});
         shadowed += rt.occluded(s.origin, s.direction, s.tnear, s.tfar) ? 1 : 0;
@@ -133,13 +133,14 @@ TEST(EdgeCases, SliverTrianglesDoNotReintersect) {
     Mesh m;
     // Long edge 1, width 1e-4, tilted, away from the origin.
     const vec3 base = scale * vec3(3.f, -2.f, 5.f);
-    const vec3 a = glm::normalize(vec3(1.f, 0.3f, -0.2f)), b = glm::normalize(vec3(0.1f, 1.f, 0.4f));
+    const vec3 a = glm::normalize(vec3(1.f, 0.3f, -0.2f)),
+               b = glm::normalize(vec3(0.1f, 1.f, 0.4f));
     m.positions = {base, base + scale * a, base + scale * (0.5f * a + 1e-4f * b)};
     m.indices = {0, 1, 2};
     const WorldGeometry world = flattenScene(testgeo::sceneOf({m}));
     RtScene rt(device, world);
-    const glm::dvec3 exact = glm::normalize(glm::cross(glm::dvec3(m.positions[1] - m.positions[0]),
-                                                       glm::dvec3(m.positions[2] - m.positions[0])));
+    const glm::dvec3 exact = glm::normalize(glm::cross(
+        glm::dvec3(m.positions[1] - m.positions[0]), glm::dvec3(m.positions[2] - m.positions[0])));
     const vec3 n = geometricNormal(world.meshes[0], 0);
     const vec3 magnitude = vertexMagnitude(m.positions[0], m.positions[1], m.positions[2]);
     for (int k = 0; k < 5000; ++k) {
@@ -156,15 +157,16 @@ TEST(EdgeCases, SliverTrianglesDoNotReintersect) {
       selfHits += rt.intersect(Ray{o, d}, 0.f, kInf) ? 1 : 0;
     }
   }
-  std::printf("[numerics] slivers: %ld rays, %ld self hits (%ld near-tangent rays skipped)\n",
-              rays, selfHits, skipped);
+  std::printf("[numerics] slivers: %ld rays, %ld self hits (%ld near-tangent rays skipped)\n", rays,
+              selfHits, skipped);
   EXPECT_EQ(selfHits, 0);
 }
 
 TEST(EdgeCases, CoplanarOverlappingSurfacesActAsOneForSecondaryRays) {
   // Two quads over the same region of one tilted plane, triangulated along opposite diagonals.
   const vec3 origin(3.f, 1.f, 2.f);
-  const vec3 e1 = glm::normalize(vec3(1.f, 0.2f, 0.1f)), e2 = glm::normalize(vec3(-0.1f, 0.3f, 1.f));
+  const vec3 e1 = glm::normalize(vec3(1.f, 0.2f, 0.1f)),
+             e2 = glm::normalize(vec3(-0.1f, 0.3f, 1.f));
   const auto corner = [&](float s, float t) { return origin + 4.f * s * e1 + 4.f * t * e2; };
   Mesh a, b;
   a.positions = b.positions = {corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)};

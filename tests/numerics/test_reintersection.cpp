@@ -2,10 +2,11 @@
 // random triangles of log-uniform size 1e-6 .. 1e6 at log-uniform distance 1e-6 .. 1e6 from the
 // origin (kept where the float vertices still resolve the triangle: size >= 1e-4 x distance),
 // random points on them, and secondary rays leaving in random directions of either hemisphere
-// (reflected: offset to the front, transmitted: to the back) from offsetRayOrigin. A ray that
+// (reflected: offset to the front, transmitted: to the back; half of them grazing, 1e-4 .. 1
+// rad off the plane) from offsetRayOrigin. A ray that
 // leaves a flat triangle can never meet it again, so every hit of its own triangle is a
-// self-intersection ("miss" of the offset). Bound: zero, at kRelativeOffset = 256 FLT_EPSILON.
-// The same trial with smaller constants is printed to show the margin (docs/numerics.md).
+// self-intersection ("miss" of the offset). Bound: zero with the engine's constants. The same
+// trial with smaller constants is printed to show the margin (docs/numerics.md).
 #include <gtest/gtest.h>
 
 #include <cfloat>
@@ -34,8 +35,9 @@ vec3 randomUnit(std::mt19937& rng) {
   }
 }
 
-// relativeOffset: the error bound per unit of coordinate magnitude (0: no offset at all).
-Trial runTrial(float relativeOffset, int triangles, int pointsPerTriangle, std::uint32_t seed) {
+// axis, cross: the two constants of positionErrorBound (both 0: no offset at all).
+Trial runTrial(float axisK, float crossK, int triangles, int pointsPerTriangle,
+               std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> U01(0.f, 1.f), logU(-6.f, 6.f);
   RtDevice device;
@@ -61,12 +63,19 @@ Trial runTrial(float relativeOffset, int triangles, int pointsPerTriangle, std::
       float u = U01(rng), v = U01(rng);
       if (u + v > 1.f) u = 1.f - u, v = 1.f - v;
       const vec3 p = interpolatePosition(world.meshes[0], 0, u, v);
+      // Half the rays uniform, half grazing: 10^[-4, 0] rad off the plane, either side.
       vec3 d = randomUnit(rng);
-      const vec3 side = glm::dot(d, n) >= 0.f ? n : -n;  // front for reflected, back for transmitted
-      const vec3 error = positionErrorBound(p, magnitude) *
-                         (relativeOffset / ray_offset::kRelativeOffset);
-      const vec3 o = relativeOffset > 0.f ? offsetRayOriginByError(p, side, error) : p;
-      const double height = glm::dot(exactNormal, glm::dvec3(o) - a) * glm::dot(glm::dvec3(side), exactNormal);
+      if (k % 2) {
+        const vec3 tangent = glm::normalize(d - glm::dot(d, n) * n);
+        const float lift = std::pow(10.f, -4.f * U01(rng)) * (U01(rng) < 0.5f ? -1.f : 1.f);
+        d = glm::normalize(tangent + lift * n);
+      }
+      const vec3 side =
+          glm::dot(d, n) >= 0.f ? n : -n;  // front for reflected, back for transmitted
+      const vec3 error = positionErrorBound(p, magnitude, axisK, crossK);
+      const vec3 o = axisK + crossK > 0.f ? offsetRayOriginByError(p, side, error) : p;
+      const double height =
+          glm::dot(exactNormal, glm::dvec3(o) - a) * glm::dot(glm::dvec3(side), exactNormal);
       trial.belowPlane += height > 0.0 ? 0 : 1;
       ++trial.rays;
       const auto hit = rt.intersect(Ray{o, d}, 0.f, std::numeric_limits<float>::infinity());
@@ -77,10 +86,11 @@ Trial runTrial(float relativeOffset, int triangles, int pointsPerTriangle, std::
 }
 
 TEST(Reintersection, SecondaryRaysNeverHitTheirOwnTriangleAtAnyScaleOrOffset) {
-  const Trial t = runTrial(ray_offset::kRelativeOffset, 2000, 50, 2024);
-  std::printf("[numerics] reintersection at 256 eps: %ld rays on %ld triangles, %ld self hits, "
-              "%ld origins not above the plane\n",
-              t.rays, t.triangles, t.selfHits, t.belowPlane);
+  const Trial t = runTrial(ray_offset::kAxisOffset, ray_offset::kCrossOffset, 2000, 50, 2024);
+  std::printf(
+      "[numerics] reintersection, engine constants: %ld rays on %ld triangles, %ld self hits, "
+      "%ld origins not above the plane\n",
+      t.rays, t.triangles, t.selfHits, t.belowPlane);
   EXPECT_EQ(t.rays, 100000);
   EXPECT_EQ(t.selfHits, 0);
   EXPECT_EQ(t.belowPlane, 0);
@@ -88,15 +98,24 @@ TEST(Reintersection, SecondaryRaysNeverHitTheirOwnTriangleAtAnyScaleOrOffset) {
 
 TEST(Reintersection, TheTrialFailsWithoutOffsetAndShowsTheMargin) {
   // Teeth: rays from the reconstructed point itself re-hit their triangle often.
-  const Trial none = runTrial(0.f, 300, 50, 7);
+  const Trial none = runTrial(0.f, 0.f, 300, 50, 7);
   std::printf("[numerics] reintersection without offset: %ld / %ld self hits\n", none.selfHits,
               none.rays);
   EXPECT_GT(none.selfHits, none.rays / 100);
-  // The margin: the smallest constants that still give zero here, for the record.
-  for (float k : {1.f, 4.f, 16.f, 64.f}) {
-    const Trial t = runTrial(k * FLT_EPSILON, 300, 50, 7);
-    std::printf("[numerics] reintersection at %g eps: %ld / %ld self hits, %ld below plane\n",
-                double(k), t.selfHits, t.rays, t.belowPlane);
+  // The margin, for the record: each term alone, and the cross-axis term scaled down.
+  const struct {
+    float axis, cross;
+  } variants[] = {{ray_offset::kAxisOffset, 0.f},
+                  {0.f, ray_offset::kCrossOffset},
+                  {0.f, FLT_EPSILON},
+                  {0.f, 0.25f * FLT_EPSILON}};
+  for (const auto& v : variants) {
+    const Trial t = runTrial(v.axis, v.cross, 2000, 50, 2024);
+    std::printf(
+        "[numerics] reintersection, axis %g eps + cross %g eps: %ld / %ld self hits, %ld "
+        "below plane\n",
+        double(v.axis / FLT_EPSILON), double(v.cross / FLT_EPSILON), t.selfHits, t.rays,
+        t.belowPlane);
   }
 }
 

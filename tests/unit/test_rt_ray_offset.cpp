@@ -94,13 +94,14 @@ OffsetStats runOffsetTrial(bool useVertexMagnitude, float minCentreFactor, bool 
 }  // namespace
 
 TEST(RayOffset, StepIsRelativeToTheCoordinatesWithNoAbsoluteFloor) {
-  // The step along n is kRelativeOffset * max|coordinate| (plus one float of rounding away),
-  // at every magnitude: no absolute fallback near the origin (the floor of issue 13).
+  // Off an axis plane through the origin the step along n is kCrossOffset * max|coordinate|
+  // (plus one float of rounding away), at every magnitude: no absolute fallback near the origin
+  // (the floor of issue 13).
   const vec3 n(0.f, 1.f, 0.f);
   for (float x : {1e-30f, 1e-6f, 1e-2f, 1.f, 1e6f}) {
     const vec3 o = offsetRayOrigin(vec3(x, 0.f, -0.5f * x), n);
-    EXPECT_GE(o.y, ray_offset::kRelativeOffset * x) << x;
-    EXPECT_LE(o.y, 1.01f * ray_offset::kRelativeOffset * x) << x;
+    EXPECT_GE(o.y, ray_offset::kCrossOffset * x) << x;
+    EXPECT_LE(o.y, 1.01f * ray_offset::kCrossOffset * x) << x;
     EXPECT_EQ(o.x, x);
   }
   // Exactly scale-equivariant under powers of two: the origins of a scene scaled by 2^k are the
@@ -113,7 +114,7 @@ TEST(RayOffset, StepIsRelativeToTheCoordinatesWithNoAbsoluteFloor) {
   }
   // The vertex magnitude, not p, sets the step near an axis plane.
   EXPECT_EQ(offsetRayOrigin(vec3(0.f), n, vec3(1000.f, 0.f, 0.f)).y,
-            std::nextafter(ray_offset::kRelativeOffset * 1000.f, 1.f));
+            std::nextafter(ray_offset::kCrossOffset * 1000.f, 1.f));
   // At the origin itself (degenerate: nothing to scale by) the point still moves.
   EXPECT_GT(offsetRayOrigin(vec3(0.f), n).y, 0.f);
 }
@@ -134,8 +135,8 @@ TEST(RayOffset, WithoutOffsetTheSameTrialFails) {
 }
 
 TEST(RayOffset, OffsetWithoutVertexMagnitudeIsRobustAwayFromTheOrigin) {
-  // Without the vertex magnitude, the offset (relative to |p| alone) is robust where |p| is the scale of the
-  // vertices, i.e. for triangles whose distance from the origin exceeds their size.
+  // Without the vertex magnitude, the offset (relative to |p| alone) is robust where |p| is the
+  // scale of the vertices, i.e. for triangles whose distance from the origin exceeds their size.
   const OffsetStats s = runOffsetTrial(/*useVertexMagnitude=*/false, /*minCentreFactor=*/10.f);
   EXPECT_EQ(s.belowPlane, 0);
   EXPECT_EQ(s.selfHits, 0);

@@ -31,10 +31,10 @@ Camera grazingCamera(const Scene& scene) {
   if (box.empty()) return c;
   const vec3 foot(c.target.x, box.lo.y, c.target.z);
   const vec3 horizontal(c.position.x - c.target.x, 0.f, c.position.z - c.target.z);
-  const float distance = glm::length(horizontal) > 0.f ? glm::length(horizontal)
-                                                       : glm::length(c.position - c.target);
-  const vec3 away = glm::length(horizontal) > 0.f ? horizontal / glm::length(horizontal)
-                                                  : vec3(0.f, 0.f, 1.f);
+  const float distance =
+      glm::length(horizontal) > 0.f ? glm::length(horizontal) : glm::length(c.position - c.target);
+  const vec3 away =
+      glm::length(horizontal) > 0.f ? horizontal / glm::length(horizontal) : vec3(0.f, 0.f, 1.f);
   c.position = foot + distance * away + vec3(0.f, 0.01f * distance, 0.f);
   c.target = foot;
   c.up = vec3(0.f, 1.f, 0.f);
@@ -67,16 +67,16 @@ std::vector<std::string> shadowMapDepthWarnings(const Scene& scene, int resoluti
       continue;
     }
     const vec3 pa = glm::abs(f.position);
-    const double coordinate = std::max({double(m.x), double(m.y), double(m.z), double(pa.x),
-                                        double(pa.y), double(pa.z)});
+    const double coordinate =
+        std::max({double(m.x), double(m.y), double(m.z), double(pa.x), double(pa.y), double(pa.z)});
     const double depthError = std::ldexp(double(f.zFar), -24) + std::ldexp(coordinate, -22);
     const double texel = f.kind == shadowmap::ViewKind::Ortho ? double(f.texelScale)
                                                               : double(f.texelScale) * f.zNear;
     if (depthError > 0.25 * texel)
       warnings.push_back(fmt::format(
-          "{}: depth error {:.3g} exceeds a quarter of the nearest texel footprint {:.3g} "
-          "(coordinates up to {:.3g}): expect acne or lost contact shadows",
-          light, depthError, texel, coordinate));
+          "{}: depth error {:.3g} exceeds a quarter ({:.3g}) of the nearest shadow-map texel's "
+          "footprint (coordinates up to {:.3g}): expect acne or lost contact shadows",
+          light, depthError, 0.25 * texel, coordinate));
   }
   return warnings;
 }
