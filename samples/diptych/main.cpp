@@ -6,6 +6,7 @@
 #include "samples/diptych/check_command.h"
 #include "samples/diptych/compare_command.h"
 #include "samples/diptych/diff_command.h"
+#include "samples/diptych/passes_command.h"
 #include "samples/diptych/render_command.h"
 
 int main(int argc, char** argv) {
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   diptych::cli::addCompareCommand(app, exitCode);
   diptych::cli::addDiffCommand(app, exitCode);
   diptych::cli::addCheckCommand(app, exitCode);
+  diptych::cli::addPassesCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
