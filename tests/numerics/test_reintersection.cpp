@@ -110,11 +110,9 @@ TEST(Reintersection, TheTrialFailsWithoutOffsetAndShowsTheMargin) {
                   {0.f, FLT_EPSILON},
                   {0.f, 0.25f * FLT_EPSILON}};
   long tooSmall = 0;
-  long tooSmall = 0;
   for (const auto& v : variants) {
     const Trial t = runTrial(v.axis, v.cross, 2000, 50, 2024);
     if (v.axis == 0.f && v.cross < FLT_EPSILON) tooSmall = t.selfHits;
-    if (v.cross < FLT_EPSILON && v.axis == 0.f) tooSmall = t.selfHits;
     std::printf(
         "[numerics] reintersection, axis %g eps + cross %g eps: %ld / %ld self hits, %ld "
         "below plane\n",
