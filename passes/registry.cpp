@@ -1,18 +1,23 @@
 #include "passes/registry.h"
 
 #include "engine/core/error.h"
-#include "passes/raster/blend_transmission.h"
-#include "passes/raster/dynamic_cube.h"
-#include "passes/raster/env_reflection.h"
+#include "passes/cpu/no_shadows.h"
+#include "passes/cpu/shade.h"
+#include "passes/raster/env_cube.h"
+#include "passes/raster/env_dynamic_cube.h"
+#include "passes/raster/env_equirect.h"
+#include "passes/raster/env_sphere.h"
 #include "passes/raster/gbuffer.h"
 #include "passes/raster/planar_mirror.h"
 #include "passes/raster/shadow_map.h"
+#include "passes/raster/sorted_blend.h"
+#include "passes/raster/unsorted_blend.h"
 #include "passes/rt/rt_distributed.h"
 #include "passes/rt/rt_path.h"
-#include "passes/rt/rt_secondary.h"
+#include "passes/rt/rt_reflection.h"
 #include "passes/rt/rt_shadows.h"
+#include "passes/rt/rt_transmission.h"
 #include "passes/rt/rt_whitted.h"
-#include "passes/rt/shade.h"
 #include "passes/slots.h"
 
 namespace diptych {
@@ -43,6 +48,9 @@ const PassRegistry& builtinPasses() {
                      {"shadow-map-2048-adaptive", "resolution=2048,bias=adaptive"},
                      {"shadow-map-4096-slope-pcss",
                       "resolution=4096,bias=slope,factor=2,units=2,filter=pcss"}}});
+    r.add<NoShadowsPass>({.name = "no_shadows",
+                          .slot = "visibility",
+                          .summary = "no shadows: V_i = 1 everywhere, the baseline (CPU)"});
     r.add<RtReflectionPass>(
         {.name = "rt_reflection",
          .slot = "reflection",
@@ -56,7 +64,7 @@ const PassRegistry& builtinPasses() {
     r.add<EnvEquirectPass>({.name = "env_equirect",
                             .slot = "reflection",
                             .summary = "reflection: lat-long panorama lookup along r (GL)"});
-    r.add<DynamicCubePass>(
+    r.add<EnvDynamicCubePass>(
         {.name = "env_dynamic_cube",
          .slot = "reflection",
          .summary = "reflection by a cube map captured from the object's centre (GL)"});

@@ -7,7 +7,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0) uniform usampler2D uVisibility;  // gbuffer.visibility (RGBA32UI)
+layout(binding = 0) uniform usampler2D uHits;  // gbuffer.hits (RGBA32UI)
 layout(binding = 0, rgba32f) writeonly uniform image2D uReflection;
 #ifdef ENV_CUBE
 layout(binding = 1) uniform samplerCube uEnvironment;
@@ -43,7 +43,7 @@ void main() {
   ivec2 size = imageSize(uReflection);
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= size.x || p.y >= size.y) return;
-  SceneSurface s = surfaceFromVisibility(texelFetch(uVisibility, p, 0));
+  SceneSurface s = surfaceFromHits(texelFetch(uHits, p, 0));
   vec4 result = vec4(0.0);
   if (s.hit && sceneMaterial(s.material, s.uv).kps > 0.0) {
     // The shading normal on the viewer's side of the face, as makeSurfacePoint() does.

@@ -15,7 +15,7 @@ uniform int uMaterial;
 uniform vec3 uAmbient;
 uniform int uBlend;   // 1: the output is composited as I = I_m + k_t M_T I
 uniform int uBehind;  // 1: keep only fragments strictly behind the visibility texel's surface
-layout(binding = 0) uniform usampler2D uVisibility;
+layout(binding = 0) uniform usampler2D uHits;
 
 // Dual-source blending (GL 3.3 core, ARB_blend_func_extended): index 1 is the per-fragment
 // destination factor k_t M_T of glBlendFunc(GL_ONE, GL_SRC1_COLOR).
@@ -35,8 +35,8 @@ void main() {
   if (uBehind != 0) {
     // "Behind the first visible surface": the first surface itself (same instance and
     // primitive) is excluded by identity, everything else by its distance along the same ray.
-    uvec4 texel = texelFetch(uVisibility, ivec2(gl_FragCoord.xy), 0);
-    SceneSurface first = surfaceFromVisibility(texel);
+    uvec4 texel = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
+    SceneSurface first = surfaceFromHits(texel);
     if (first.hit) {
       bool same = uint(first.instance) == uInstance && texel.y == uint(gl_PrimitiveID);
       if (same || safeLength(p - uEye) <= safeLength(first.position - uEye)) discard;

@@ -1,4 +1,4 @@
-// G-buffer raster: visibility (instance+1, primitive, u, v) and shading normal + material.
+// G-buffer raster: hits (instance+1, primitive, u, v) and shading normal + material.
 // Layout and method: engine/gl/gbuffer_raster.h and docs/gl.md.
 #include "gl/scene_buffers.glsl"
 #include "gl/ray_triangle.glsl"
@@ -22,7 +22,7 @@ uniform uint uInstance;
 uniform uint uFirstTriangle;
 uniform float uMaterial;
 
-layout(location = 0) out uvec4 outVisibility;
+layout(location = 0) out uvec4 outHits;
 layout(location = 1) out vec4 outNormal;
 
 void main() {
@@ -60,7 +60,7 @@ void main() {
   // Same fallback as interpolateNormal(): the geometric normal when the blend cancels out.
   n = len > 0.0 ? n / len : normalize(cross(p1 - p0, p2 - p0));
 
-  outVisibility = uvec4(uInstance + 1u, uint(gl_PrimitiveID), floatBitsToUint(uv.x),
+  outHits = uvec4(uInstance + 1u, uint(gl_PrimitiveID), floatBitsToUint(uv.x),
                         floatBitsToUint(uv.y));
   outNormal = vec4(n, uMaterial);
 }

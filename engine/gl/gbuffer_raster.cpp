@@ -9,10 +9,10 @@ namespace diptych::gl {
 
 GBufferTextures GBufferTextures::allocate(int width, int height) {
   GBufferTextures t;
-  t.visibility = Texture::create2D(TextureFormat::RGBA32UI, width, height);
+  t.hits = Texture::create2D(TextureFormat::RGBA32UI, width, height);
   t.normal = Texture::create2D(TextureFormat::RGBA32F, width, height);
   t.depth = Texture::create2D(TextureFormat::D32F, width, height);
-  t.visibility.setLabel("gbuffer.visibility");
+  t.hits.setLabel("gbuffer.hits");
   t.normal.setLabel("gbuffer.normal");
   t.depth.setLabel("gbuffer.depth");
   return t;
@@ -24,8 +24,8 @@ GBufferRasterizer::GBufferRasterizer()
 
 namespace {
 
-void checkTargets(const Texture& visibility, const Texture& normal, const Texture& depth) {
-  const int width = visibility.width(), height = visibility.height();
+void checkTargets(const Texture& hits, const Texture& normal, const Texture& depth) {
+  const int width = hits.width(), height = hits.height();
   const auto expect = [&](const Texture& tex, TextureFormat format, const char* what) {
     if (!tex || tex.format() != format || tex.kind() != TextureKind::Tex2D ||
         tex.width() != width || tex.height() != height) {
@@ -34,7 +34,7 @@ void checkTargets(const Texture& visibility, const Texture& normal, const Textur
                   "x" + std::to_string(height));
     }
   };
-  expect(visibility, TextureFormat::RGBA32UI, "visibility");
+  expect(hits, TextureFormat::RGBA32UI, "hits");
   expect(normal, TextureFormat::RGBA32F, "normal");
   expect(depth, TextureFormat::D32F, "depth");
 }
@@ -43,16 +43,16 @@ void checkTargets(const Texture& visibility, const Texture& normal, const Textur
 
 void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
                                GBufferTextures& targets, const GlShadingBuffers* shading) {
-  render(scene, camera, targets.visibility, targets.normal, targets.depth, shading);
+  render(scene, camera, targets.hits, targets.normal, targets.depth, shading);
 }
 
 void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
-                               const Texture& visibility, const Texture& normal,
-                               const Texture& depth, const GlShadingBuffers* shading) {
+                               const Texture& hits, const Texture& normal, const Texture& depth,
+                               const GlShadingBuffers* shading) {
   ScopedGlLabel label("gbuffer");
-  checkTargets(visibility, normal, depth);
-  const int width = visibility.width(), height = visibility.height();
-  framebuffer_.attachColor(0, visibility);
+  checkTargets(hits, normal, depth);
+  const int width = hits.width(), height = hits.height();
+  framebuffer_.attachColor(0, hits);
   framebuffer_.attachColor(1, normal);
   framebuffer_.attachDepth(depth);
   framebuffer_.checkComplete("gbuffer");
@@ -116,7 +116,7 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
 
 void rasterizeGBuffer(const GlSceneBuffers& scene, const Camera& camera, int width, int height,
                       GBufferTextures& targets) {
-  if (!targets.visibility || targets.width() != width || targets.height() != height) {
+  if (!targets.hits || targets.width() != width || targets.height() != height) {
     targets = GBufferTextures::allocate(width, height);
   }
   GBufferRasterizer().render(scene, camera, targets);

@@ -2,7 +2,7 @@
 // Rasterized primary visibility: the G-buffer that the hybrid renderer's ray passes start from.
 //
 // Layout (all W x H, image row 0 at the top after readTexture):
-//   visibility RGBA32UI = (instance + 1, primitive, floatBitsToUint(u), floatBitsToUint(v));
+//   hits RGBA32UI = (instance + 1, primitive, floatBitsToUint(u), floatBitsToUint(v));
 //                         x = 0 is background. (u, v) are Embree barycentrics at the pixel
 //                         centre: p = (1-u-v) p0 + u p1 + v p2, vertices in index order.
 //   normal     RGBA32F  = (shading normal xyz, unit, interpolated with (u, v); w = material
@@ -21,13 +21,13 @@
 namespace diptych::gl {
 
 struct GBufferTextures {
-  Texture visibility;  // RGBA32UI
-  Texture normal;      // RGBA32F
-  Texture depth;       // D32F
+  Texture hits;    // RGBA32UI
+  Texture normal;  // RGBA32F
+  Texture depth;   // D32F
 
   static GBufferTextures allocate(int width, int height);
-  int width() const { return visibility.width(); }
-  int height() const { return visibility.height(); }
+  int width() const { return hits.width(); }
+  int height() const { return hits.height(); }
 };
 
 // Holds the compiled program and the framebuffer; create once per context, reuse every frame.
@@ -44,7 +44,7 @@ class GBufferRasterizer {
   void render(const GlSceneBuffers& scene, const Camera& camera, GBufferTextures& targets,
               const GlShadingBuffers* shading = nullptr);
   // The same, into textures owned elsewhere (the frame graph's pool).
-  void render(const GlSceneBuffers& scene, const Camera& camera, const Texture& visibility,
+  void render(const GlSceneBuffers& scene, const Camera& camera, const Texture& hits,
               const Texture& normal, const Texture& depth,
               const GlShadingBuffers* shading = nullptr);
 

@@ -40,7 +40,7 @@ const char* nodeKindName(NodeKind kind);
 // One step of the compiled schedule.
 struct GraphNode {
   NodeKind kind = NodeKind::Pass;
-  std::string name;  // pass name, or "readback:gbuffer.visibility", "default:shadows.visibility"
+  std::string name;  // pass name, or "readback:gbuffer.hits", "default:shadows.visibility"
   Domain domain = Domain::Cpu;
   int pass = -1;                      // NodeKind::Pass
   ResourceId resource = kNoResource;  // transfers and defaults: what they move or fill

@@ -2,7 +2,7 @@
 // A recipe names the passes of a frame, their parameters and connections, and the outputs
 // wanted. JSON form (samples/graphs/*.json, documented in docs/frame-graph.md):
 // {"passes": [{"name": "shadows", "type": "rt_shadows", "params": {...},
-//              "inputs": {"gbuffer": "gbuffer.visibility"}}, ...],
+//              "inputs": {"hits": "gbuffer.hits"}}, ...],
 //  "outputs": ["shade.color"]}
 #include <filesystem>
 #include <map>

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "engine/gl/debug.h"
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
 #include "engine/graph/render_world.h"
@@ -16,7 +15,7 @@ namespace {
 // G-buffer's depth is not an input of the slot) and the mask that zeroes non-transmissive pixels.
 struct BlendCache {
   gl::Texture depth;
-  FullscreenResolve mask{gl::loadProgram({"fullscreen.vert", "transmission_mask.frag"})};
+  FullscreenResolve mask{gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"})};
   void ensure(int width, int height) {
     if (depth && depth.width() == width && depth.height() == height) return;
     depth = gl::Texture::create2D(gl::TextureFormat::D32F, width, height);
@@ -53,7 +52,6 @@ void BlendTransmissionPass::setup(PassBuilder& b) {
 }
 
 void BlendTransmissionPass::execute(PassContext& c) {
-  gl::ScopedGlLabel label(sorted_ ? "sorted_blend" : "unsorted_blend");
   RenderWorld& world = c.world();
   const FrameSettings& frame = c.frame();
   const gl::Texture& hits = c.glTexture(io_.hits);

@@ -14,6 +14,7 @@ namespace diptych {
 // view ray. `sorted` draws the transparent objects back to front by the view depth of their
 // bounds centres (per object, as the lecture sorts polygons); unsorted keeps scene order.
 // Pixels whose first surface has k_t = 0 (or no surface) get 0. docs/forward-producers.md.
+// The family of sorted_blend.h and unsorted_blend.h.
 class BlendTransmissionPass : public Pass {
  public:
   explicit BlendTransmissionPass(bool sorted) : sorted_(sorted) {}
@@ -24,16 +25,6 @@ class BlendTransmissionPass : public Pass {
  private:
   bool sorted_;
   SlotIo io_;
-};
-
-class SortedBlendPass : public BlendTransmissionPass {
- public:
-  SortedBlendPass() : BlendTransmissionPass(true) {}
-};
-
-class UnsortedBlendPass : public BlendTransmissionPass {
- public:
-  UnsortedBlendPass() : BlendTransmissionPass(false) {}
 };
 
 // Mesh indices of the transparent objects (material k_t > 0), farthest first by the view

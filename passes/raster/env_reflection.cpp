@@ -4,7 +4,6 @@
 #include <optional>
 #include <utility>
 
-#include "engine/gl/debug.h"
 #include "engine/gl/objects.h"
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
@@ -15,18 +14,6 @@
 
 namespace diptych {
 namespace {
-
-const char* kindName(EnvMapKind kind) {
-  switch (kind) {
-    case EnvMapKind::Cube:
-      return "env_cube";
-    case EnvMapKind::Sphere:
-      return "env_sphere";
-    case EnvMapKind::Equirect:
-      return "env_equirect";
-  }
-  return "env";
-}
 
 // Uploads an engine image (row 0 on top) as one layer. transfer.h flips rows so that the top
 // row lands at GL t = 1, which is right for 2D maps whose t points up; cube faces want their
@@ -130,7 +117,6 @@ void EnvReflectionPass::setup(PassBuilder& b) {
 }
 
 void EnvReflectionPass::execute(PassContext& c) {
-  gl::ScopedGlLabel label(kindName(kind_));
   RenderWorld& world = c.world();
   const Camera& camera = c.frame().camera;
   const mat3 worldToEye(viewMatrix(camera));

@@ -2,7 +2,7 @@
 // A full-screen triangle drawn into one frame-size texture with a program of the caller's,
 // for the per-pixel steps of the forward producers (mask, resolve). The scene and shading
 // SSBOs are bound so that the fragment shader can rebuild G-buffer points
-// (shaders/gl/scene_shading.glsl, surfaceFromVisibility).
+// (shaders/gl/scene_shading.glsl, surfaceFromHits).
 #include "engine/gl/objects.h"
 
 namespace diptych {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cfloat>
 
-#include "engine/gl/debug.h"
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
 #include "engine/graph/render_world.h"
@@ -15,7 +14,7 @@ namespace {
 
 struct MirrorCache {
   gl::Texture color, depth;  // the mirrored render, frame size
-  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "mirror_resolve.frag"})};
+  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "planar_mirror.frag"})};
   bool found = false;
   std::vector<MirrorPlane> mirrors;
   void ensure(int width, int height) {
@@ -72,7 +71,6 @@ void PlanarMirrorPass::setup(PassBuilder& b) {
 }
 
 void PlanarMirrorPass::execute(PassContext& c) {
-  gl::ScopedGlLabel label("planar_mirror");
   RenderWorld& world = c.world();
   const Camera& camera = c.frame().camera;
   const gl::Texture& hits = c.glTexture(io_.hits);

@@ -10,7 +10,7 @@
 
 namespace diptych::shadowmap {
 
-// Values match the KIND_* constants of shaders/shadow_lookup.frag.
+// Values match the KIND_* constants of shaders/shadow_map_lookup.frag.
 enum class ViewKind { Unshadowed = 0, Ortho = 1, Perspective = 2, Cube = 3 };
 
 struct LightFrustum {

@@ -18,7 +18,7 @@ class RenderWorld;
 
 namespace diptych::shadowmap {
 
-// SSBO bindings of shaders/shadow_lookup.frag, after the scene's 0..6.
+// SSBO bindings of shaders/shadow_map_lookup.frag, after the scene's 0..6.
 inline constexpr GLuint kShadowLayersBinding = 7;
 inline constexpr GLuint kShadowLightsBinding = 8;
 

@@ -1,4 +1,4 @@
-// Shadow-map lookup: a full-screen fragment pass per light (shaders/shadow_lookup.frag) that
+// Shadow-map lookup: a full-screen fragment pass per light (shaders/shadow_map_lookup.frag) that
 // rebuilds each pixel's exact surface point from the visibility buffer and compares it with the
 // light's map under the chosen bias and filter.
 #include <cmath>
@@ -14,7 +14,7 @@ namespace diptych::shadowmap {
 
 namespace {
 
-// std430 layouts of ShadowLayers / ShadowLights in shaders/shadow_lookup.frag.
+// std430 layouts of ShadowLayers / ShadowLights in shaders/shadow_map_lookup.frag.
 struct GpuLayer {
   mat4 viewProj, invViewProj;
 };

@@ -11,8 +11,8 @@
 namespace diptych::shadowmap {
 
 ShadowMapGl::ShadowMapGl()
-    : depth_(gl::loadProgram({"shadow_depth.vert", "shadow_depth.frag"})),
-      lookup_(gl::loadProgram({"shadow_fullscreen.vert", "shadow_lookup.frag"})),
+    : depth_(gl::loadProgram({"shadow_map_depth.vert", "shadow_map_depth.frag"})),
+      lookup_(gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"})),
       depthFbo_(gl::Framebuffer::create()),
       lookupFbo_(gl::Framebuffer::create()),
       emptyVao_(gl::VertexArray::create()),
@@ -62,8 +62,8 @@ void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>
   // program without discard.
   const gl::GlShadingBuffers& shading = world.glShading();
   if (shading.anyAlphaTested() && !alphaDepth_) {
-    alphaDepth_ =
-        gl::loadProgram({"shadow_depth.vert", "shadow_depth.frag"}, {{"DIPTYCH_ALPHA_MASK", ""}});
+    alphaDepth_ = gl::loadProgram({"shadow_map_depth.vert", "shadow_map_depth.frag"},
+                                  {{"DIPTYCH_ALPHA_MASK", ""}});
   }
   if (shading.anyAlphaTested()) {
     scene.bindStorage();

@@ -6,7 +6,7 @@
 
 namespace diptych::shadowmap {
 
-// Values match the BIAS_* / FILTER_* constants of shaders/shadow_lookup.frag.
+// Values match the BIAS_* / FILTER_* constants of shaders/shadow_map_lookup.frag.
 enum class Bias { None = 0, Constant, Slope, NormalOffset, ReceiverPlane, Adaptive };
 enum class Filter { None = 0, Pcf, Poisson, Pcss };
 

@@ -2,7 +2,8 @@
 // The exact producers of the reflection and transmission slots: from each G-buffer point whose
 // material has k_ps > 0 (reflection) or k_t > 0 (transmission), the radiance arriving along the
 // mirror or refracted direction, traced recursively by the Whitted tracer (engine/rt/whitted.h)
-// with the same shading as everything else. Other pixels get 0.
+// with the same shading as everything else. Other pixels get 0. The family of rt_reflection.h
+// and rt_transmission.h.
 #include "engine/graph/pass.h"
 #include "passes/slots.h"
 
@@ -21,18 +22,6 @@ class RtSecondaryPass : public Pass {
   Kind kind_;
   int maxDepth_ = 5, areaSamples_ = 16;
   SlotIo io_;
-};
-
-// Recursive reflection rays; params: schema().
-class RtReflectionPass : public RtSecondaryPass {
- public:
-  RtReflectionPass() : RtSecondaryPass(Kind::Reflection) {}
-};
-
-// Recursive refraction rays (Snell, total internal reflection); the same params.
-class RtTransmissionPass : public RtSecondaryPass {
- public:
-  RtTransmissionPass() : RtSecondaryPass(Kind::Transmission) {}
 };
 
 }  // namespace diptych

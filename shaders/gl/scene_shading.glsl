@@ -137,7 +137,7 @@ struct SceneSurface {
   int material;        // -1: default material
 };
 
-SceneSurface surfaceFromVisibility(uvec4 texel) {
+SceneSurface surfaceFromHits(uvec4 texel) {
   SceneSurface s;
   s.hit = texel.x != 0u;
   s.instance = int(texel.x) - 1;

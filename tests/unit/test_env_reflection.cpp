@@ -2,7 +2,7 @@
 // an environment map is exact: a convex mirror (a finely tessellated sphere, k_ps = 1) under an
 // environment at infinity, so nothing local can appear in a reflection. Each producer runs in a
 // real frame graph (OSMesa G-buffer + the producer's compute pass) and is compared per pixel with
-// a CPU reference: r from the same visibility texel's exact point and shading normal
+// a CPU reference: r from the same hits texel's exact point and shading normal
 // (makeSurfacePoint), then sampleEnvironment(env, r). What remains is filtering/resampling error.
 // A second reference uses the analytic sphere normal, which adds the tessellation error.
 #include <gtest/gtest.h>
@@ -99,7 +99,7 @@ class EnvFixture : public ::testing::Test {
 fs::path EnvFixture::dir_;
 
 struct Frame {
-  Surface visibility, reflection;
+  Surface hits, reflection;
 };
 
 Frame render(const Scene& scene, const std::string& type, int resolution) {
@@ -149,12 +149,12 @@ Errors measure(const Frame& f, const std::function<std::optional<vec3>(int, int)
   return out;
 }
 
-// The reference a ray tracer's reflection ray would see: same visibility texel, exact point and
+// The reference a ray tracer's reflection ray would see: same hits texel, exact point and
 // shading normal (makeSurfacePoint), r = reflect(-v, n), sampleEnvironment(env, r).
 Errors againstSurfaceReference(const Scene& scene, const Frame& f) {
   const WorldGeometry world = flattenScene(scene);
   return measure(f, [&](int x, int y) -> std::optional<vec3> {
-    const auto hit = hitsTexel(f.visibility, x, y);
+    const auto hit = hitsTexel(f.hits, x, y);
     if (!hit) return std::nullopt;
     const vec3 eye = scene.camera.position;
     const SurfacePoint sp = makeSurfacePoint(scene, world, *hit, glm::vec3(0.f));
@@ -168,7 +168,7 @@ Errors againstSurfaceReference(const Scene& scene, const Frame& f) {
 // tessellation error of the mesh's interpolated normals.
 Errors againstAnalyticSphere(const Scene& scene, const Frame& f) {
   return measure(f, [&](int x, int y) -> std::optional<vec3> {
-    if (!hitsTexel(f.visibility, x, y)) return std::nullopt;
+    if (!hitsTexel(f.hits, x, y)) return std::nullopt;
     const Ray ray = primaryRay(scene.camera, kSize, kSize, x + 0.5f, y + 0.5f);
     const glm::dvec3 o(ray.origin), d(ray.direction);
     const double b = glm::dot(o, d), c = glm::dot(o, o) - 1.0, disc = b * b - c;
@@ -281,7 +281,7 @@ TEST_F(EnvFixture, SolidColourIsConstantAndBackgroundIsZero) {
     const Frame f = render(scene, type, 64);
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x) {
-        const auto hit = hitsTexel(f.visibility, x, y);
+        const auto hit = hitsTexel(f.hits, x, y);
         const bool mirror = hit && hit->instance == 0;  // instance 1 is the diffuse floor
         const vec3 expected = mirror ? vec3(0.4f, 0.8f, 1.6f) : vec3(0.f);
         for (int k = 0; k < 3; ++k)

@@ -32,10 +32,10 @@ Scene sceneFromJson(const std::string& name, const std::string& json) {
 }
 
 struct ProducerRun {
-  Surface signal, visibility;
+  Surface signal, hits;
 };
 
-// gbuffer -> producer; returns the producer's signal and the G-buffer visibility.
+// gbuffer -> producer; returns the producer's signal and the G-buffer hits.
 ProducerRun runProducer(const Scene& scene, const std::string& type, const std::string& signal,
                         int width, int height) {
   Recipe recipe;
@@ -235,7 +235,7 @@ Agreement compareReflection(const Scene& scene, const ProducerRun& run, int inst
   Agreement a;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const auto hit = hitsTexel(run.visibility, x, y);
+      const auto hit = hitsTexel(run.hits, x, y);
       if (!hit || hit->instance != instance) continue;
       const vec3 ref = referenceReflection(world, scene.camera, w, h, x, y, *hit);
       const float e = maxDiff(rgb(run.signal, x, y), ref);
@@ -306,7 +306,7 @@ TEST_P(DynamicCube, CaptureShowsTheBoxInTheReflectedDirection) {
   int refBox = 0, bothBox = 0, cubeBox = 0, cubeBoxRight = 0;
   for (int y = 0; y < H; ++y) {
     for (int x = 0; x < W; ++x) {
-      const auto hit = hitsTexel(run.visibility, x, y);
+      const auto hit = hitsTexel(run.hits, x, y);
       if (!hit || hit->instance != 0) continue;
       const bool ref = referenceReflection(world, scene.camera, W, H, x, y, *hit).y > 0.5f;
       const bool cube = run.signal.f(x, y, 1) > 0.5f;

@@ -91,7 +91,7 @@ TEST(GBufferRaster, MatchesAnalyticPrimaryRays) {
   const int w = 96, h = 64;
   GBufferTextures targets;
   rasterizeGBuffer(scene, camera, w, h, targets);
-  const std::vector<std::uint32_t> vis = readTexture(targets.visibility);
+  const std::vector<std::uint32_t> vis = readTexture(targets.hits);
   const std::vector<float> nrm = readTextureFloats(targets.normal);
   const std::vector<float> depth = readTextureFloats(targets.depth);
   EXPECT_EQ(glDebugErrorCount(), errors);
@@ -157,20 +157,20 @@ TEST(GBufferRaster, ReusedRasterizerHandlesResizeAndEmptyScenes) {
   const GlSceneBuffers empty = uploadScene(WorldGeometry{});
   GBufferTextures targets = GBufferTextures::allocate(8, 4);
   rasterizer.render(empty, Camera{}, targets);
-  for (std::uint32_t word : readTexture(targets.visibility)) EXPECT_EQ(word, 0u);
+  for (std::uint32_t word : readTexture(targets.hits)) EXPECT_EQ(word, 0u);
 
   const GlSceneBuffers scene = uploadScene(twoQuads());
   targets = GBufferTextures::allocate(5, 7);
   rasterizer.render(scene, Camera{}, targets);
   // The middle of the image sees the near quad (instance 0, default material -1).
-  const std::vector<std::uint32_t> vis = readTexture(targets.visibility);
+  const std::vector<std::uint32_t> vis = readTexture(targets.hits);
   const std::vector<float> nrm = readTextureFloats(targets.normal);
   const std::size_t centre = 3 * 5 + 2;
   EXPECT_EQ(vis[4 * centre], 1u);
   EXPECT_EQ(nrm[4 * centre + 3], -1.f);
 
   GBufferTextures wrong;
-  wrong.visibility = Texture::create2D(TextureFormat::RGBA32F, 5, 7);
+  wrong.hits = Texture::create2D(TextureFormat::RGBA32F, 5, 7);
   wrong.normal = Texture::create2D(TextureFormat::RGBA32F, 5, 7);
   wrong.depth = Texture::create2D(TextureFormat::D32F, 5, 7);
   EXPECT_THROW(rasterizer.render(scene, Camera{}, wrong), Error);

@@ -1,6 +1,6 @@
 // GLSL vs C++ shading parity: shaders/common/shading.glsl compiled as GLSL (a compute shader on
 // OSMesa/llvmpipe) and as C++ (engine/rt/shading.h) must give the same values on the same inputs,
-// including grazing and extreme ones; and scene_shading.glsl's surfaceFromVisibility must
+// including grazing and extreme ones; and scene_shading.glsl's surfaceFromHits must
 // reconstruct the same surface point as makeSurfacePoint (engine/rt/surface.h) from a G-buffer.
 //
 // Norm: for each output vector (or scalar) g (GPU) and c (CPU),
@@ -263,7 +263,7 @@ TEST(ShadingParity, GlslAndCppAgreeOnRandomAndExtremeInputs) {
               << ", cases over the bound: " << failures[grp.name] << " of " << kCases << "\n";
 }
 
-// surfaceFromVisibility (GLSL) vs makeSurfacePoint (C++) on every texel of a rasterized G-buffer of
+// surfaceFromHits (GLSL) vs makeSurfacePoint (C++) on every texel of a rasterized G-buffer of
 // the Whitted sample: position, face normal, shading normal (unflipped), uv and material.
 TEST(ShadingParity, SurfaceFromVisibilityMatchesMakeSurfacePoint) {
   gl::testing::osmesaContext();
@@ -280,12 +280,12 @@ TEST(ShadingParity, SurfaceFromVisibilityMatchesMakeSurfacePoint) {
   out.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   program.use();
   program.set("uLightCount", world.glShading().lightCount);
-  gl::glBindTextureUnit(0, targets.visibility.id());
+  gl::glBindTextureUnit(0, targets.hits.id());
   gl::glDispatchCompute(GLuint((kW * kH + 63) / 64), 1, 1);
   gl::glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> gpu(std::size_t(kW) * kH * kStride);
   out.download(0, gpu.size() * 4, gpu.data());
-  const std::vector<std::uint32_t> ids = gl::readTexture(targets.visibility);
+  const std::vector<std::uint32_t> ids = gl::readTexture(targets.hits);
   EXPECT_EQ(gl::glDebugErrorCount(), errorsBefore);
 
   double worst[4] = {0, 0, 0, 0};  // position, face normal, shading normal, uv
@@ -314,7 +314,7 @@ TEST(ShadingParity, SurfaceFromVisibilityMatchesMakeSurfacePoint) {
     ASSERT_EQ(int(g[11]), sp.material) << "texel " << i;
   }
   EXPECT_GT(hits, kW * kH / 4);
-  std::cout << "[ measured ] surfaceFromVisibility vs makeSurfacePoint over " << hits
+  std::cout << "[ measured ] surfaceFromHits vs makeSurfacePoint over " << hits
             << " texels: worst relative position " << worst[0] << ", face normal " << worst[1]
             << ", shading normal " << worst[2] << ", uv " << worst[3] << "\n";
 }

@@ -1,5 +1,5 @@
 // GLSL side of tests/unit/test_shading_parity.cpp: evaluates shaders/common/shading.glsl on
-// records of inputs (SHADING_CASES) or scene_shading.glsl's surfaceFromVisibility on every texel
+// records of inputs (SHADING_CASES) or scene_shading.glsl's surfaceFromHits on every texel
 // of a visibility buffer (SURFACE_CASES). Record layouts are defined in the test.
 #include "common/shading.glsl"
 
@@ -44,17 +44,17 @@ void main() {
 #ifdef SURFACE_CASES
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
-layout(binding = 0) uniform usampler2D uVisibility;
+layout(binding = 0) uniform usampler2D uHits;
 layout(std430, binding = 7) writeonly buffer Surfaces { float surfaces[]; };
 const int OUT_STRIDE = 12;
 
 void main() {
-  ivec2 size = textureSize(uVisibility, 0);
+  ivec2 size = textureSize(uHits, 0);
   int i = int(gl_GlobalInvocationID.x);
   if (i >= size.x * size.y) return;
   // GL row 0 is the bottom; the test indexes rows top first like transfer.h.
   ivec2 texel = ivec2(i % size.x, size.y - 1 - i / size.x);
-  SceneSurface s = surfaceFromVisibility(texelFetch(uVisibility, texel, 0));
+  SceneSurface s = surfaceFromHits(texelFetch(uHits, texel, 0));
   float results[OUT_STRIDE] = float[OUT_STRIDE](
       s.position.x, s.position.y, s.position.z, s.faceNormal.x, s.faceNormal.y, s.faceNormal.z,
       s.shadingNormal.x, s.shadingNormal.y, s.shadingNormal.z, s.uv.x, s.uv.y, float(s.material));

@@ -12,7 +12,7 @@ namespace diptych {
 // exact G-buffer point. The lookup treats the captured scene as infinitely far: the parallax
 // error grows with the distance between the surface point and the centre, relative to the
 // distance to what is reflected (docs/forward-producers.md). 0 elsewhere.
-class DynamicCubePass : public Pass {
+class EnvDynamicCubePass : public Pass {
  public:
   static ParamSchema schema();
   Domain domain() const override { return Domain::Gl; }

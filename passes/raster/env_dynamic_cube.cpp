@@ -1,6 +1,5 @@
-#include "passes/raster/dynamic_cube.h"
+#include "passes/raster/env_dynamic_cube.h"
 
-#include "engine/gl/debug.h"
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
 #include "engine/graph/render_world.h"
@@ -12,7 +11,7 @@ namespace {
 
 struct CubeCache {
   gl::Texture cube, depth;
-  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "cube_resolve.frag"})};
+  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "env_dynamic_cube.frag"})};
   void ensure(int size) {
     if (cube && cube.width() == size) return;
     cube = gl::Texture::createCube(gl::TextureFormat::RGBA32F, size);
@@ -24,17 +23,16 @@ struct CubeCache {
 
 }  // namespace
 
-ParamSchema DynamicCubePass::schema() {
+ParamSchema EnvDynamicCubePass::schema() {
   return {ParamSpec::integer("resolution", 256, 1, 8192, "texels per side of each cube face")};
 }
 
-void DynamicCubePass::setup(PassBuilder& b) {
+void EnvDynamicCubePass::setup(PassBuilder& b) {
   resolution_ = b.params().integer("resolution");
   io_ = slotIo(b, "reflection");
 }
 
-void DynamicCubePass::execute(PassContext& c) {
-  gl::ScopedGlLabel label("env_dynamic_cube");
+void EnvDynamicCubePass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const gl::Texture& hits = c.glTexture(io_.hits);

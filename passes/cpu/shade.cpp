@@ -1,4 +1,4 @@
-#include "passes/rt/shade.h"
+#include "passes/cpu/shade.h"
 
 #include <tbb/parallel_for.h>
 

@@ -5,11 +5,11 @@
 #include "gl/scene_shading.glsl"
 
 uniform vec2 uViewportSize;
-layout(binding = 0) uniform usampler2D uVisibility;
+layout(binding = 0) uniform usampler2D uHits;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  SceneSurface s = surfaceFromVisibility(texelFetch(uVisibility, ivec2(gl_FragCoord.xy), 0));
+  SceneSurface s = surfaceFromHits(texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
   if (s.hit && sceneMaterial(s.material, s.uv).kt > 0.0) discard;
   outColor = vec4(0.0);
 }

@@ -34,7 +34,7 @@ struct ShadowLight {
 };
 layout(std430, binding = 8) readonly buffer ShadowLights { ShadowLight shadowLights[]; };
 
-layout(binding = 0) uniform usampler2D uVisibility;
+layout(binding = 0) uniform usampler2D uHits;
 layout(binding = 1) uniform sampler2DArray uShadowMaps;
 
 uniform int uLight;  // -1: a layer with no light, written as lit
@@ -195,7 +195,7 @@ void main() {
     outVisibility = 1.0;
     return;
   }
-  SceneSurface s = surfaceFromVisibility(texelFetch(uVisibility, ivec2(gl_FragCoord.xy), 0));
+  SceneSurface s = surfaceFromHits(texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
   ShadowLight light = shadowLights[uLight];
   gKind = light.info.x;
   gFirst = light.info.y;

@@ -5,14 +5,14 @@
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
 
-layout(binding = 0) uniform usampler2D uVisibility;
+layout(binding = 0) uniform usampler2D uHits;
 layout(binding = 1) uniform samplerCube uCube;
 uniform int uInstance;
 uniform vec3 uEye;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  SceneSurface s = surfaceFromVisibility(texelFetch(uVisibility, ivec2(gl_FragCoord.xy), 0));
+  SceneSurface s = surfaceFromHits(texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
   if (!s.hit || s.instance != uInstance) discard;
   vec3 incoming = s.position - uEye;
   vec3 n = dot(s.faceNormal, incoming) > 0.0 ? -s.shadingNormal : s.shadingNormal;
