@@ -1,60 +1,75 @@
 #pragma once
-// Robust origins and extents for secondary rays, with no fixed epsilon in world units.
+// Robust origins and extents for secondary rays, with no fixed epsilon in world units: every
+// offset and margin is relative to the magnitude of the coordinates involved, so a scene scaled
+// by 1e-6 or 1e6 gets the same rays up to scale (docs/numerics.md).
 //
-// Origin offset: Carsten Wächter and Nikolaus Binder, "A Fast and Robust Method for Avoiding
-// Self-Intersection", in Ray Tracing Gems (Haines and Akenine-Möller, eds.), Apress 2019,
-// chapter 6. A reconstructed hit point carries a rounding error proportional to the magnitude
-// of its coordinates, so the point is moved along the geometric normal by a number of units in
-// the last place (ULPs) of each coordinate: the integer bit pattern of each float is stepped by
-// kIntScale * n_i. Near the origin, where ULPs become tiny while the error of the computation
-// does not, the paper falls back to a small absolute step kFloatScale * n_i below
-// kOriginThreshold. The three constants are the paper's.
+// Origin offset: the error-bound method of pbrt-v4 (Pharr, Jakob, Humphreys, "Physically Based
+// Rendering", 4th ed., section 6.8.6 "Robust Spawned Ray Origins"): the reconstructed hit point
+// p lies within an error box of its true surface, so the origin is moved along the geometric
+// normal n by d = |n| . error and each coordinate is then rounded one more float away from the
+// surface, so the addition's own rounding cannot pull it back.
 //
-// Extension (ours): the error of p = (1-u-v) p0 + u p1 + v p2 scales with the vertices'
-// coordinates, not with p's own: a large triangle passing near an axis plane gives a p_i close
-// to 0 whose error is an ULP of the vertex coordinates. offsetRayOrigin(p, n, magnitude) counts
-// the ULPs at max(|p_i|, magnitude_i); with magnitude = 0 it is exactly the paper's method.
-// vertexMagnitude() gives the magnitude for a triangle.
+// The error box has two terms:
+//   e_i = kAxisOffset * max(|p_i|, magnitude_i) + kCrossOffset * M,   M = max_i of the same.
+// The first is the rounding of p_i itself. p = (1-u-v) p0 + u p1 + v p2 is rounded at the scale
+// of the vertices, not of p (a large triangle passing near an axis plane gives a p_i close to 0
+// whose error is an ULP of the vertex coordinates), hence magnitude = vertexMagnitude(); its
+// constant, 256 FLT_EPSILON, is the size of Wächter and Binder's 256-ULP step (Ray Tracing Gems
+// ch. 6) that this code used before. The second covers Embree's watertight test, which re-finds
+// the surface from vertex - origin differences whose rounding mixes the axes: a tilted plane
+// through y = 0 with x ~ 10 has an error ~ ulp(10) in its plane distance even where p_y = 0.
+// Measured (tests/numerics/test_reintersection.cpp): 1 FLT_EPSILON already gives no self hit
+// over scales and offsets 1e-6 .. 1e6; 4 is used. Neither term has an absolute floor: Wächter
+// and Binder's 1/65536 fallback below |p| = 1/32 was the floor that dominated small scenes (a
+// 1e-6-scaled Whitted scene lost every shadow and secondary hit, issue 13). The only floor left
+// is FLT_MIN (denormals), i.e. scenes below ~1e-30 units.
+//
+// Users with their own surfaces (analytic quadrics, SDFs) pass their own per-axis error bound to
+// offsetRayOriginByError (pbrt gives gamma(5) |p| for a reprojected sphere hit), or the
+// magnitude of the coordinates their hit point was computed from to offsetRayOrigin.
 #include <algorithm>
-#include <bit>
 #include <cfloat>
 #include <cmath>
-#include <cstdint>
 
 #include "engine/core/math.h"
 
 namespace diptych {
 
 namespace ray_offset {
-inline constexpr float kIntScale = 256.f;              // ULPs per unit of normal component
-inline constexpr float kOriginThreshold = 1.f / 32.f;  // below this |coordinate|, absolute step
-inline constexpr float kFloatScale = 1.f / 65536.f;    // absolute step per unit of normal
+inline constexpr float kAxisOffset = 256.f * FLT_EPSILON;  // per unit of max(|p_i|, magnitude_i)
+inline constexpr float kCrossOffset = 4.f * FLT_EPSILON;   // per unit of M, on every axis
 }  // namespace ray_offset
 
-// One coordinate: p stepped by kIntScale * n ULPs of max(|p|, magnitude), toward sign(n).
-inline float offsetCoordinate(float p, float n, float magnitude = 0.f) {
-  using namespace ray_offset;
-  const float reference = std::max(std::fabs(p), magnitude);
-  if (reference < kOriginThreshold) return p + kFloatScale * n;
-  // Truncation toward zero, as in the paper: a component below 1/256 adds no step on its axis.
-  const auto ulps = static_cast<std::int32_t>(kIntScale * n);
-  if (reference == std::fabs(p)) {
-    // The paper's form: for p < 0 a larger bit pattern is a more negative value, so subtract.
-    const std::int32_t bits = std::bit_cast<std::int32_t>(p);
-    return std::bit_cast<float>(bits + (p < 0.f ? -ulps : ulps));
+// pbrt-v4's OffsetRayOrigin: p moved along n (unit, pointing to the side the new ray leaves
+// from) past the box p +- error (per-axis absolute error bounds, >= 0).
+inline vec3 offsetRayOriginByError(const vec3& p, const vec3& n, const vec3& error) {
+  const float d = glm::dot(glm::abs(n), error);
+  vec3 o = p + d * n;
+  for (int i = 0; i < 3; ++i) {
+    // Round away from the surface: the sum above was rounded to nearest, possibly back.
+    if (n[i] > 0.f)
+      o[i] = std::nextafter(o[i], INFINITY);
+    else if (n[i] < 0.f)
+      o[i] = std::nextafter(o[i], -INFINITY);
   }
-  // Step the (positive) reference instead and carry the difference over to p. The difference
-  // of two floats within a factor 2 of each other is exact (Sterbenz), so the step is exactly
-  // `ulps` ULPs of the reference; adding it to the smaller p rounds by at most half an ULP of p.
-  const float stepped = std::bit_cast<float>(std::bit_cast<std::int32_t>(reference) + ulps);
-  return p + (stepped - reference);
+  return o;
+}
+
+// The error bound e above of a point p computed from coordinates of magnitude `magnitude` (per
+// axis; zero: p alone). M is never below FLT_MIN, so a point exactly at the origin still moves.
+inline vec3 positionErrorBound(const vec3& p, const vec3& magnitude = vec3(0.f),
+                               float axisOffset = ray_offset::kAxisOffset,
+                               float crossOffset = ray_offset::kCrossOffset) {
+  const vec3 m = glm::max(glm::abs(p), magnitude);
+  const float scale = std::max({m.x, m.y, m.z, FLT_MIN});
+  return axisOffset * m + vec3(crossOffset * scale);
 }
 
 // p: a point reconstructed on a surface; n: that surface's unit geometric normal, pointing to
-// the side the new ray leaves from (flip it for rays that go through the surface).
+// the side the new ray leaves from (flip it for rays that go through the surface); magnitude:
+// vertexMagnitude() of its triangle.
 inline vec3 offsetRayOrigin(const vec3& p, const vec3& n, const vec3& magnitude = vec3(0.f)) {
-  return vec3(offsetCoordinate(p.x, n.x, magnitude.x), offsetCoordinate(p.y, n.y, magnitude.y),
-              offsetCoordinate(p.z, n.z, magnitude.z));
+  return offsetRayOriginByError(p, n, positionErrorBound(p, magnitude));
 }
 
 // Component-wise max |coordinate| of a triangle's vertices: the scale of the rounding error of

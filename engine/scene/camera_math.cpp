@@ -65,7 +65,9 @@ Ray thinLensRay(const Camera& c, int width, int height, float x, float y, vec2 l
 Camera frameBounds(const Aabb& b) {
   Camera c;
   const vec3 centre = b.empty() ? vec3(0.f) : b.center();
-  const float radius = std::max(0.5f * b.diagonal(), 1e-3f);
+  // A point-like scene still gets a radius, relative to where it is (no absolute floor).
+  const float radius = 0.5f * b.diagonal() > 0.f ? 0.5f * b.diagonal()
+                                                 : std::max(1e-3f * glm::length(centre), 1e-30f);
   const float distance = radius / std::sin(0.5f * c.verticalFov) * 1.1f;
   c.target = centre;
   c.position = centre + vec3(0.f, 0.25f * radius, distance);
@@ -73,6 +75,17 @@ Camera frameBounds(const Aabb& b) {
   c.zfar = distance + 2.f * radius;
   c.focusDistance = distance;
   return c;
+}
+
+void fitNearFar(Camera& c, const Aabb& b) {
+  if (b.empty()) return;
+  const vec3 p = c.position;
+  const vec3 nearest = glm::clamp(p, b.lo, b.hi);
+  const vec3 farthest = glm::max(glm::abs(p - b.lo), glm::abs(p - b.hi));
+  const float zfar = 1.01f * glm::length(farthest);
+  if (!(zfar > 0.f) || !std::isfinite(zfar)) return;
+  c.zfar = zfar;
+  c.znear = std::max(0.5f * glm::length(nearest - p), 1e-4f * zfar);
 }
 
 }  // namespace diptych

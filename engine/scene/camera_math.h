@@ -33,4 +33,9 @@ Ray thinLensRay(const Camera& camera, int width, int height, float x, float y, v
 // A camera that frames the bounds (used when a scene has none).
 Camera frameBounds(const Aabb& bounds);
 
+// near/far fitted to the scene's bounds as seen from camera.position: far just past the farthest
+// box corner, near half the distance to the box (1e-4 far when the camera is inside it), so
+// that the clip range scales with the scene (docs/numerics.md). An empty box leaves c unchanged.
+void fitNearFar(Camera& c, const Aabb& bounds);
+
 }  // namespace diptych

@@ -428,9 +428,11 @@ void readCamera(JsonObject o, Scene& scene) {
   if (c.aperture < 0.f) o.fail("aperture", "must not be negative");
   c.focusDistance = o.number("focus_distance", glm::length(c.target - c.position));
   if (!(c.focusDistance > 0.f)) o.fail("focus_distance", "must be positive");
-  c.znear = o.number("near", c.znear);
-  c.zfar = o.number("far", c.zfar);
-  if (!(c.znear > 0.f && c.zfar > c.znear)) o.fail("near", "need 0 < near < far");
+  // Without near/far they are fitted to the scene's bounds by loadScene (0 marks "fit").
+  const bool given = o.has("near") || o.has("far");
+  c.znear = given ? o.number("near", c.znear) : 0.f;
+  c.zfar = given ? o.number("far", c.zfar) : 0.f;
+  if (given && !(c.znear > 0.f && c.zfar > c.znear)) o.fail("near", "need 0 < near < far");
   if (c.position == c.target) o.fail("target", "equals position");
   if (glm::length(glm::cross(c.target - c.position, c.up)) == 0.f)
     o.fail("up", "is zero or parallel to the viewing direction");

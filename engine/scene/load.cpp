@@ -4,6 +4,7 @@
 
 #include "engine/core/error.h"
 #include "engine/scene/camera_math.h"
+#include "engine/scene/scene_transform.h"
 #include "engine/scene/validate.h"
 
 namespace diptych {
@@ -26,7 +27,16 @@ Scene loadScene(const std::filesystem::path& path) {
     const Aabb box = scene.bounds();
     if (!box.empty() && allFinite(box.lo) && allFinite(box.hi)) scene.camera = frameBounds(box);
   }
+  if (scene.camera.znear == 0.f && scene.camera.zfar == 0.f) {  // not given: fit to the bounds
+    scene.camera.znear = Camera{}.znear;
+    scene.camera.zfar = Camera{}.zfar;
+    const Aabb box = scene.bounds();
+    if (!box.empty() && allFinite(box.lo) && allFinite(box.hi)) fitNearFar(scene.camera, box);
+  }
   validateScene(scene);
+  // Far from the origin, float world coordinates would spend their bits on the offset:
+  // move the world so the camera sits at the origin (docs/numerics.md).
+  rebaseIfFar(scene);
   return scene;
 }
 

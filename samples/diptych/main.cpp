@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "engine/core/error.h"
+#include "samples/diptych/check_command.h"
 #include "samples/diptych/compare_command.h"
 #include "samples/diptych/diff_command.h"
 #include "samples/diptych/passes_command.h"
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   diptych::cli::addRenderCommand(app, exitCode);
   diptych::cli::addCompareCommand(app, exitCode);
   diptych::cli::addDiffCommand(app, exitCode);
+  diptych::cli::addCheckCommand(app, exitCode);
   diptych::cli::addPassesCommand(app, exitCode);
   diptych::cli::addSweepCommand(app, exitCode);
   diptych::cli::addShadowBiasCommand(app, exitCode);

@@ -1,4 +1,4 @@
-// Robust ray origins (Wächter & Binder, Ray Tracing Gems ch. 6) and shadow-ray margins,
+// Robust ray origins (pbrt-v4 error bounds, engine/rt/ray_offset.h) and shadow-ray margins,
 // checked on random triangles of scale 1e-4 .. 1e4, near and far from the origin.
 #include <gtest/gtest.h>
 
@@ -93,24 +93,30 @@ OffsetStats runOffsetTrial(bool useVertexMagnitude, float minCentreFactor, bool 
 
 }  // namespace
 
-TEST(RayOffset, PaperOffsetStepsTheBitPatternByUlps) {
-  // 256 * n ULPs away from the surface, toward the normal, for either sign of p.
-  const float p = 3.f;
-  EXPECT_EQ(offsetCoordinate(p, 1.f),
-            std::nextafter(p, 10.f) + 255.f * (std::nextafter(p, 10.f) - p));
-  EXPECT_GT(offsetCoordinate(-3.f, 1.f), -3.f);
-  EXPECT_LT(offsetCoordinate(-3.f, -1.f), -3.f);
-  EXPECT_LT(offsetCoordinate(3.f, -0.5f), 3.f);
-  // Near the origin: the absolute fallback.
-  EXPECT_EQ(offsetCoordinate(0.f, 1.f), ray_offset::kFloatScale);
-  // The step scales with magnitude: relative size constant over 8 decades.
-  for (float x : {1e-1f, 1.f, 1e3f, 1e7f}) {
-    const float rel = (offsetCoordinate(x, 1.f) - x) / x;
-    EXPECT_GT(rel, 128.f * FLT_EPSILON);
-    EXPECT_LE(rel, 256.f * FLT_EPSILON);
+TEST(RayOffset, StepIsRelativeToTheCoordinatesWithNoAbsoluteFloor) {
+  // Off an axis plane through the origin the step along n is kCrossOffset * max|coordinate|
+  // (plus one float of rounding away), at every magnitude: no absolute fallback near the origin
+  // (the floor of issue 13).
+  const vec3 n(0.f, 1.f, 0.f);
+  for (float x : {1e-30f, 1e-6f, 1e-2f, 1.f, 1e6f}) {
+    const vec3 o = offsetRayOrigin(vec3(x, 0.f, -0.5f * x), n);
+    EXPECT_GE(o.y, ray_offset::kCrossOffset * x) << x;
+    EXPECT_LE(o.y, 1.01f * ray_offset::kCrossOffset * x) << x;
+    EXPECT_EQ(o.x, x);
   }
-  // With a larger vertex magnitude the step is measured in that magnitude's ULPs.
-  EXPECT_EQ(offsetCoordinate(0.5f, 1.f, 1000.f) - 0.5f, offsetCoordinate(1000.f, 1.f) - 1000.f);
+  // Exactly scale-equivariant under powers of two: the origins of a scene scaled by 2^k are the
+  // origins of the scene, scaled.
+  const vec3 p(0.3f, 1.7f, -2.2f), tilted = glm::normalize(vec3(0.2f, 1.f, -0.4f));
+  const vec3 m(4.f, 2.f, 3.f);
+  for (int k : {-60, -20, 0, 20, 60}) {
+    const float s = std::ldexp(1.f, k);
+    EXPECT_EQ(offsetRayOrigin(p * s, tilted, m * s), offsetRayOrigin(p, tilted, m) * s) << k;
+  }
+  // The vertex magnitude, not p, sets the step near an axis plane.
+  EXPECT_EQ(offsetRayOrigin(vec3(0.f), n, vec3(1000.f, 0.f, 0.f)).y,
+            std::nextafter(ray_offset::kCrossOffset * 1000.f, 1.f));
+  // At the origin itself (degenerate: nothing to scale by) the point still moves.
+  EXPECT_GT(offsetRayOrigin(vec3(0.f), n).y, 0.f);
 }
 
 TEST(RayOffset, OriginsLeaveThePlaneAndShadowRaysNeverHitTheirOwnTriangle) {
@@ -128,9 +134,9 @@ TEST(RayOffset, WithoutOffsetTheSameTrialFails) {
   EXPECT_GT(s.selfHits, s.samples / 100);
 }
 
-TEST(RayOffset, PlainPaperOffsetIsRobustAwayFromTheOrigin) {
-  // Without the vertex magnitude, the paper's offset is robust where |p| is the scale of the
-  // vertices, i.e. for triangles whose distance from the origin exceeds their size.
+TEST(RayOffset, OffsetWithoutVertexMagnitudeIsRobustAwayFromTheOrigin) {
+  // Without the vertex magnitude, the offset (relative to |p| alone) is robust where |p| is the
+  // scale of the vertices, i.e. for triangles whose distance from the origin exceeds their size.
   const OffsetStats s = runOffsetTrial(/*useVertexMagnitude=*/false, /*minCentreFactor=*/10.f);
   EXPECT_EQ(s.belowPlane, 0);
   EXPECT_EQ(s.selfHits, 0);
@@ -173,9 +179,8 @@ TEST(ShadowSegment, LightOnAnEmitterSurfaceIsNotShadowedByIt) {
 
 TEST(RayOffset, LargeTriangleThroughTheOriginNeedsTheVertexMagnitude) {
   // A 1e4-sized triangle, tilted, whose centroid is the origin: near the centroid |p| is tiny,
-  // but p carries rounding errors of ULPs of 1e4. The paper's offset, counting ULPs of p, falls
-  // back to its small absolute step there and leaves origins below the plane; counting ULPs of
-  // the vertex magnitude does not.
+  // but p carries rounding errors of ULPs of 1e4. An offset relative to |p| alone is far too small
+  // there and leaves origins below the plane; one relative to the vertex magnitude does not.
   RandomTriangle t;
   t.p[0] = vec3(-1e4f, -5e3f, 7.5e3f);
   t.p[1] = vec3(1e4f, -5e3f, -7.5e3f);

@@ -1,0 +1,30 @@
+#pragma once
+// Whole-scene similarity transforms and camera-relative rebasing (docs/numerics.md).
+#include <glm/vec3.hpp>
+
+#include "engine/scene/scene.h"
+
+namespace diptych {
+
+// The scene scaled uniformly by `scale` about the origin, then translated by `translation`:
+// instance transforms, camera (position, target, near/far, focus distance, aperture), light
+// positions, quad edges, radii and ranges. Point and spot intensities (candela) are multiplied
+// by scale^2 so that the 1/d^2 falloff leaves the image unchanged; directional lights (lux) and
+// area lights (radiance per unit area: area x 1/d^2 is invariant) are left as they are. The
+// arithmetic is double, rounded once to the scene's float fields, like a file written at that
+// scale. Throws Error for a scale that is not finite and positive.
+Scene similarityTransformed(const Scene& scene, double scale, const glm::dvec3& translation);
+
+// Camera-relative world: every instance translation, light position and the camera are moved by
+// -origin, computed in double and rounded to float once, so that float coordinates hold the
+// geometry near the camera to the precision of its own size rather than of |origin|. Geometry,
+// ray tracing, rasterization and shading all read the moved scene, so they stay consistent.
+void rebaseScene(Scene& scene, const glm::dvec3& origin);
+
+// Rebases to the camera position when the camera is far from the origin compared with the
+// scene's extent (max |camera_i| > kRebaseRatio * largest bounding-box side): there float
+// coordinates would spend their bits on the offset. Returns the origin used (0 when not moved).
+inline constexpr double kRebaseRatio = 16.0;
+glm::dvec3 rebaseIfFar(Scene& scene);
+
+}  // namespace diptych
