@@ -37,8 +37,8 @@ class GraphExecutor {
   const CompiledGraph& graph_;
   RenderWorld& world_;
   std::unique_ptr<GlBackend> gl_;
-  std::vector<Surface> cpuSlots_;
-  std::vector<int> glSlots_;
+  IdVector<PoolSlotId, Surface> cpuSlots_;  // empty in GL slots
+  IdVector<PoolSlotId, int> glSlots_;       // GlBackend handles; -1 in CPU slots
   std::vector<NodeTiming> timings_;
 };
 

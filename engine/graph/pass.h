@@ -1,12 +1,12 @@
 #pragma once
 // A frame-graph pass: setup() declares what it reads, writes and needs from the scene;
 // execute() does the work in its domain (GL on the context, or CPU with Embree/TBB).
-// Adding a technique = one class deriving from Pass + one line in passes/registry.cpp.
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "engine/graph/ids.h"
 #include "engine/graph/params.h"
 #include "engine/graph/resource.h"
 #include "engine/graph/scene_needs.h"
@@ -19,9 +19,6 @@ namespace gl {
 class Texture;
 }
 
-using ResourceId = int;
-constexpr ResourceId kNoResource = -1;
-
 struct FrameSettings {
   int width = 640, height = 480;
   Camera camera;
@@ -32,15 +29,16 @@ class PassBuilder {
   virtual ~PassBuilder() = default;
   // Reads the resource connected to input `slot` in the recipe. Errors name the pass and slot
   // when the slot is unconnected, the producer never writes it, or the format differs.
-  virtual ResourceId read(const std::string& slot, Format expected) = 0;
+  [[nodiscard]] virtual ResourceId read(const std::string& slot, Format expected) = 0;
   // Like read(), but an unconnected slot yields kNoResource instead of an error.
-  virtual ResourceId readOptional(const std::string& slot, Format expected) = 0;
+  [[nodiscard]] virtual ResourceId readOptional(const std::string& slot, Format expected) = 0;
   // Declares a new resource "<pass>.<output>". `fallback` is what consumers read when this pass
   // is culled because the scene lacks something it needs.
-  virtual ResourceId write(const std::string& output, const ResourceDesc& desc, vec4 fallback) = 0;
+  [[nodiscard]] virtual ResourceId write(const std::string& output, const ResourceDesc& desc,
+                                         vec4 fallback) = 0;
   // Writes a new version of an input in place ("versioned on write"); same storage, new handle.
-  virtual ResourceId modify(const std::string& slot, const std::string& output,
-                            Format expected) = 0;
+  [[nodiscard]] virtual ResourceId modify(const std::string& slot, const std::string& output,
+                                          Format expected) = 0;
   virtual void needs(SceneNeed need) = 0;
 
   virtual const Scene& scene() const = 0;

@@ -9,7 +9,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
-#include "engine/rt/texture_sampling.h"
+#include "engine/shading/texture_sampling.h"
 
 namespace diptych {
 namespace {

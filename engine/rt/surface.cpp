@@ -4,7 +4,7 @@
 
 #include "engine/core/error.h"
 #include "engine/rt/ray_offset.h"
-#include "engine/rt/texture_sampling.h"
+#include "engine/shading/texture_sampling.h"
 
 namespace diptych {
 

@@ -3,9 +3,9 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/graph/render_world.h"
-#include "engine/rt/shading.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
+#include "engine/shading/shading.h"
 #include "passes/common/visibility_texel.h"
 
 namespace diptych {
