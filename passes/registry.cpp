@@ -1,5 +1,6 @@
 #include "passes/registry.h"
 
+#include "engine/core/error.h"
 #include "passes/raster/blend_transmission.h"
 #include "passes/raster/dynamic_cube.h"
 #include "passes/raster/env_reflection.h"
@@ -12,66 +13,87 @@
 #include "passes/rt/rt_shadows.h"
 #include "passes/rt/rt_whitted.h"
 #include "passes/rt/shade.h"
+#include "passes/slots.h"
 
 namespace diptych {
 
 const PassRegistry& builtinPasses() {
   static const PassRegistry registry = [] {
     PassRegistry r;
-    r.add<GBufferPass>("gbuffer",
-                       "rasterized visibility buffer, normals and reversed-Z depth (GL)");
-    r.add<SortedBlendPass>("sorted_blend",
-                           "transmission by the lecture's Z-buffer blending, back to front (GL)");
-    r.add<UnsortedBlendPass>("unsorted_blend",
-                             "transmission by Z-buffer blending in scene order (GL)");
-    r.add<PlanarMirrorPass>("planar_mirror", "reflection by the camera mirrored about planes (GL)");
-    r.add<DynamicCubePass>("env_dynamic_cube",
-                           "reflection by a cube map captured from the object's centre (GL)");
-    r.add<EnvCubePass>("env_cube", "reflection: environment cube map lookup along r (GL)");
-    r.add<EnvSpherePass>("env_sphere",
-                         "reflection: sphere map (GL_SPHERE_MAP) lookup along r (GL)");
-    r.add<EnvEquirectPass>("env_equirect", "reflection: lat-long panorama lookup along r (GL)");
-    r.add<RtShadowsPass>("rt_shadows", "exact light visibility by Embree shadow rays (CPU)");
-    r.add<RtReflectionPass>("rt_reflection",
-                            "exact reflection: recursive Whitted reflection rays (CPU)");
-    r.add<RtTransmissionPass>("rt_transmission",
-                              "exact transmission: recursive refraction rays (CPU)");
-    r.add<RtWhittedPass>("rt_whitted",
-                         "full ray tracing: the Whitted reference from primary rays (CPU)");
-    r.add<ShadowMapPass>("shadow_map",
-                         "light visibility by shadow maps with bias and filter modes (GL)");
+    r.add<GBufferPass>({.name = "gbuffer",
+                        .summary = "rasterized hits buffer, normals and reversed-Z depth (GL)"});
+    r.addRenamedOutput({"gbuffer", "visibility", kHits});
+    r.add<ShadePass>(
+        {.name = "shade", .summary = "the lecture's illumination model from the G-buffer (CPU)"});
+
+    // Producers by slot; within a slot, `diptych compare` runs them in this order.
+    r.add<RtShadowsPass>({.name = "rt_shadows",
+                          .slot = "visibility",
+                          .summary = "exact light visibility by Embree shadow rays (CPU)"});
+    r.add<ShadowMapPass>(
+        {.name = "shadow_map",
+         .slot = "visibility",
+         .summary = "light visibility by shadow maps with bias and filter modes (GL)",
+         .presets = {{"shadow-map-256-none", "resolution=256,bias=none"},
+                     {"shadow-map-1024-constant", "resolution=1024,bias=constant"},
+                     {"shadow-map-2048-slope", "resolution=2048,bias=slope,factor=2,units=2"},
+                     {"shadow-map-2048-normal-offset", "resolution=2048,bias=normal_offset"},
+                     {"shadow-map-2048-receiver-plane-pcf",
+                      "resolution=2048,bias=receiver_plane,filter=pcf,kernel=3"},
+                     {"shadow-map-2048-adaptive", "resolution=2048,bias=adaptive"},
+                     {"shadow-map-4096-slope-pcss",
+                      "resolution=4096,bias=slope,factor=2,units=2,filter=pcss"}}});
+    r.add<RtReflectionPass>(
+        {.name = "rt_reflection",
+         .slot = "reflection",
+         .summary = "exact reflection: recursive Whitted reflection rays (CPU)"});
+    r.add<EnvCubePass>({.name = "env_cube",
+                        .slot = "reflection",
+                        .summary = "reflection: environment cube map lookup along r (GL)"});
+    r.add<EnvSpherePass>({.name = "env_sphere",
+                          .slot = "reflection",
+                          .summary = "reflection: sphere map (GL_SPHERE_MAP) lookup along r (GL)"});
+    r.add<EnvEquirectPass>({.name = "env_equirect",
+                            .slot = "reflection",
+                            .summary = "reflection: lat-long panorama lookup along r (GL)"});
+    r.add<DynamicCubePass>(
+        {.name = "env_dynamic_cube",
+         .slot = "reflection",
+         .summary = "reflection by a cube map captured from the object's centre (GL)"});
+    r.add<PlanarMirrorPass>({.name = "planar_mirror",
+                             .slot = "reflection",
+                             .summary = "reflection by the camera mirrored about planes (GL)"});
+    r.add<RtTransmissionPass>({.name = "rt_transmission",
+                               .slot = "transmission",
+                               .summary = "exact transmission: recursive refraction rays (CPU)"});
+    r.add<SortedBlendPass>(
+        {.name = "sorted_blend",
+         .slot = "transmission",
+         .summary = "transmission by the lecture's Z-buffer blending, back to front (GL)"});
+    r.add<UnsortedBlendPass>({.name = "unsorted_blend",
+                              .slot = "transmission",
+                              .summary = "transmission by Z-buffer blending in scene order (GL)"});
+
+    // Full-frame references (no slot).
+    r.add<RtWhittedPass>(
+        {.name = "rt_whitted",
+         .summary = "full ray tracing: the Whitted reference from primary rays (CPU)"});
     r.add<RtDistributedPass>(
-        "rt_distributed",
-        "distributed ray tracing (Cook 1984): antialiasing, depth of field, soft shadows (CPU)");
-    r.add<RtPathPass>("rt_path", "path-traced global-illumination reference (Kajiya 1986) (CPU)");
-    r.add<ShadePass>("shade", "the lecture's illumination model from the G-buffer (CPU)");
+        {.name = "rt_distributed",
+         .summary = "distributed ray tracing (Cook 1984): antialiasing, depth of field, soft "
+                    "shadows (CPU)"});
+    r.add<RtPathPass>({.name = "rt_path",
+                       .summary = "path-traced global-illumination reference (Kajiya 1986) (CPU)"});
+
+    for (const PassTypeInfo& t : r.all())
+      if (!t.slot.empty() && !findTechniqueSlot(t.slot))
+        throw Error("pass type '" + t.name + "' names an undeclared slot '" + t.slot + "'");
+    for (const TechniqueSlot& s : techniqueSlots())
+      if (!r.find(s.exact) || r.find(s.exact)->slot != s.name)
+        throw Error("slot '" + s.name + "': exact producer '" + s.exact + "' not registered");
     return r;
   }();
   return registry;
-}
-
-Recipe defaultHybridRecipe() {
-  Recipe recipe;
-  recipe.file = "<built-in hybrid recipe>";
-  const std::map<std::string, std::string> fromGbuffer = {{"visibility", "gbuffer.visibility"}};
-  recipe.passes = {
-      {.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
-      {.name = "shadows", .type = "rt_shadows", .inputs = fromGbuffer, .place = "passes[1]"},
-      {.name = "reflection", .type = "rt_reflection", .inputs = fromGbuffer, .place = "passes[2]"},
-      {.name = "transmission",
-       .type = "rt_transmission",
-       .inputs = fromGbuffer,
-       .place = "passes[3]"},
-      {.name = "shade",
-       .type = "shade",
-       .inputs = {{"visibility", "gbuffer.visibility"},
-                  {"light_visibility", "shadows.visibility"},
-                  {"reflection", "reflection.reflection"},
-                  {"transmission", "transmission.transmission"}},
-       .place = "passes[4]"},
-  };
-  recipe.outputs = {"shade.color"};
-  return recipe;
 }
 
 }  // namespace diptych

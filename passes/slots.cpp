@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "engine/core/error.h"
+#include "engine/core/known.h"
 
 namespace diptych {
 namespace {
@@ -31,13 +32,66 @@ RecipePass* findPassOfType(Recipe& r, const std::string& type) {
 
 }  // namespace
 
-const std::vector<SlotInfo>& techniqueSlots() {
-  static const std::vector<SlotInfo> slots = {
-      {"visibility", "light_visibility", "visibility"},
-      {"reflection", "reflection", "reflection"},
-      {"transmission", "transmission", "transmission"},
+const std::vector<TechniqueSlot>& techniqueSlots() {
+  static const std::vector<TechniqueSlot> slots = {
+      {.name = "visibility",
+       .signal = "visibility",
+       .format = Format::R32F,
+       .layerPerLight = true,
+       .fallback = vec4(1.f),
+       .shadeInput = "light_visibility",
+       .need = SceneNeed::ShadowCastingLight,
+       .exact = "rt_shadows",
+       .raster = "shadow_map:resolution=2048,bias=slope,factor=2,units=2,filter=pcf,kernel=3",
+       .meaning = "V_i in [0,1] at the G-buffer point, one layer per scene light (1 = lit)"},
+      {.name = "reflection",
+       .signal = "reflection",
+       .format = Format::RGBA32F,
+       .layerPerLight = false,
+       .fallback = vec4(0.f),
+       .shadeInput = "reflection",
+       .need = SceneNeed::ReflectiveMaterial,
+       .exact = "rt_reflection",
+       .raster = "env_cube",
+       .meaning = "L_refl: radiance arriving at the G-buffer point along r = reflect(-v, "
+                  "n_shading); 0 where k_ps = 0"},
+      {.name = "transmission",
+       .signal = "transmission",
+       .format = Format::RGBA32F,
+       .layerPerLight = false,
+       .fallback = vec4(0.f),
+       .shadeInput = "transmission",
+       .need = SceneNeed::TransmissiveMaterial,
+       .exact = "rt_transmission",
+       .raster = "sorted_blend",
+       .meaning = "L_trans: radiance arriving through the surface (refracted for ray tracing, "
+                  "along the view ray for blending); 0 where k_t = 0"},
   };
   return slots;
+}
+
+std::vector<std::string> techniqueSlotNames() {
+  std::vector<std::string> out;
+  for (const TechniqueSlot& s : techniqueSlots()) out.push_back(s.name);
+  return out;
+}
+
+const TechniqueSlot* findTechniqueSlot(const std::string& name) {
+  for (const TechniqueSlot& s : techniqueSlots())
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+SlotIo slotIo(PassBuilder& b, const std::string& name) {
+  const TechniqueSlot* slot = findTechniqueSlot(name);
+  if (!slot) throw Error("slotIo: no technique slot '" + name + "' (passes/slots.cpp)");
+  b.needs(slot->need);
+  SlotIo io;
+  io.hits = b.read(kHits, Format::RGBA32UI);
+  const int layers = slot->layerPerLight ? std::max<int>(1, int(b.scene().lights.size())) : 1;
+  io.signal = b.write(slot->signal, {slot->format, b.frame().width, b.frame().height, layers},
+                      slot->fallback);
+  return io;
 }
 
 SlotOverride parseSlotOverride(const std::string& text) {
@@ -70,23 +124,20 @@ SlotOverride parseSlotOverride(const std::string& text) {
 }
 
 void applySlotOverride(Recipe& recipe, const SlotOverride& o, const PassRegistry& registry) {
-  const auto& slots = techniqueSlots();
-  const auto slot =
-      std::find_if(slots.begin(), slots.end(), [&](const SlotInfo& s) { return s.slot == o.slot; });
-  if (slot == slots.end())
-    throw InputError("--slot", o.text,
-                     "unknown slot '" + o.slot + "' (slots: visibility, reflection, transmission)");
-  if (!registry.find(o.type)) {
-    std::string known;
-    for (const std::string& n : registry.names()) known += (known.empty() ? "" : ", ") + n;
-    throw InputError("--slot", o.text, "unknown pass type '" + o.type + "' (known: " + known + ")");
-  }
+  const TechniqueSlot* slot = findTechniqueSlot(o.slot);
+  if (!slot) throw InputError("--slot", o.text, unknownName("slot", o.slot, techniqueSlotNames()));
+  if (!registry.find(o.type))
+    throw InputError("--slot", o.text, unknownName("pass type", o.type, registry.names()));
   RecipePass* shade = findPassOfType(recipe, "shade");
   if (!shade) throw InputError(recipe.file, "passes", "--slot needs a recipe with a 'shade' pass");
   auto input = shade->inputs.find(slot->shadeInput);
   if (input != shade->inputs.end()) {
     const auto [producer, output] = splitResourceName(input->second, recipe.file, shade->place);
     RecipePass* pass = findPass(recipe, producer);
+    if (!pass)
+      throw InputError(recipe.file, shade->place + ".inputs." + slot->shadeInput,
+                       "--slot " + o.text + ": shade reads '" + input->second +
+                           "', but the recipe has no pass named '" + producer + "'");
     pass->type = o.type;
     pass->params = o.params;
     pass->place = "--slot " + o.text + " (" + pass->place + ")";
@@ -103,9 +154,8 @@ void applySlotOverride(Recipe& recipe, const SlotOverride& o, const PassRegistry
   RecipePass added{.name = o.slot,
                    .type = o.type,
                    .params = o.params,
-                   .inputs = {{"visibility", gbuffer->name + ".visibility"}},
+                   .inputs = {{kHits, gbuffer->name + "." + kHits}},
                    .place = "--slot " + o.text};
-  const std::string gbufferName = gbuffer->name;
   const auto shadeIndex = shade - recipe.passes.data();
   recipe.passes.insert(recipe.passes.begin() + shadeIndex, std::move(added));
   recipe.passes[shadeIndex + 1].inputs[slot->shadeInput] = o.slot + "." + slot->signal;

@@ -6,6 +6,7 @@
 
 #include "engine/core/check.h"
 #include "engine/core/error.h"
+#include "engine/core/known.h"
 
 namespace diptych {
 
@@ -62,7 +63,7 @@ class Builder final : public PassBuilder {
  public:
   Builder(CompiledGraph& g, const Recipe& r, const Scene& s) : g_(g), recipe_(r), scene_(s) {}
 
-  void bind(PassIndex passIndex, const RecipePass* spec, PassParams* params) {
+  void bind(PassIndex passIndex, const RecipePass* spec, const PassParams* params) {
     pass_ = passIndex;
     spec_ = spec;
     params_ = params;
@@ -85,11 +86,11 @@ class Builder final : public PassBuilder {
     const std::string place = ".inputs." + slot;
     if (!found) {
       const auto [producer, output] = splitResourceName(source, recipe_.file, spec_->place + place);
-      std::string written;
+      std::vector<std::string> written;
       for (const GraphResource& r : g_.resources)
-        if (r.name.rfind(producer + ".", 0) == 0) written += (written.empty() ? "" : ", ") + r.name;
+        if (r.name.rfind(producer + ".", 0) == 0) written.push_back(r.name);
       fail(place, "reads '" + source + "', which is never written (pass '" + producer +
-                      "' writes: " + (written.empty() ? "nothing" : written) + ")");
+                      "' writes: " + (written.empty() ? "nothing" : joinNames(written)) + ")");
     }
     GraphResource& res = g_.resources[*found];
     if (res.desc.format != expected)
@@ -138,7 +139,7 @@ class Builder final : public PassBuilder {
   const Scene& scene_;
   PassIndex pass_;
   const RecipePass* spec_ = nullptr;
-  PassParams* params_ = nullptr;
+  const PassParams* params_ = nullptr;
   std::set<std::string> slotsRead_;
 };
 
@@ -304,6 +305,39 @@ void computeLifetimesAndPool(CompiledGraph& g) {
   }
 }
 
+// Old spellings of renamed outputs (PassRegistry::addRenamedOutput) are errors giving the new.
+void rejectRenamed(const Recipe& recipe, const PassRegistry& registry) {
+  std::map<std::string, std::string> typeOf;
+  for (const RecipePass& p : recipe.passes) typeOf[p.name] = p.type;
+  auto renamedAt = [&](const std::string& source) -> const RenamedOutput* {
+    const auto dot = source.find('.');
+    if (dot == std::string::npos) return nullptr;
+    const auto type = typeOf.find(source.substr(0, dot));
+    if (type == typeOf.end()) return nullptr;
+    const std::string output = source.substr(dot + 1);
+    for (const RenamedOutput& r : registry.renamedOutputs())
+      if (r.passType == type->second && (output == r.old || output == r.renamed)) return &r;
+    return nullptr;
+  };
+  for (const RecipePass& p : recipe.passes)
+    for (const auto& [input, source] : p.inputs) {
+      const RenamedOutput* r = renamedAt(source);
+      if (!r) continue;
+      const std::string producer = source.substr(0, source.find('.'));
+      if (source == producer + "." + r->old)
+        throw InputError(recipe.file, p.place + ".inputs." + input,
+                         "'" + source + "' is now called '" + producer + "." + r->renamed + "'");
+      if (input == r->old)
+        throw InputError(recipe.file, p.place + ".inputs." + input,
+                         "the input '" + r->old + "' is now called '" + r->renamed + "'");
+    }
+  for (const std::string& output : recipe.outputs)
+    if (const RenamedOutput* r = renamedAt(output); r && output.ends_with("." + r->old))
+      throw InputError(recipe.file, "outputs",
+                       "'" + output + "' is now called '" +
+                           output.substr(0, output.size() - r->old.size()) + r->renamed + "'");
+}
+
 }  // namespace
 
 CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, const Scene& scene,
@@ -312,16 +346,14 @@ CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, c
   CompiledGraph g;
   g.recipeFile = recipe.file;
   g.frame = frame;
+  rejectRenamed(recipe, registry);
   const std::vector<PassIndex> order = setupOrder(recipe);
 
   for (const RecipePass& spec : recipe.passes) {
     const PassTypeInfo* info = registry.find(spec.type);
-    if (!info) {
-      std::string known;
-      for (const std::string& n : registry.names()) known += (known.empty() ? "" : ", ") + n;
+    if (!info)
       throw InputError(recipe.file, spec.place + ".type",
-                       "unknown pass type '" + spec.type + "' (known: " + known + ")");
-    }
+                       unknownName("pass type", spec.type, registry.names()));
     GraphPass pass{.name = spec.name, .type = spec.type, .pass = info->create()};
     pass.domain = pass.pass->domain();
     g.passes.push_back(std::move(pass));
@@ -330,10 +362,11 @@ CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, c
   Builder builder(g, recipe, scene);
   for (PassIndex p : order) {
     const RecipePass& spec = recipe.passes[std::size_t(p.value)];
-    PassParams params(spec.params, recipe.file, spec.place + ".params");
+    const PassParams params(spec.params, registry.find(spec.type)->params, spec.type, recipe.file,
+                            spec.place + ".params");
     builder.bind(p, &spec, &params);
     g.passes[p].pass->setup(builder);
-    params.rejectUnread(spec.type);
+    params.checkAllRead();
     for (const auto& [slot, source] : spec.inputs)
       if (!builder.slotsRead().count(slot))
         builder.fail(".inputs." + slot, "'" + slot + "' is not an input of this pass type");
@@ -352,10 +385,11 @@ CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, c
   for (const std::string& name : wanted) {
     const auto id = g.findResource(name);
     if (!id) {
-      std::string known;
-      for (const GraphResource& r : g.resources) known += (known.empty() ? "" : ", ") + r.name;
-      throw InputError(recipe.file, "outputs",
-                       "output '" + name + "' is never written (written: " + known + ")");
+      std::vector<std::string> written;
+      for (const GraphResource& r : g.resources) written.push_back(r.name);
+      throw InputError(
+          recipe.file, "outputs",
+          "output '" + name + "' is never written (written: " + joinNames(written) + ")");
     }
     g.outputs.push_back(*id);
   }

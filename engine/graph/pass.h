@@ -1,6 +1,10 @@
 #pragma once
 // A frame-graph pass: setup() declares what it reads, writes and needs from the scene;
 // execute() does the work in its domain (GL on the context, or CPU with Embree/TBB).
+// A pass type is a class deriving from Pass (with a static schema() when it has parameters)
+// plus one entry in passes/registry.cpp; a technique-slot producer also names its slot there
+// and declares its G-buffer input and signal output with slotIo() (passes/slots.h).
+// docs/architecture.md, "Adding a producer", walks through one.
 #include <map>
 #include <memory>
 #include <string>

@@ -1,23 +1,33 @@
 #include "engine/graph/registry.h"
 
+#include <algorithm>
+
 #include "engine/core/error.h"
 
 namespace diptych {
 
 void PassRegistry::add(PassTypeInfo info) {
-  const std::string name = info.name;
-  if (!types_.emplace(name, std::move(info)).second)
-    throw Error("pass type '" + name + "' registered twice");
+  if (find(info.name)) throw Error("pass type '" + info.name + "' registered twice");
+  types_.push_back(std::move(info));
 }
 
 const PassTypeInfo* PassRegistry::find(const std::string& name) const {
-  auto it = types_.find(name);
-  return it == types_.end() ? nullptr : &it->second;
+  for (const PassTypeInfo& t : types_)
+    if (t.name == name) return &t;
+  return nullptr;
 }
 
 std::vector<std::string> PassRegistry::names() const {
   std::vector<std::string> out;
-  for (const auto& [name, info] : types_) out.push_back(name);
+  for (const PassTypeInfo& t : types_) out.push_back(t.name);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<const PassTypeInfo*> PassRegistry::producersOf(const std::string& slot) const {
+  std::vector<const PassTypeInfo*> out;
+  for (const PassTypeInfo& t : types_)
+    if (t.slot == slot) out.push_back(&t);
   return out;
 }
 

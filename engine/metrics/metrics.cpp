@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "engine/core/error.h"
+#include "engine/core/known.h"
 #include "engine/metrics/internal.h"
 #include "engine/metrics/metrics.h"
 
@@ -48,8 +49,7 @@ std::map<std::string, double> computeMetrics(const Image& test, const Image& ref
   for (const std::string& m : options.metrics)
     if (std::find(metricGroupNames().begin(), metricGroupNames().end(), m) ==
         metricGroupNames().end())
-      throw InputError("metrics", "",
-                       "unknown metric '" + m + "' (known: mse, rmse, relmse, psnr, ssim, flip)");
+      throw InputError("metrics", "", unknownName("metric", m, metricGroupNames()));
   checkComparable(test, reference, options);
   auto wanted = [&](const char* name) {
     return options.metrics.empty() ||

@@ -49,18 +49,15 @@ std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry&
 }
 
 void BlendTransmissionPass::setup(PassBuilder& b) {
-  b.needs(SceneNeed::TransmissiveMaterial);
-  visibility_ = b.read("visibility", Format::RGBA32UI);
-  transmission_ =
-      b.write("transmission", {Format::RGBA32F, b.frame().width, b.frame().height}, vec4(0.f));
+  io_ = slotIo(b, "transmission");
 }
 
 void BlendTransmissionPass::execute(PassContext& c) {
   gl::ScopedGlLabel label(sorted_ ? "sorted_blend" : "unsorted_blend");
   RenderWorld& world = c.world();
   const FrameSettings& frame = c.frame();
-  const gl::Texture& visibility = c.glTexture(visibility_);
-  const gl::Texture& out = c.glTexture(transmission_);
+  const gl::Texture& hits = c.glTexture(io_.hits);
+  const gl::Texture& out = c.glTexture(io_.signal);
   auto& cache = world.glCached<BlendCache>();
   cache.ensure(out.width(), out.height());
   auto& renderer = world.glCached<gl::ForwardRenderer>();
@@ -70,7 +67,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   // Lines 1-3 of the lecture's algorithm: opaque polygons with depth (and the background).
   gl::ForwardOptions opaque;
   opaque.instances = gl::InstanceSet::Opaque;
-  opaque.behindVisibility = &visibility;
+  opaque.behindVisibility = &hits;
   renderer.render(world.forwardScene(), view, out, cache.depth, opaque);
 
   // Lines 4-10: transparent polygons in Z order, I = I_m + k_t M_t I, depth-tested, not written.
@@ -81,11 +78,11 @@ void BlendTransmissionPass::execute(PassContext& c) {
   transparent.clear = false;
   transparent.depthWrite = false;
   transparent.blend = true;
-  transparent.behindVisibility = &visibility;
+  transparent.behindVisibility = &hits;
   renderer.render(world.forwardScene(), view, out, cache.depth, transparent);
 
   // The slot's contract: 0 where the first surface transmits nothing.
-  gl::glBindTextureUnit(0, visibility.id());
+  gl::glBindTextureUnit(0, hits.id());
   cache.mask.draw(world, out);
 }
 

@@ -3,6 +3,7 @@
 
 #include "engine/graph/pass.h"
 #include "engine/scene/world_geometry.h"
+#include "passes/slots.h"
 
 namespace diptych {
 
@@ -22,7 +23,7 @@ class BlendTransmissionPass : public Pass {
 
  private:
   bool sorted_;
-  ResourceId visibility_ = kNoResource, transmission_ = kNoResource;
+  SlotIo io_;
 };
 
 class SortedBlendPass : public BlendTransmissionPass {

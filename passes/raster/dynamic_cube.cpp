@@ -24,20 +24,21 @@ struct CubeCache {
 
 }  // namespace
 
+ParamSchema DynamicCubePass::schema() {
+  return {ParamSpec::integer("resolution", 256, 1, 8192, "texels per side of each cube face")};
+}
+
 void DynamicCubePass::setup(PassBuilder& b) {
-  b.needs(SceneNeed::ReflectiveMaterial);
-  resolution_ = b.params().integer("resolution", 256, 1, 8192);
-  visibility_ = b.read("visibility", Format::RGBA32UI);
-  reflection_ =
-      b.write("reflection", {Format::RGBA32F, b.frame().width, b.frame().height}, vec4(0.f));
+  resolution_ = b.params().integer("resolution");
+  io_ = slotIo(b, "reflection");
 }
 
 void DynamicCubePass::execute(PassContext& c) {
   gl::ScopedGlLabel label("env_dynamic_cube");
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
-  const gl::Texture& visibility = c.glTexture(visibility_);
-  const gl::Texture& out = c.glTexture(reflection_);
+  const gl::Texture& hits = c.glTexture(io_.hits);
+  const gl::Texture& out = c.glTexture(io_.signal);
   auto& cache = world.glCached<CubeCache>();
   cache.ensure(resolution_);
   auto& renderer = world.glCached<gl::ForwardRenderer>();
@@ -58,7 +59,7 @@ void DynamicCubePass::execute(PassContext& c) {
                       cache.depth, options, face);
     }
     gl::glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    gl::glBindTextureUnit(0, visibility.id());
+    gl::glBindTextureUnit(0, hits.id());
     gl::glBindTextureUnit(1, cache.cube.id());
     cache.resolve.program().set("uInstance", mesh.instance);
     cache.resolve.program().set("uEye", c.frame().camera.position);

@@ -1,5 +1,6 @@
 #pragma once
 #include "engine/graph/pass.h"
+#include "passes/slots.h"
 
 namespace diptych {
 
@@ -13,13 +14,14 @@ namespace diptych {
 // distance to what is reflected (docs/forward-producers.md). 0 elsewhere.
 class DynamicCubePass : public Pass {
  public:
+  static ParamSchema schema();
   Domain domain() const override { return Domain::Gl; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
 
  private:
   int resolution_ = 256;
-  ResourceId visibility_ = kNoResource, reflection_ = kNoResource;
+  SlotIo io_;
 };
 
 }  // namespace diptych

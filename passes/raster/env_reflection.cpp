@@ -115,15 +115,18 @@ struct EnvReflectionGl {
 
 }  // namespace
 
-void EnvReflectionPass::setup(PassBuilder& b) {
-  b.needs(SceneNeed::ReflectiveMaterial);
+ParamSchema EnvReflectionPass::schema(EnvMapKind kind) {
   // Sides of a resampled map: cube face, sphere map, lat-long height (width = 2 height). A
   // cube-face source for env_cube and a lat-long source for env_equirect are used as they are.
-  const int fallbackResolution = kind_ == EnvMapKind::Cube ? 256 : 512;
-  resolution_ = b.params().integer("resolution", fallbackResolution, 1, 8192);
-  const int w = b.frame().width, h = b.frame().height;
-  visibility_ = b.read("visibility", Format::RGBA32UI);
-  reflection_ = b.write("reflection", {Format::RGBA32F, w, h}, vec4(0.f));
+  return {ParamSpec::integer("resolution", kind == EnvMapKind::Cube ? 256 : 512, 1, 8192,
+                             kind == EnvMapKind::Cube     ? "cube face side of a resampled map"
+                             : kind == EnvMapKind::Sphere ? "sphere map side"
+                                                          : "lat-long height of a resampled map")};
+}
+
+void EnvReflectionPass::setup(PassBuilder& b) {
+  resolution_ = b.params().integer("resolution");
+  io_ = slotIo(b, "reflection");
 }
 
 void EnvReflectionPass::execute(PassContext& c) {
@@ -139,14 +142,14 @@ void EnvReflectionPass::execute(PassContext& c) {
   const gl::GlShadingBuffers& shading = world.glShading();
   world.glScene().bindStorage();
   shading.bindStorage();
-  const gl::Texture& out = c.glTexture(reflection_);
+  const gl::Texture& out = c.glTexture(io_.signal);
   program.use();
   program.set("uLightCount", shading.lightCount);
   program.set("uCameraPosition", camera.position);
   program.set("uWorldToEye", mat4(worldToEye));
   // Filtering across cube faces (GL 4.5 section 8.13.1) instead of clamping at each face edge.
   if (kind_ == EnvMapKind::Cube) gl::glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-  gl::glBindTextureUnit(0, c.glTexture(visibility_).id());
+  gl::glBindTextureUnit(0, c.glTexture(io_.hits).id());
   gl::glBindTextureUnit(1, map.id());
   gl::glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl::glDispatchCompute(GLuint((out.width() + 7) / 8), GLuint((out.height() + 7) / 8), 1);

@@ -1,9 +1,10 @@
 #pragma once
 #include "engine/graph/pass.h"
+#include "passes/slots.h"
 
 namespace diptych {
 
-// Rasterized primary visibility (engine/gl/gbuffer_raster.h): visibility RGBA32UI
+// Rasterized primary visibility (engine/gl/gbuffer_raster.h): hits RGBA32UI
 // (instance + 1, primitive, floatBits(u), floatBits(v)) with Embree-convention barycentrics of
 // the pixel-centre ray, shading normal RGBA32F (w = material), reversed-Z D32F depth.
 class GBufferPass : public Pass {
@@ -13,7 +14,7 @@ class GBufferPass : public Pass {
   void execute(PassContext& context) override;
 
  private:
-  ResourceId visibility_ = kNoResource, normal_ = kNoResource, depth_ = kNoResource;
+  ResourceId hits_ = kNoResource, normal_ = kNoResource, depth_ = kNoResource;
 };
 
 }  // namespace diptych

@@ -68,18 +68,15 @@ mat4 reflectionMatrix(const vec3& n, float d) {
 }
 
 void PlanarMirrorPass::setup(PassBuilder& b) {
-  b.needs(SceneNeed::ReflectiveMaterial);
-  visibility_ = b.read("visibility", Format::RGBA32UI);
-  reflection_ =
-      b.write("reflection", {Format::RGBA32F, b.frame().width, b.frame().height}, vec4(0.f));
+  io_ = slotIo(b, "reflection");
 }
 
 void PlanarMirrorPass::execute(PassContext& c) {
   gl::ScopedGlLabel label("planar_mirror");
   RenderWorld& world = c.world();
   const Camera& camera = c.frame().camera;
-  const gl::Texture& visibility = c.glTexture(visibility_);
-  const gl::Texture& out = c.glTexture(reflection_);
+  const gl::Texture& hits = c.glTexture(io_.hits);
+  const gl::Texture& out = c.glTexture(io_.signal);
   auto& cache = world.glCached<MirrorCache>();
   cache.ensure(out.width(), out.height());
   if (!cache.found)
@@ -104,7 +101,7 @@ void PlanarMirrorPass::execute(PassContext& c) {
     options.clipPlane = vec4(n, d);
     renderer.render(world.forwardScene(), mirrored, cache.color, cache.depth, options);
 
-    gl::glBindTextureUnit(0, visibility.id());
+    gl::glBindTextureUnit(0, hits.id());
     gl::glBindTextureUnit(1, cache.color.id());
     cache.resolve.program().set("uMirrorInstance", mirror.instance);
     cache.resolve.draw(world, out);

@@ -3,6 +3,7 @@
 
 #include "engine/graph/pass.h"
 #include "engine/scene/world_geometry.h"
+#include "passes/slots.h"
 
 namespace diptych {
 
@@ -20,7 +21,7 @@ class PlanarMirrorPass : public Pass {
   void execute(PassContext& context) override;
 
  private:
-  ResourceId visibility_ = kNoResource, reflection_ = kNoResource;
+  SlotIo io_;
 };
 
 struct MirrorPlane {

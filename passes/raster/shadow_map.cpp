@@ -8,11 +8,7 @@ namespace diptych {
 
 void ShadowMapPass::setup(PassBuilder& b) {
   settings_ = shadowmap::readSettings(b.params());
-  b.needs(SceneNeed::ShadowCastingLight);
-  gbuffer_ = b.read("visibility", Format::RGBA32UI);
-  const int layers = std::max<int>(1, int(b.scene().lights.size()));
-  visibility_ =
-      b.write("visibility", {Format::R32F, b.frame().width, b.frame().height, layers}, vec4(1.f));
+  io_ = slotIo(b, "visibility");
 }
 
 void ShadowMapPass::execute(PassContext& c) {
@@ -25,7 +21,7 @@ void ShadowMapPass::execute(PassContext& c) {
   const gl::Texture& maps =
       state.maps(settings_.resolution, std::max(1, shadowmap::totalLayers(frusta)));
   state.renderMaps(world, frusta, settings_, maps);
-  state.lookup(world, frusta, settings_, maps, c.glTexture(gbuffer_), c.glTexture(visibility_));
+  state.lookup(world, frusta, settings_, maps, c.glTexture(io_.hits), c.glTexture(io_.signal));
   c.count("shadow_map_texels",
           double(maps.width()) * maps.height() * shadowmap::totalLayers(frusta));
 }

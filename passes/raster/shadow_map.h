@@ -1,6 +1,7 @@
 #pragma once
 #include "engine/graph/pass.h"
 #include "passes/raster/shadow_map_settings.h"
+#include "passes/slots.h"
 
 namespace diptych {
 
@@ -8,16 +9,17 @@ namespace diptych {
 // directional (orthographic) and spot (perspective) light and a 6-face cube per point or area
 // light, rendered from the scene's GPU buffers; then a full-screen lookup from the exact G-buffer
 // surface point with the chosen bias (none, constant, slope, normal_offset, receiver_plane,
-// adaptive) and filter (none, pcf, poisson, pcss). Output: visibility R32F, one layer per light.
+// adaptive) and filter (none, pcf, poisson, pcss). Output: the visibility slot's signal.
 class ShadowMapPass : public Pass {
  public:
+  static ParamSchema schema() { return shadowmap::schema(); }
   Domain domain() const override { return Domain::Gl; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
 
  private:
   shadowmap::Settings settings_;
-  ResourceId gbuffer_ = kNoResource, visibility_ = kNoResource;
+  SlotIo io_;
 };
 
 }  // namespace diptych

@@ -2,17 +2,13 @@
 
 #include <array>
 #include <utility>
+#include <vector>
 
 #include "engine/core/error.h"
 
 namespace diptych::shadowmap {
 
 namespace {
-
-[[noreturn]] void fail(const PassParams& params, const std::string& key,
-                       const std::string& message) {
-  params.fail(key, message);
-}
 
 constexpr std::array<std::pair<const char*, Bias>, 6> kBiases{
     {{"none", Bias::None},
@@ -27,15 +23,20 @@ constexpr std::array<std::pair<const char*, Filter>, 4> kFilters{{{"none", Filte
                                                                   {"pcss", Filter::Pcss}}};
 
 template <class Enum, std::size_t N>
-Enum parseEnum(const PassParams& params, const std::string& key, const std::string& fallback,
+std::vector<std::string> namesOf(const std::array<std::pair<const char*, Enum>, N>& table) {
+  std::vector<std::string> out;
+  for (const auto& [name, e] : table) out.push_back(name);
+  return out;
+}
+
+// The schema has checked the value against namesOf(table).
+template <class Enum, std::size_t N>
+Enum parseEnum(const PassParams& params, const std::string& key,
                const std::array<std::pair<const char*, Enum>, N>& table) {
-  const std::string value = params.string(key, fallback);
-  std::string known;
-  for (const auto& [name, e] : table) {
+  const std::string value = params.string(key);
+  for (const auto& [name, e] : table)
     if (value == name) return e;
-    known += (known.empty() ? "" : ", ") + std::string(name);
-  }
-  fail(params, key, "unknown " + key + " mode '" + value + "' (known: " + known + ")");
+  params.fail(key, "unhandled " + key + " mode '" + value + "'");
 }
 
 template <class Enum, std::size_t N>
@@ -47,27 +48,51 @@ std::string nameOf(Enum e, const std::array<std::pair<const char*, Enum>, N>& ta
 
 }  // namespace
 
+ParamSchema schema() {
+  using P = ParamSpec;
+  return {
+      P::integer("resolution", 2048, 16, 16384, "texels per side of every map (cube faces too)"),
+      P::choice("bias", "slope", namesOf(kBiases), "depth-bias technique"),
+      P::number("constant_bias", 0.01, 0.0, 1e30, "world units along the light ray (constant)"),
+      P::number("factor", 2.0, -1e4, 1e4, "glPolygonOffset factor (slope)"),
+      P::number("units", 4.0, -1e9, 1e9, "glPolygonOffset units (slope)"),
+      P::number("normal_scale", 1.0, 0.0, 1e4, "texel footprints along the normal (normal_offset)"),
+      P::number("plane_epsilon", 1e-5, 0.0, 1.0, "relative depth margin (receiver_plane)"),
+      P::number("adaptive_epsilon", 1e-4, 0.0, 1.0,
+                "times the scene diagonal, world units (adaptive)"),
+      P::choice("filter", "none", namesOf(kFilters), "lookup filter"),
+      P::integer("kernel", 3, 1, 15, "PCF kernel side, odd"),
+      P::integer("taps", 16, 1, 64, "Poisson and PCSS taps"),
+      P::number("radius", 2.0, 0.0, 256.0, "Poisson radius, texels"),
+      P::number("light_size", 0.1, 0.0, 1e30,
+                "PCSS: point/spot light world diameter (area lights: their own)"),
+      P::number("light_angle", 0.0093, 0.0, 1.5,
+                "PCSS: directional light angular diameter, radians (the sun's)"),
+      P::number("max_radius", 32.0, 1.0, 256.0,
+                "PCSS: cap of the blocker search and penumbra radius, texels"),
+  };
+}
+
 Settings readSettings(const PassParams& p) {
   Settings s;
-  s.resolution = p.integer("resolution", s.resolution, 16, 16384);
-  s.bias = parseEnum(p, "bias", biasName(s.bias), kBiases);
-  s.constantBias = float(p.number("constant_bias", s.constantBias, 0.0, 1e30));
-  s.slopeFactor = float(p.number("factor", s.slopeFactor, -1e4, 1e4));
-  s.slopeUnits = float(p.number("units", s.slopeUnits, -1e9, 1e9));
-  s.normalScale = float(p.number("normal_scale", s.normalScale, 0.0, 1e4));
-  s.planeEpsilon = float(p.number("plane_epsilon", s.planeEpsilon, 0.0, 1.0));
-  s.adaptiveEpsilon = float(p.number("adaptive_epsilon", s.adaptiveEpsilon, 0.0, 1.0));
-  s.filter = parseEnum(p, "filter", filterName(s.filter), kFilters);
-  s.kernel = p.integer("kernel", s.kernel, 1, 15);
-  s.taps = p.integer("taps", s.taps, 1, 64);
-  s.radius = float(p.number("radius", s.radius, 0.0, 256.0));
-  s.lightSize = float(p.number("light_size", s.lightSize, 0.0, 1e30));
-  s.lightAngle = float(p.number("light_angle", s.lightAngle, 0.0, 1.5));
-  s.maxRadius = float(p.number("max_radius", s.maxRadius, 1.0, 256.0));
+  s.resolution = p.integer("resolution");
+  s.bias = parseEnum(p, "bias", kBiases);
+  s.constantBias = float(p.number("constant_bias"));
+  s.slopeFactor = float(p.number("factor"));
+  s.slopeUnits = float(p.number("units"));
+  s.normalScale = float(p.number("normal_scale"));
+  s.planeEpsilon = float(p.number("plane_epsilon"));
+  s.adaptiveEpsilon = float(p.number("adaptive_epsilon"));
+  s.filter = parseEnum(p, "filter", kFilters);
+  s.kernel = p.integer("kernel");
+  s.taps = p.integer("taps");
+  s.radius = float(p.number("radius"));
+  s.lightSize = float(p.number("light_size"));
+  s.lightAngle = float(p.number("light_angle"));
+  s.maxRadius = float(p.number("max_radius"));
   if (s.kernel % 2 == 0)
-    fail(p, "kernel",
-         "kernel must be odd (got " + std::to_string(s.kernel) +
-             "): an N x N PCF kernel is centred on the receiver's texel");
+    p.fail("kernel", "kernel must be odd (got " + std::to_string(s.kernel) +
+                         "): an N x N PCF kernel is centred on the receiver's texel");
   return s;
 }
 

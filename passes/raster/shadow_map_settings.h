@@ -10,26 +10,21 @@ namespace diptych::shadowmap {
 enum class Bias { None = 0, Constant, Slope, NormalOffset, ReceiverPlane, Adaptive };
 enum class Filter { None = 0, Pcf, Poisson, Pcss };
 
+// The values of schema()'s parameters (their defaults and docs are there).
 struct Settings {
-  int resolution = 2048;          // texels per side of every map (cube faces included)
-  Bias bias = Bias::Slope;        // depth-bias technique
-  float constantBias = 0.01f;     // world units along the light ray (Bias::Constant)
-  float slopeFactor = 2.f;        // glPolygonOffset factor (Bias::Slope)
-  float slopeUnits = 4.f;         // glPolygonOffset units (Bias::Slope)
-  float normalScale = 1.f;        // texel footprints along the normal (Bias::NormalOffset)
-  float planeEpsilon = 1e-5f;     // relative depth margin (Bias::ReceiverPlane)
-  float adaptiveEpsilon = 1e-4f;  // x scene diagonal, world units (Bias::Adaptive)
+  int resolution = 0;
+  Bias bias = Bias::None;
+  float constantBias = 0, slopeFactor = 0, slopeUnits = 0, normalScale = 0, planeEpsilon = 0,
+        adaptiveEpsilon = 0;
   Filter filter = Filter::None;
-  int kernel = 3;              // PCF kernel side, odd
-  int taps = 16;               // Poisson / PCSS taps
-  float radius = 2.f;          // Poisson radius, texels
-  float lightSize = 0.1f;      // PCSS: point/spot light world diameter (area lights: their own)
-  float lightAngle = 0.0093f;  // PCSS: directional light angular diameter, radians (the sun's)
-  float maxRadius = 32.f;      // PCSS: cap of the blocker search and penumbra radius, texels
+  int kernel = 0, taps = 0;
+  float radius = 0, lightSize = 0, lightAngle = 0, maxRadius = 0;
 };
 
+// The shadow_map pass's parameters: names, ranges, defaults, doc lines.
+ParamSchema schema();
 // Reads every parameter unconditionally (so any valid key is accepted whatever the mode) and
-// validates values and combinations, each error an InputError naming the recipe place.
+// validates combinations, each error an InputError naming the recipe place.
 Settings readSettings(const PassParams& params);
 
 std::string biasName(Bias bias);

@@ -26,11 +26,19 @@ void shuffle(std::vector<int>& perm, std::uint32_t seed) {
 
 }  // namespace
 
+ParamSchema RtDistributedPass::schema(int defaultSpp) {
+  return {ParamSpec::integer("spp", defaultSpp, 1, 4096,
+                             "samples per pixel, rounded to a square k x k stratified grid"),
+          ParamSpec::integer("depth", 5, 1, 64, "maximum recursion depth (primary hit = 1)"),
+          ParamSpec::integer("area_samples", 16, 1, 4096,
+                             "stratified shadow rays per area light at each hit")};
+}
+
 void RtDistributedPass::setup(PassBuilder& b) {
   b.needs(SceneNeed::Geometry);
-  spp_ = stratifiedSampleCount(b.params().integer("spp", defaultSpp_, 1, 4096));
-  maxDepth_ = b.params().integer("depth", 5, 1, 64);
-  areaSamples_ = b.params().integer("area_samples", 16, 1, 4096);
+  spp_ = stratifiedSampleCount(b.params().integer("spp"));
+  maxDepth_ = b.params().integer("depth");
+  areaSamples_ = b.params().integer("area_samples");
   color_ = b.write("color", {Format::RGBA32F, b.frame().width, b.frame().height},
                    vec4(0.f, 0.f, 0.f, 1.f));
 }

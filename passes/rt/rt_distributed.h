@@ -12,20 +12,20 @@ namespace diptych {
 // the primary ray is WhittedTracer (engine/rt/whitted.h): the same recursion and shading.
 // With spp = 1 the single ray goes through the pixel centre with the pixel index as its seed,
 // so that spp = 1 and aperture 0 reproduce rt_whitted bit for bit.
-// Params: spp (16), depth (5), area_samples (16). Output: color RGBA32F.
+// Params: schema() (`diptych passes` lists them). Output: color RGBA32F.
 class RtDistributedPass : public Pass {
  public:
   RtDistributedPass() = default;
+  static ParamSchema schema(int defaultSpp = 16);
   Domain domain() const override { return Domain::Cpu; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
 
  protected:
   // rt_whitted is this pass with one sample by default and a pinhole whatever the aperture.
-  RtDistributedPass(int defaultSpp, bool thinLens) : defaultSpp_(defaultSpp), thinLens_(thinLens) {}
+  explicit RtDistributedPass(bool thinLens) : thinLens_(thinLens) {}
 
  private:
-  int defaultSpp_ = 16;
   bool thinLens_ = true;
   int spp_ = 16, maxDepth_ = 5, areaSamples_ = 16;
   ResourceId color_ = kNoResource;

@@ -11,14 +11,24 @@
 
 namespace diptych {
 
+ParamSchema RtPathPass::schema() {
+  return {ParamSpec::integer("spp", 16, 1, 1 << 20, "paths per pixel"),
+          ParamSpec::number("time_budget_ms", 0.0, 0.0, 1e9,
+                            "stop adding samples after this wall time (0: no budget)"),
+          ParamSpec::integer("max_depth", 16, 1, 1024, "maximum path length in bounces"),
+          ParamSpec::integer("rr_depth", 3, 1, 1024, "bounce from which Russian roulette applies"),
+          ParamSpec::boolean("russian_roulette", true, "terminate paths by Russian roulette"),
+          ParamSpec::integer("seed", 0, 0, 1 << 30, "random seed")};
+}
+
 void RtPathPass::setup(PassBuilder& b) {
   b.needs(SceneNeed::Geometry);
-  spp_ = b.params().integer("spp", 16, 1, 1 << 20);
-  timeBudgetMs_ = b.params().number("time_budget_ms", 0.0, 0.0, 1e9);
-  maxDepth_ = b.params().integer("max_depth", 16, 1, 1024);
-  rrDepth_ = b.params().integer("rr_depth", 3, 1, 1024);
-  russianRoulette_ = b.params().boolean("russian_roulette", true);
-  seed_ = b.params().integer("seed", 0, 0, 1 << 30);
+  spp_ = b.params().integer("spp");
+  timeBudgetMs_ = b.params().number("time_budget_ms");
+  maxDepth_ = b.params().integer("max_depth");
+  rrDepth_ = b.params().integer("rr_depth");
+  russianRoulette_ = b.params().boolean("russian_roulette");
+  seed_ = b.params().integer("seed");
   const ResourceDesc desc{Format::RGBA32F, b.frame().width, b.frame().height};
   color_ = b.write("color", desc, vec4(0.f, 0.f, 0.f, 1.f));
   variance_ = b.write("variance", desc, vec4(0.f));

@@ -10,8 +10,7 @@ namespace diptych {
 // Each pixel keeps a running mean and variance (Welford, "Note on a Method for Calculating
 // Corrected Sums of Squares and Products", Technometrics 1962) in double precision.
 // Every sample's random sequence depends only on (pixel, pass, seed): reproducible.
-// Params: spp (16), time_budget_ms (0 = none), max_depth (16), rr_depth (3),
-//         russian_roulette (true), seed (0).
+// Params: schema() (`diptych passes` lists them).
 // Outputs: color RGBA32F: the mean (alpha 1);
 //          variance RGBA32F: rgb = variance of the mean per channel, s^2 / n with the unbiased
 //          sample variance s^2 (0 when n < 2); alpha = n, the samples taken per pixel.
@@ -19,6 +18,7 @@ namespace diptych {
 //           invalid_samples (non-finite samples replaced by 0; expected 0).
 class RtPathPass : public Pass {
  public:
+  static ParamSchema schema();
   Domain domain() const override { return Domain::Cpu; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;

@@ -4,33 +4,37 @@
 
 #include "engine/graph/render_world.h"
 #include "engine/rt/whitted.h"
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 
 namespace diptych {
 
+ParamSchema RtSecondaryPass::schema() {
+  return {ParamSpec::integer("depth", 5, 2, 64,
+                             "maximum recursion depth, the G-buffer point being depth 1 (lecture's "
+                             "max)"),
+          ParamSpec::integer("area_samples", 16, 1, 4096,
+                             "stratified shadow rays per area light at each hit")};
+}
+
 void RtSecondaryPass::setup(PassBuilder& b) {
-  const bool reflection = kind_ == Kind::Reflection;
-  b.needs(reflection ? SceneNeed::ReflectiveMaterial : SceneNeed::TransmissiveMaterial);
-  maxDepth_ = b.params().integer("depth", 5, 2, 64);
-  areaSamples_ = b.params().integer("area_samples", 16, 1, 4096);
-  gbuffer_ = b.read("visibility", Format::RGBA32UI);
-  signal_ = b.write(reflection ? "reflection" : "transmission",
-                    {Format::RGBA32F, b.frame().width, b.frame().height}, vec4(0.f));
+  maxDepth_ = b.params().integer("depth");
+  areaSamples_ = b.params().integer("area_samples");
+  io_ = slotIo(b, kind_ == Kind::Reflection ? "reflection" : "transmission");
 }
 
 void RtSecondaryPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
-  const Surface& gbuffer = c.cpuRead(gbuffer_);
-  Surface& out = c.cpuWrite(signal_);
+  const Surface& hits = c.cpuRead(io_.hits);
+  Surface& out = c.cpuWrite(io_.signal);
   const WhittedTracer tracer(scene, world.geometry(), world.rtScene(), {maxDepth_, areaSamples_});
   const bool reflection = kind_ == Kind::Reflection;
 
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
-      if (const auto hit = visibilityTexel(gbuffer, x, y)) {
+      if (const auto hit = hitsTexel(hits, x, y)) {
         const Material& m =
             scene.material(scene.meshes[scene.instances[hit->instance].mesh].material);
         if (reflection ? m.kps > 0.f : m.kt > 0.f) {

@@ -4,6 +4,7 @@
 // mirror or refracted direction, traced recursively by the Whitted tracer (engine/rt/whitted.h)
 // with the same shading as everything else. Other pixels get 0.
 #include "engine/graph/pass.h"
+#include "passes/slots.h"
 
 namespace diptych {
 
@@ -11,6 +12,7 @@ class RtSecondaryPass : public Pass {
  public:
   enum class Kind { Reflection, Transmission };
   explicit RtSecondaryPass(Kind kind) : kind_(kind) {}
+  static ParamSchema schema();
   Domain domain() const override { return Domain::Cpu; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
@@ -18,16 +20,16 @@ class RtSecondaryPass : public Pass {
  private:
   Kind kind_;
   int maxDepth_ = 5, areaSamples_ = 16;
-  ResourceId gbuffer_ = kNoResource, signal_ = kNoResource;
+  SlotIo io_;
 };
 
-// Recursive reflection rays; params: depth (lecture's max, default 5), area_samples (16).
+// Recursive reflection rays; params: schema().
 class RtReflectionPass : public RtSecondaryPass {
  public:
   RtReflectionPass() : RtSecondaryPass(Kind::Reflection) {}
 };
 
-// Recursive refraction rays (Snell, total internal reflection); same params.
+// Recursive refraction rays (Snell, total internal reflection); the same params.
 class RtTransmissionPass : public RtSecondaryPass {
  public:
   RtTransmissionPass() : RtSecondaryPass(Kind::Transmission) {}

@@ -5,31 +5,32 @@
 #include "engine/graph/render_world.h"
 #include "engine/rt/ray_offset.h"
 #include "engine/rt/shadow_rays.h"
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 
 namespace diptych {
 
+ParamSchema RtShadowsPass::schema() {
+  return {ParamSpec::integer("area_samples", 16, 1, 4096,
+                             "stratified shadow rays per area light (1: its centre only)")};
+}
+
 void RtShadowsPass::setup(PassBuilder& b) {
-  b.needs(SceneNeed::ShadowCastingLight);
-  areaSamples_ = b.params().integer("area_samples", 16, 1, 4096);
-  gbuffer_ = b.read("visibility", Format::RGBA32UI);
-  const int layers = std::max<int>(1, int(b.scene().lights.size()));
-  visibility_ =
-      b.write("visibility", {Format::R32F, b.frame().width, b.frame().height, layers}, vec4(1.f));
+  areaSamples_ = b.params().integer("area_samples");
+  io_ = slotIo(b, "visibility");
 }
 
 void RtShadowsPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
-  const Surface& gbuffer = c.cpuRead(gbuffer_);
-  Surface& out = c.cpuWrite(visibility_);
-  const int w = gbuffer.desc.width, h = gbuffer.desc.height;
+  const Surface& hits = c.cpuRead(io_.hits);
+  Surface& out = c.cpuWrite(io_.signal);
+  const int w = hits.desc.width, h = hits.desc.height;
   const auto& lights = world.scene().lights;
   const RtScene& rt = world.rtScene();
 
   // Receivers for covered pixels only, built in parallel per row, then compacted in order.
   std::vector<int> rowCount(h + 1, 0);
   tbb::parallel_for(0, h, [&](int y) {
-    for (int x = 0; x < w; ++x) rowCount[y + 1] += gbuffer.u(x, y, 0) != 0u ? 1 : 0;
+    for (int x = 0; x < w; ++x) rowCount[y + 1] += hits.u(x, y, 0) != 0u ? 1 : 0;
   });
   for (int y = 0; y < h; ++y) rowCount[y + 1] += rowCount[y];
   const std::size_t n = std::size_t(rowCount[h]);
@@ -38,7 +39,7 @@ void RtShadowsPass::execute(PassContext& c) {
   tbb::parallel_for(0, h, [&](int y) {
     std::size_t i = std::size_t(rowCount[y]);
     for (int x = 0; x < w; ++x) {
-      const auto hit = visibilityTexel(gbuffer, x, y);
+      const auto hit = hitsTexel(hits, x, y);
       if (!hit) continue;
       const WorldMesh& mesh = world.geometry().meshes.at(hit->instance);
       const std::uint32_t* tri = &mesh.indices.at(3 * std::size_t(hit->primitive));

@@ -1,22 +1,23 @@
 #pragma once
 #include "engine/graph/pass.h"
+#include "passes/slots.h"
 
 namespace diptych {
 
 // Exact light visibility: one Embree occlusion ray per pixel per light from the G-buffer hit
 // (engine/rt/shadow_rays.h: ULP-offset origin, relative stop short of the light), traced as
 // ray streams in parallel tiles. Area lights are sampled with `area_samples` stratified rays
-// (default 16; 1 = the light's centre only). Output: visibility R32F, one layer per light
-// (1 = lit).
+// (schema()). Output: the visibility slot's signal (passes/slots.cpp).
 class RtShadowsPass : public Pass {
  public:
+  static ParamSchema schema();
   Domain domain() const override { return Domain::Cpu; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
 
  private:
   int areaSamples_ = 16;
-  ResourceId gbuffer_ = kNoResource, visibility_ = kNoResource;
+  SlotIo io_;
 };
 
 }  // namespace diptych

@@ -9,10 +9,11 @@ namespace diptych {
 // G-buffer; `spp` > 1 supersamples each pixel with a stratified k x k jittered grid (k^2 = spp
 // rounded to a square) and averages (box filter). Always a pinhole camera. It is
 // rt_distributed with those two settings: one code path for primary rays.
-// Params: depth (5), area_samples (16), spp (1). Output: color RGBA32F.
+// Params: rt_distributed's, with spp 1 by default. Output: color RGBA32F.
 class RtWhittedPass : public RtDistributedPass {
  public:
-  RtWhittedPass() : RtDistributedPass(1, false) {}
+  RtWhittedPass() : RtDistributedPass(false) {}
+  static ParamSchema schema() { return RtDistributedPass::schema(1); }
 };
 
 }  // namespace diptych

@@ -6,13 +6,14 @@
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
 #include "engine/shading/shading.h"
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
+#include "passes/slots.h"
 
 namespace diptych {
 
 void ShadePass::setup(PassBuilder& b) {
   const int w = b.frame().width, h = b.frame().height;
-  gbuffer_ = b.read("visibility", Format::RGBA32UI);
+  hits_ = b.read(kHits, Format::RGBA32UI);
   lightVisibility_ = b.readOptional("light_visibility", Format::R32F);
   reflection_ = b.readOptional("reflection", Format::RGBA32F);
   transmission_ = b.readOptional("transmission", Format::RGBA32F);
@@ -23,7 +24,7 @@ void ShadePass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
-  const Surface& gbuffer = c.cpuRead(gbuffer_);
+  const Surface& hits = c.cpuRead(hits_);
   const Surface* visibility =
       lightVisibility_ == kNoResource ? nullptr : &c.cpuRead(lightVisibility_);
   const Surface* reflection = reflection_ == kNoResource ? nullptr : &c.cpuRead(reflection_);
@@ -40,7 +41,7 @@ void ShadePass::execute(PassContext& c) {
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       const Ray eye = primaryRay(frame.camera, frame.width, frame.height, x + 0.5f, y + 0.5f);
-      const auto hit = visibilityTexel(gbuffer, x, y);
+      const auto hit = hitsTexel(hits, x, y);
       vec3 radiance;
       if (!hit) {
         radiance = sampleEnvironment(scene.environment, eye.direction);

@@ -17,7 +17,7 @@ class ShadePass : public Pass {
   void execute(PassContext& context) override;
 
  private:
-  ResourceId gbuffer_ = kNoResource, lightVisibility_ = kNoResource;
+  ResourceId hits_ = kNoResource, lightVisibility_ = kNoResource;
   ResourceId reflection_ = kNoResource, transmission_ = kNoResource, color_ = kNoResource;
 };
 

@@ -16,6 +16,7 @@
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
 #include "passes/registry.h"
+#include "passes/slots.h"
 #include "samples/diptych/compare/report.h"
 #include "samples/diptych/compare/runner.h"
 #include "samples/diptych/compare/variants.h"
@@ -75,7 +76,7 @@ std::vector<float> layer(const Surface& s, int l) {
 nlohmann::json signalErrors(const Scene& scene, const GraphRun& run, const Recipe& recipe,
                             const GraphRun& exact, const Recipe& exactRecipe) {
   nlohmann::json out = nlohmann::json::object();
-  const Surface& gbuffer = exact.outputs.at("gbuffer.visibility");
+  const Surface& gbuffer = exact.outputs.at("gbuffer.hits");
   auto signalPair = [&](const std::string& slot) -> std::pair<const Surface*, const Surface*> {
     const std::string mine = slotSignal(recipe, slot), ref = slotSignal(exactRecipe, slot);
     if (mine.empty() || ref.empty() || !run.outputs.count(mine) || !exact.outputs.count(ref))
@@ -184,8 +185,8 @@ void runCompare(const CompareOptions& o) {
   // Exact slot signals on the shared G-buffer: the all-exact hybrid.
   const Recipe exactRecipe = defaultHybridRecipe();
   auto signalOutputs = [](const Recipe& r) {
-    std::vector<std::string> outs = {r.outputs.front(), "gbuffer.visibility"};
-    for (const char* slot : {"visibility", "reflection", "transmission"})
+    std::vector<std::string> outs = {r.outputs.front(), "gbuffer.hits"};
+    for (const std::string& slot : techniqueSlotNames())
       if (const std::string s = slotSignal(r, slot); !s.empty()) outs.push_back(s);
     return outs;
   };

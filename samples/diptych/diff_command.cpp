@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "engine/core/error.h"
+#include "engine/core/known.h"
 #include "engine/metrics/metrics.h"
 
 namespace diptych::cli {
@@ -62,9 +63,7 @@ Threshold parseThreshold(const std::string& text, bool above) {
     throw CLI::ValidationError(option, "expected METRIC=VALUE, got '" + text + "'");
   if (std::find(thresholdNames().begin(), thresholdNames().end(), t.metric) ==
       thresholdNames().end())
-    throw CLI::ValidationError(option, "unknown metric '" + t.metric +
-                                           "' (known: mse, rmse, relmse, psnr, ssim, "
-                                           "flip_mean, flip_p50, flip_p95, flip_p99)");
+    throw CLI::ValidationError(option, unknownName("metric", t.metric, thresholdNames()));
   const std::string number = text.substr(eq + 1);
   char* end = nullptr;
   t.value = std::strtod(number.c_str(), &end);
@@ -175,7 +174,7 @@ void addDiffCommand(CLI::App& app, int& exitCode) {
         for (const std::string& m : splitList(text))
           if (std::find(metricGroupNames().begin(), metricGroupNames().end(), m) ==
               metricGroupNames().end())
-            return "unknown metric '" + m + "' (known: mse, rmse, relmse, psnr, ssim, flip)";
+            return unknownName("metric", m, metricGroupNames());
         if (splitList(text).empty()) return "empty metric list";
         return {};
       });

@@ -5,6 +5,7 @@
 #include "engine/core/error.h"
 #include "samples/diptych/compare_command.h"
 #include "samples/diptych/diff_command.h"
+#include "samples/diptych/passes_command.h"
 #include "samples/diptych/render_command.h"
 
 int main(int argc, char** argv) {
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   diptych::cli::addRenderCommand(app, exitCode);
   diptych::cli::addCompareCommand(app, exitCode);
   diptych::cli::addDiffCommand(app, exitCode);
+  diptych::cli::addPassesCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "engine/core/error.h"
+#include "engine/core/known.h"
 #include "engine/core/log.h"
 #include "engine/core/timing.h"
 #include "engine/gl/context.h"
@@ -167,9 +168,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--out", options->out, "Output image (.png sRGB tone-mapped, .exr/.hdr linear)")
       ->capture_default_str();
-  cmd->add_option(
-      "--slot", options->slots,
-      "Override a technique slot: SLOT=TYPE[:key=value,...] (see docs/technique-slots.md)");
+  cmd->add_option("--slot", options->slots,
+                  "Override a technique slot: SLOT=TYPE[:key=value,...]; SLOT is one of " +
+                      joinNames(techniqueSlotNames()) +
+                      " ('diptych passes' lists each slot's producers and their parameters)");
   cmd->add_option(
       "--output", options->outputs,
       "Graph resource(s) to write (repeatable; default: the recipe's outputs). The first "

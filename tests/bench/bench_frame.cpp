@@ -32,7 +32,7 @@
 #include "engine/rt/shadow_rays.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
@@ -101,9 +101,8 @@ void BM_HybridFrame(benchmark::State& state, const std::string& sceneName) {
 
 void BM_ShadowsBreakdown(benchmark::State& state, const std::string& sceneName) {
   const Scene scene = loadSample(sceneName);
-  HybridFrame h(scene, int(state.range(0)), int(state.range(1)),
-                {"shade.color", "gbuffer.visibility"});
-  const Surface& gbuffer = h.executor->output("gbuffer.visibility");
+  HybridFrame h(scene, int(state.range(0)), int(state.range(1)), {"shade.color", "gbuffer.hits"});
+  const Surface& gbuffer = h.executor->output("gbuffer.hits");
   RenderWorld& world = *h.world;
   const auto& lights = world.scene().lights;
   const RtScene& rt = world.rtScene();
@@ -121,7 +120,7 @@ void BM_ShadowsBreakdown(benchmark::State& state, const std::string& sceneName) 
     receivers.reserve(std::size_t(w) * hgt);
     for (int y = 0; y < hgt; ++y) {
       for (int x = 0; x < w; ++x) {
-        const auto hit = visibilityTexel(gbuffer, x, y);
+        const auto hit = hitsTexel(gbuffer, x, y);
         if (!hit) continue;
         const WorldMesh& mesh = world.geometry().meshes.at(hit->instance);
         const std::uint32_t* tri = &mesh.indices.at(3 * std::size_t(hit->primitive));

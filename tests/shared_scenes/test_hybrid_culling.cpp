@@ -14,7 +14,7 @@
 #include <set>
 #include <string>
 
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
@@ -33,13 +33,13 @@ struct Coverage {
 // Checks every texel of the G-buffer ids against the world geometry, and shade.color for NaN/Inf.
 Coverage inspect(const testing::HybridFrame& f) {
   Coverage c;
-  const Surface& vis = f.output("gbuffer.visibility");
+  const Surface& vis = f.output("gbuffer.hits");
   const Surface& color = f.output("shade.color");
   const WorldGeometry& g = f.world->geometry();
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {
       for (int ch = 0; ch < 4; ++ch) c.nonFinite += !std::isfinite(color.f(x, y, ch));
-      const auto hit = visibilityTexel(vis, x, y);
+      const auto hit = hitsTexel(vis, x, y);
       if (!hit) continue;
       ++c.covered;
       if (hit->instance < 0 || std::size_t(hit->instance) >= g.meshes.size() ||
@@ -58,7 +58,7 @@ TEST(HybridCullingShared, CornellBoxWithoutPunctualLightsCullsShadowsAndShadesWi
   const fs::path file = kShared / "cornell-box" / "CornellBox.glb";
   if (!fs::exists(file)) GTEST_SKIP() << "no " << file;
   auto f = testing::renderHybridFrame(file, kW, kH,
-                                      {"gbuffer.visibility", "shadows.visibility", "shade.color"});
+                                      {"gbuffer.hits", "shadows.visibility", "shade.color"});
   ASSERT_TRUE(f->scene.lights.empty()) << "CornellBox.glb is expected to have no punctual lights";
   const GraphPass* shadows = f->pass("shadows");
   ASSERT_NE(shadows, nullptr);
@@ -88,7 +88,7 @@ class HybridSharedModel : public ::testing::TestWithParam<const char*> {};
 TEST_P(HybridSharedModel, RendersFiniteColourAndCoversPixels) {
   const fs::path file = kShared / GetParam();
   if (!fs::exists(file)) GTEST_SKIP() << "no " << file;
-  auto f = testing::renderHybridFrame(file, kW, kH, {"gbuffer.visibility", "shade.color"});
+  auto f = testing::renderHybridFrame(file, kW, kH, {"gbuffer.hits", "shade.color"});
   EXPECT_FALSE(f->pass("gbuffer")->culled);
   EXPECT_FALSE(f->pass("shade")->culled);
   // Shadows run exactly when the scene has a shadow-casting light.
@@ -119,7 +119,7 @@ TEST_P(HybridSharedModel, WithAHeadlightCastsShadowRaysAndStaysFinite) {
                                .intensity = distance * distance,
                                .position = camera.position});
   auto f = testing::renderHybridFrame(std::move(scene), kW, kH,
-                                      {"gbuffer.visibility", "shadows.visibility", "shade.color"});
+                                      {"gbuffer.hits", "shadows.visibility", "shade.color"});
   ASSERT_FALSE(f->pass("shadows")->culled);
   const Coverage c = inspect(*f);
   EXPECT_EQ(c.nonFinite, 0) << "NaN or Inf in shade.color";
@@ -127,15 +127,15 @@ TEST_P(HybridSharedModel, WithAHeadlightCastsShadowRaysAndStaysFinite) {
 
   const Surface& vis = f->output("shadows.visibility");
   const Surface& color = f->output("shade.color");
-  const Surface& ids = f->output("gbuffer.visibility");
+  const Surface& ids = f->output("gbuffer.hits");
   const int headlight = vis.desc.layers - 1;
   int lit = 0, badVisibility = 0, shadowed = 0;
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {
       const float v = vis.f(x, y, 0, headlight);
       badVisibility += v != 0.f && v != 1.f;
-      if (visibilityTexel(ids, x, y) && v == 0.f) ++shadowed;
-      if (visibilityTexel(ids, x, y) && v == 1.f &&
+      if (hitsTexel(ids, x, y) && v == 0.f) ++shadowed;
+      if (hitsTexel(ids, x, y) && v == 1.f &&
           color.f(x, y, 0) + color.f(x, y, 1) + color.f(x, y, 2) > 0.f)
         ++lit;
     }

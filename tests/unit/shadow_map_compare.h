@@ -42,24 +42,24 @@ inline ShadowComparison compareShadows(const Scene& scene, const nlohmann::json&
       {.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
       {.name = "rt",
        .type = "rt_shadows",
-       .inputs = {{"visibility", "gbuffer.visibility"}},
+       .inputs = {{"hits", "gbuffer.hits"}},
        .place = "passes[1]"},
       {.name = "sm",
        .type = "shadow_map",
        .params = params,
-       .inputs = {{"visibility", "gbuffer.visibility"}},
+       .inputs = {{"hits", "gbuffer.hits"}},
        .place = "passes[2]"},
   };
   const CompiledGraph graph =
       compileGraph(recipe, builtinPasses(), scene, FrameSettings{width, height, scene.camera},
-                   {"sm.visibility", "rt.visibility", "gbuffer.visibility"});
+                   {"sm.visibility", "rt.visibility", "gbuffer.hits"});
   gl::testing::osmesaContext();
   RenderWorld world(scene, &gl::testing::osmesaContext());
   GraphExecutor ex(graph, world);
   ex.runFrame();
   const Surface& sm = ex.output("sm.visibility");
   const Surface& rt = ex.output("rt.visibility");
-  const Surface& gb = ex.output("gbuffer.visibility");
+  const Surface& gb = ex.output("gbuffer.hits");
 
   ShadowComparison c;
   c.width = width;

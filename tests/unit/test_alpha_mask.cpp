@@ -84,17 +84,17 @@ Frame renderFrame(const Scene& scene, Check&& check) {
       {.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
       {.name = "rt",
        .type = "rt_shadows",
-       .inputs = {{"visibility", "gbuffer.visibility"}},
+       .inputs = {{"hits", "gbuffer.hits"}},
        .place = "passes[1]"},
       {.name = "sm",
        .type = "shadow_map",
        .params = {{"resolution", 1024}, {"bias", "slope"}},
-       .inputs = {{"visibility", "gbuffer.visibility"}},
+       .inputs = {{"hits", "gbuffer.hits"}},
        .place = "passes[2]"},
   };
   const CompiledGraph graph =
       compileGraph(recipe, builtinPasses(), scene, FrameSettings{kWidth, kHeight, scene.camera},
-                   {"sm.visibility", "rt.visibility", "gbuffer.visibility"});
+                   {"sm.visibility", "rt.visibility", "gbuffer.hits"});
   const int errors = gl::glDebugErrorCount();
   RenderWorld world(scene, &gl::testing::osmesaContext());
   GraphExecutor ex(graph, world);
@@ -103,7 +103,7 @@ Frame renderFrame(const Scene& scene, Check&& check) {
   Frame f;
   const Surface& sm = ex.output("sm.visibility");
   const Surface& rt = ex.output("rt.visibility");
-  const Surface& gb = ex.output("gbuffer.visibility");
+  const Surface& gb = ex.output("gbuffer.hits");
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       f.map.push_back(sm.f(x, y, 0));

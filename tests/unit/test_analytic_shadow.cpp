@@ -29,7 +29,7 @@
 #include <numbers>
 #include <vector>
 
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
@@ -45,8 +45,8 @@ double shadowRadius(double sphereRadius) {
 TEST(AnalyticShadow, SphereOverPlaneShadowDiscHasTheExactRadius) {
   const int w = 512, h = 512;
   const auto file = std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / "shadow-sphere.json";
-  auto frame = testing::renderHybridFrame(
-      file, w, h, {"gbuffer.visibility", "shadows.visibility", "shade.color"});
+  auto frame =
+      testing::renderHybridFrame(file, w, h, {"gbuffer.hits", "shadows.visibility", "shade.color"});
   ASSERT_FALSE(frame->pass("shadows")->culled);
   ASSERT_EQ(frame->scene.lights.size(), 1u);
   ASSERT_EQ(frame->scene.lights[0].position, vec3(0.f, float(kH), 0.f));
@@ -56,7 +56,7 @@ TEST(AnalyticShadow, SphereOverPlaneShadowDiscHasTheExactRadius) {
     if (frame->scene.instances[i].name == "ground") plane = int(i);
   ASSERT_GE(plane, 0) << "shadow-sphere.json has no instance named 'ground'";
 
-  const Surface& gbuffer = frame->output("gbuffer.visibility");
+  const Surface& gbuffer = frame->output("gbuffer.hits");
   const Surface& shadows = frame->output("shadows.visibility");
   const Surface& color = frame->output("shade.color");
   ASSERT_EQ(shadows.desc.layers, 1);
@@ -67,7 +67,7 @@ TEST(AnalyticShadow, SphereOverPlaneShadowDiscHasTheExactRadius) {
   std::vector<vec3> position(std::size_t(w) * h, vec3(nan));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      if (const auto hit = visibilityTexel(gbuffer, x, y); hit && hit->instance == plane)
+      if (const auto hit = hitsTexel(gbuffer, x, y); hit && hit->instance == plane)
         position[std::size_t(y) * w + x] =
             interpolatePosition(mesh, hit->primitive, hit->u, hit->v);
   auto at = [&](int x, int y) { return position[std::size_t(y) * w + x]; };

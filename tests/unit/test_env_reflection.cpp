@@ -24,7 +24,7 @@
 #include "engine/scene/environment.h"
 #include "engine/scene/load.h"
 #include "gl_test_context.h"
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 #include "passes/raster/env_maps.h"
 #include "passes/registry.h"
 
@@ -108,8 +108,8 @@ Frame render(const Scene& scene, const std::string& type, int resolution) {
                                    {{"name", "env"},
                                     {"type", type},
                                     {"params", {{"resolution", resolution}}},
-                                    {"inputs", {{"visibility", "gbuffer.visibility"}}}}}},
-                                 {"outputs", {"env.reflection", "gbuffer.visibility"}}};
+                                    {"inputs", {{"hits", "gbuffer.hits"}}}}}},
+                                 {"outputs", {"env.reflection", "gbuffer.hits"}}};
   const FrameSettings frame{.width = kSize, .height = kSize, .camera = scene.camera};
   const CompiledGraph graph =
       compileGraph(parseRecipe(recipe, "test"), builtinPasses(), scene, frame);
@@ -119,7 +119,7 @@ Frame render(const Scene& scene, const std::string& type, int resolution) {
   GraphExecutor executor(graph, world);
   executor.runFrame();
   EXPECT_EQ(gl::glDebugErrorCount(), errors);
-  return {executor.output("gbuffer.visibility"), executor.output("env.reflection")};
+  return {executor.output("gbuffer.hits"), executor.output("env.reflection")};
 }
 
 struct Errors {
@@ -154,7 +154,7 @@ Errors measure(const Frame& f, const std::function<std::optional<vec3>(int, int)
 Errors againstSurfaceReference(const Scene& scene, const Frame& f) {
   const WorldGeometry world = flattenScene(scene);
   return measure(f, [&](int x, int y) -> std::optional<vec3> {
-    const auto hit = visibilityTexel(f.visibility, x, y);
+    const auto hit = hitsTexel(f.visibility, x, y);
     if (!hit) return std::nullopt;
     const vec3 eye = scene.camera.position;
     const SurfacePoint sp = makeSurfacePoint(scene, world, *hit, glm::vec3(0.f));
@@ -168,7 +168,7 @@ Errors againstSurfaceReference(const Scene& scene, const Frame& f) {
 // tessellation error of the mesh's interpolated normals.
 Errors againstAnalyticSphere(const Scene& scene, const Frame& f) {
   return measure(f, [&](int x, int y) -> std::optional<vec3> {
-    if (!visibilityTexel(f.visibility, x, y)) return std::nullopt;
+    if (!hitsTexel(f.visibility, x, y)) return std::nullopt;
     const Ray ray = primaryRay(scene.camera, kSize, kSize, x + 0.5f, y + 0.5f);
     const glm::dvec3 o(ray.origin), d(ray.direction);
     const double b = glm::dot(o, d), c = glm::dot(o, o) - 1.0, disc = b * b - c;
@@ -281,7 +281,7 @@ TEST_F(EnvFixture, SolidColourIsConstantAndBackgroundIsZero) {
     const Frame f = render(scene, type, 64);
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x) {
-        const auto hit = visibilityTexel(f.visibility, x, y);
+        const auto hit = hitsTexel(f.visibility, x, y);
         const bool mirror = hit && hit->instance == 0;  // instance 1 is the diffuse floor
         const vec3 expected = mirror ? vec3(0.4f, 0.8f, 1.6f) : vec3(0.f);
         for (int k = 0; k < 3; ++k)

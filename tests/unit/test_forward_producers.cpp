@@ -16,7 +16,7 @@
 #include "engine/scene/environment.h"
 #include "engine/scene/load.h"
 #include "gl_test_context.h"
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
@@ -39,18 +39,16 @@ struct ProducerRun {
 ProducerRun runProducer(const Scene& scene, const std::string& type, const std::string& signal,
                         int width, int height) {
   Recipe recipe;
-  recipe.passes = {{.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
-                   {.name = "p",
-                    .type = type,
-                    .inputs = {{"visibility", "gbuffer.visibility"}},
-                    .place = "passes[1]"}};
-  recipe.outputs = {"p." + signal, "gbuffer.visibility"};
+  recipe.passes = {
+      {.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
+      {.name = "p", .type = type, .inputs = {{"hits", "gbuffer.hits"}}, .place = "passes[1]"}};
+  recipe.outputs = {"p." + signal, "gbuffer.hits"};
   const CompiledGraph graph =
       compileGraph(recipe, builtinPasses(), scene, {width, height, scene.camera});
   RenderWorld world(scene, &gl::testing::osmesaContext());
   GraphExecutor executor(graph, world);
   executor.runFrame();
-  return {executor.output("p." + signal), executor.output("gbuffer.visibility")};
+  return {executor.output("p." + signal), executor.output("gbuffer.hits")};
 }
 
 vec3 rgb(const Surface& s, int x, int y) {
@@ -237,7 +235,7 @@ Agreement compareReflection(const Scene& scene, const ProducerRun& run, int inst
   Agreement a;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const auto hit = visibilityTexel(run.visibility, x, y);
+      const auto hit = hitsTexel(run.visibility, x, y);
       if (!hit || hit->instance != instance) continue;
       const vec3 ref = referenceReflection(world, scene.camera, w, h, x, y, *hit);
       const float e = maxDiff(rgb(run.signal, x, y), ref);
@@ -308,7 +306,7 @@ TEST_P(DynamicCube, CaptureShowsTheBoxInTheReflectedDirection) {
   int refBox = 0, bothBox = 0, cubeBox = 0, cubeBoxRight = 0;
   for (int y = 0; y < H; ++y) {
     for (int x = 0; x < W; ++x) {
-      const auto hit = visibilityTexel(run.visibility, x, y);
+      const auto hit = hitsTexel(run.visibility, x, y);
       if (!hit || hit->instance != 0) continue;
       const bool ref = referenceReflection(world, scene.camera, W, H, x, y, *hit).y > 0.5f;
       const bool cube = run.signal.f(x, y, 1) > 0.5f;

@@ -14,9 +14,10 @@ namespace {
 // Writes a constant image; parameter "value".
 class ConstantPass : public Pass {
  public:
+  static ParamSchema schema() { return {ParamSpec::number("value", 1.0, -1e9, 1e9, "the value")}; }
   Domain domain() const override { return Domain::Cpu; }
   void setup(PassBuilder& b) override {
-    value_ = float(b.params().number("value", 1.0, -1e9, 1e9));
+    value_ = float(b.params().number("value"));
     out_ = b.write("out", {Format::R32F, b.frame().width, b.frame().height}, vec4(-7.f));
   }
   void execute(PassContext& c) override { c.cpuWrite(out_).fill(vec4(value_)); }
@@ -102,12 +103,12 @@ class FakeGlProducer : public Pass {
 
 PassRegistry testRegistry() {
   PassRegistry r;
-  r.add<ConstantPass>("constant", "constant image");
-  r.add<AddPass>("add", "a + b");
-  r.add<NeedsGlassPass>("needs_glass", "culled without glass");
-  r.add<ScalePass>("scale", "in-place doubling");
-  r.add<SneakyPass>("sneaky", "undeclared access");
-  r.add<FakeGlProducer>("gl_producer", "gl domain");
+  r.add<ConstantPass>({.name = "constant", .summary = "constant image"});
+  r.add<AddPass>({.name = "add", .summary = "a + b"});
+  r.add<NeedsGlassPass>({.name = "needs_glass", .summary = "culled without glass"});
+  r.add<ScalePass>({.name = "scale", .summary = "in-place doubling"});
+  r.add<SneakyPass>({.name = "sneaky", .summary = "undeclared access"});
+  r.add<FakeGlProducer>({.name = "gl_producer", .summary = "gl domain"});
   return r;
 }
 

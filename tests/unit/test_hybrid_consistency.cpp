@@ -36,7 +36,7 @@
 #include <limits>
 #include <string>
 
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
@@ -55,8 +55,8 @@ struct Agreement {
 };
 
 Agreement compareWithEmbree(const std::filesystem::path& file, int w, int h) {
-  auto frame = testing::renderHybridFrame(file, w, h, {"gbuffer.visibility"});
-  const Surface& vis = frame->output("gbuffer.visibility");
+  auto frame = testing::renderHybridFrame(file, w, h, {"gbuffer.hits"});
+  const Surface& vis = frame->output("gbuffer.hits");
   EXPECT_EQ(vis.desc.width, w);
   EXPECT_EQ(vis.desc.height, h);
   const RtScene& rt = frame->world->rtScene();
@@ -68,7 +68,7 @@ Agreement compareWithEmbree(const std::filesystem::path& file, int w, int h) {
     for (int x = 0; x < w; ++x) {
       ++a.pixels;
       const Ray ray = primaryRay(camera, w, h, x + 0.5f, y + 0.5f);
-      const auto gl = visibilityTexel(vis, x, y);
+      const auto gl = hitsTexel(vis, x, y);
       const auto hit = rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
       if (gl) ++a.covered;
       if (bool(gl) != bool(hit) ||

@@ -13,7 +13,7 @@
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
-#include "passes/common/visibility_texel.h"
+#include "passes/common/hits_texel.h"
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
@@ -33,14 +33,14 @@ Agreement compareHybridWithReference(const char* sceneFile, int w, int h) {
   recipe.passes.push_back({.name = "reference", .type = "rt_whitted", .place = "test"});
   const FrameSettings frame{w, h, scene.camera};
   const CompiledGraph g = compileGraph(recipe, builtinPasses(), scene, frame,
-                                       {"shade.color", "reference.color", "gbuffer.visibility"});
+                                       {"shade.color", "reference.color", "gbuffer.hits"});
   auto context = gl::createContext(gl::ContextKind::Osmesa, w, h);
   RenderWorld world(scene, context.get());
   GraphExecutor ex(g, world);
   ex.runFrame();
   const Surface& hybrid = ex.output("shade.color");
   const Surface& reference = ex.output("reference.color");
-  const Surface& gbuffer = ex.output("gbuffer.visibility");
+  const Surface& gbuffer = ex.output("gbuffer.hits");
 
   double num = 0, den = 0;
   int mismatched = 0;
@@ -48,7 +48,7 @@ Agreement compareHybridWithReference(const char* sceneFile, int w, int h) {
     for (int x = 0; x < w; ++x) {
       const Ray ray = primaryRay(frame.camera, w, h, x + 0.5f, y + 0.5f);
       const auto rt = world.rtScene().intersect(ray, 0.f, std::numeric_limits<float>::infinity());
-      const auto gl = visibilityTexel(gbuffer, x, y);
+      const auto gl = hitsTexel(gbuffer, x, y);
       const bool same = (!rt && !gl) || (rt && gl && rt->instance == gl->instance &&
                                          rt->primitive == gl->primitive);
       if (!same) {

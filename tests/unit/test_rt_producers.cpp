@@ -88,13 +88,13 @@ TEST(RtShadows, QuadAreaLightCastsUmbraPenumbraAndLitRegions) {
   const int w = 128, h = 128;
   FrameSettings frame{w, h, scene.camera};
   const CompiledGraph g = compileGraph(defaultHybridRecipe(), builtinPasses(), scene, frame,
-                                       {"shadows.visibility", "gbuffer.visibility"});
+                                       {"shadows.visibility", "gbuffer.hits"});
   auto context = gl::createContext(gl::ContextKind::Osmesa, w, h);
   RenderWorld world(scene, context.get());
   GraphExecutor ex(g, world);
   ex.runFrame();
   const Surface& vis = ex.output("shadows.visibility");
-  const Surface& gbuffer = ex.output("gbuffer.visibility");
+  const Surface& gbuffer = ex.output("gbuffer.hits");
   int umbra = 0, penumbra = 0, lit = 0, plane = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {

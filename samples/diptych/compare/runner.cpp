@@ -31,12 +31,11 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
 }
 
 std::string slotSignal(const Recipe& recipe, const std::string& slot) {
-  for (const SlotInfo& info : techniqueSlots()) {
-    if (info.slot != slot) continue;
-    for (const RecipePass& p : recipe.passes)
-      if (p.type == "shade")
-        if (auto it = p.inputs.find(info.shadeInput); it != p.inputs.end()) return it->second;
-  }
+  const TechniqueSlot* info = findTechniqueSlot(slot);
+  if (!info) return "";
+  for (const RecipePass& p : recipe.passes)
+    if (p.type == "shade")
+      if (auto it = p.inputs.find(info->shadeInput); it != p.inputs.end()) return it->second;
   return "";
 }
 

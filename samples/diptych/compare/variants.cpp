@@ -1,11 +1,13 @@
 #include "samples/diptych/compare/variants.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "engine/core/error.h"
+#include "engine/core/known.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
 
@@ -18,38 +20,24 @@ Recipe Variant::build(const PassRegistry& registry) const {
 }
 
 std::vector<Variant> defaultVariants(const PassRegistry& registry) {
-  // Every slot's producers, each swapped alone into the all-exact hybrid so that its error is
-  // that of one term; plus an all-raster frame. Types not registered in this build are skipped.
-  const std::vector<std::pair<std::string, std::vector<std::string>>> candidates = {
-      {"hybrid-exact", {}},
-      {"raster",
-       {"visibility=shadow_map:resolution=2048,bias=slope,factor=2,units=2,filter=pcf,kernel=3",
-        "reflection=env_cube", "transmission=sorted_blend"}},
-      {"shadow-map-256-none", {"visibility=shadow_map:resolution=256,bias=none"}},
-      {"shadow-map-1024-constant", {"visibility=shadow_map:resolution=1024,bias=constant"}},
-      {"shadow-map-2048-slope",
-       {"visibility=shadow_map:resolution=2048,bias=slope,factor=2,units=2"}},
-      {"shadow-map-2048-normal-offset",
-       {"visibility=shadow_map:resolution=2048,bias=normal_offset"}},
-      {"shadow-map-2048-receiver-plane-pcf",
-       {"visibility=shadow_map:resolution=2048,bias=receiver_plane,filter=pcf,kernel=3"}},
-      {"shadow-map-2048-adaptive", {"visibility=shadow_map:resolution=2048,bias=adaptive"}},
-      {"shadow-map-4096-slope-pcss",
-       {"visibility=shadow_map:resolution=4096,bias=slope,factor=2,units=2,filter=pcss"}},
-      {"env-cube", {"reflection=env_cube"}},
-      {"env-sphere", {"reflection=env_sphere"}},
-      {"env-equirect", {"reflection=env_equirect"}},
-      {"env-dynamic-cube", {"reflection=env_dynamic_cube"}},
-      {"planar-mirror", {"reflection=planar_mirror"}},
-      {"sorted-blend", {"transmission=sorted_blend"}},
-      {"unsorted-blend", {"transmission=unsorted_blend"}},
-  };
-  std::vector<Variant> out;
-  for (const auto& [name, slots] : candidates) {
-    bool available = true;
-    for (const std::string& s : slots)
-      available = available && registry.find(parseSlotOverride(s).type);
-    if (available) out.push_back({name, "", slots});
+  // From the registry: every non-exact producer of every slot, each swapped alone into the
+  // all-exact hybrid so that its error is that of one term (one variant per parameter preset,
+  // or one with the defaults, named after the type); plus an all-raster frame made of each
+  // slot's raster approximation (passes/slots.cpp).
+  std::vector<Variant> out = {{"hybrid-exact", "", {}}, {"raster", "", {}}};
+  for (const TechniqueSlot& slot : techniqueSlots()) {
+    out[1].slots.push_back(slot.name + "=" + slot.raster);
+    for (const PassTypeInfo* type : registry.producersOf(slot.name)) {
+      if (type->name == slot.exact) continue;
+      const std::string swap = slot.name + "=" + type->name;
+      if (type->presets.empty()) {
+        std::string name = type->name;
+        std::replace(name.begin(), name.end(), '_', '-');
+        out.push_back({name, "", {swap}});
+      }
+      for (const ParamPreset& p : type->presets)
+        out.push_back({p.name, "", {swap + ":" + p.params}});
+    }
   }
   return out;
 }
@@ -108,10 +96,10 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
     auto it =
         std::find_if(all.begin(), all.end(), [&](const Variant& v) { return v.name == name; });
     if (it == all.end()) {
-      std::string known;
-      for (const Variant& v : all) known += (known.empty() ? "" : ", ") + v.name;
+      std::vector<std::string> known;
+      for (const Variant& v : all) known.push_back(v.name);
       throw InputError("--variants", name,
-                       "unknown variant (known: " + known + "; or give a .json file)");
+                       unknownName("variant", name, known) + "; or give a .json file");
     }
     out.push_back(*it);
     start = comma + 1;
