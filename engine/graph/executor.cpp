@@ -18,8 +18,8 @@ class ExecutionContext final : public PassContext {
   ExecutionContext(GraphExecutor& ex, const GraphPass& pass, NodeTiming& timing)
       : ex_(ex), pass_(pass), timing_(timing) {}
 
-  const Surface& cpuRead(ResourceId id) override { return cpuSlot(id, false); }
-  Surface& cpuWrite(ResourceId id) override { return cpuSlot(id, true); }
+  const CpuImage& cpuRead(ResourceId id) override { return cpuSlot(id, false); }
+  CpuImage& cpuWrite(ResourceId id) override { return cpuSlot(id, true); }
   const gl::Texture& glTexture(ResourceId id) override {
     return ex_.gl_->texture(ex_.glSlots_[slotOf(id, Domain::Gl, true)]);
   }
@@ -54,7 +54,7 @@ class ExecutionContext final : public PassContext {
                   ex_.graph_.resources[id].name + "'");
     return ex_.graph_.storages[ex_.graph_.storage(id, domain)].poolSlot;
   }
-  Surface& cpuSlot(ResourceId id, bool writing) {
+  CpuImage& cpuSlot(ResourceId id, bool writing) {
     return ex_.cpuSlots_[slotOf(id, Domain::Cpu, writing)];
   }
 
@@ -71,7 +71,7 @@ GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world)
   }
   for (const PoolSlot& slot : graph.pool) {
     const bool cpu = slot.domain == Domain::Cpu;
-    cpuSlots_.push_back(cpu ? Surface(slot.desc) : Surface());
+    cpuSlots_.push_back(cpu ? CpuImage(slot.desc) : CpuImage());
     glSlots_.push_back(cpu ? -1 : gl_->createTexture(slot.desc));
   }
 }
@@ -132,7 +132,7 @@ void GraphExecutor::runFrame() {
   }
 }
 
-const Surface& GraphExecutor::output(const std::string& name) const {
+const CpuImage& GraphExecutor::output(const std::string& name) const {
   const auto id = graph_.findResource(name);
   if (!id || std::find(graph_.outputs.begin(), graph_.outputs.end(), *id) == graph_.outputs.end())
     throw Error("'" + name + "' is not a requested output of this graph");

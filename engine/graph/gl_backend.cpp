@@ -46,10 +46,10 @@ std::size_t GlBackend::checked(int handle) const {
   return std::size_t(handle);
 }
 
-void GlBackend::readback(int handle, Surface& into) {
+void GlBackend::readback(int handle, CpuImage& into) {
   const ResourceDesc& d = descs_[checked(handle)];
   if (!(into.desc == d))
-    throw Error("readback into a surface of another description: " + describe(into.desc));
+    throw Error("readback into a CPU image of another description: " + describe(into.desc));
   const std::size_t layerWords = std::size_t(d.width) * d.height * formatChannels(d.format);
   for (int layer = 0; layer < d.layers; ++layer)
     gl::readTextureInto(textures_[handle],
@@ -57,10 +57,10 @@ void GlBackend::readback(int handle, Surface& into) {
                         layer);
 }
 
-void GlBackend::upload(const Surface& from, int handle) {
+void GlBackend::upload(const CpuImage& from, int handle) {
   const ResourceDesc& d = descs_[checked(handle)];
   if (!(from.desc == d))
-    throw Error("upload from a surface of another description: " + describe(from.desc));
+    throw Error("upload from a CPU image of another description: " + describe(from.desc));
   const std::size_t layerWords = std::size_t(d.width) * d.height * formatChannels(d.format);
   for (int layer = 0; layer < d.layers; ++layer) {
     const auto first = from.words.begin() + std::ptrdiff_t(layer * layerWords);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/graph/cpu_image.h"
 #include "engine/graph/ids.h"
 #include "engine/graph/params.h"
 #include "engine/graph/resource.h"
@@ -53,8 +54,8 @@ class PassBuilder {
 class PassContext {
  public:
   virtual ~PassContext() = default;
-  virtual const Surface& cpuRead(ResourceId id) = 0;
-  virtual Surface& cpuWrite(ResourceId id) = 0;
+  virtual const CpuImage& cpuRead(ResourceId id) = 0;
+  virtual CpuImage& cpuWrite(ResourceId id) = 0;
   virtual const gl::Texture& glTexture(ResourceId id) = 0;  // GL-domain passes, read or write
   virtual const ResourceDesc& desc(ResourceId id) const = 0;
   virtual RenderWorld& world() = 0;

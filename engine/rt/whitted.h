@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "engine/rt/rt_scene.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/camera_math.h"
 
 namespace diptych {

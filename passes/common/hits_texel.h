@@ -4,12 +4,12 @@
 #include <bit>
 #include <optional>
 
-#include "engine/graph/resource.h"
-#include "engine/rt/surface.h"
+#include "engine/graph/cpu_image.h"
+#include "engine/rt/surface_point.h"
 
 namespace diptych {
 
-inline std::optional<SurfaceHit> hitsTexel(const Surface& hits, int x, int y) {
+inline std::optional<SurfaceHit> hitsTexel(const CpuImage& hits, int x, int y) {
   const std::uint32_t id = hits.u(x, y, 0);
   if (id == 0) return std::nullopt;
   return SurfaceHit{int(id - 1), hits.u(x, y, 1), std::bit_cast<float>(hits.u(x, y, 2)),

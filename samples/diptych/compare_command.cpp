@@ -43,7 +43,7 @@ void progress(int done, int total, const std::string& what) {
   std::fflush(stderr);
 }
 
-std::vector<std::uint8_t> coverage(const Surface& gbuffer) {
+std::vector<std::uint8_t> coverage(const CpuImage& gbuffer) {
   std::vector<std::uint8_t> mask(std::size_t(gbuffer.desc.width) * gbuffer.desc.height);
   for (int y = 0; y < gbuffer.desc.height; ++y)
     for (int x = 0; x < gbuffer.desc.width; ++x)
@@ -52,7 +52,7 @@ std::vector<std::uint8_t> coverage(const Surface& gbuffer) {
 }
 
 // Pixels whose material has the coefficient `pick` > 0 (k_ps for reflection, k_t for transmission).
-std::vector<std::uint8_t> materialMask(const Scene& scene, const Surface& gbuffer,
+std::vector<std::uint8_t> materialMask(const Scene& scene, const CpuImage& gbuffer,
                                        const std::function<float(const Material&)>& pick) {
   std::vector<std::uint8_t> mask(std::size_t(gbuffer.desc.width) * gbuffer.desc.height, 0);
   for (int y = 0; y < gbuffer.desc.height; ++y)
@@ -65,7 +65,7 @@ std::vector<std::uint8_t> materialMask(const Scene& scene, const Surface& gbuffe
   return mask;
 }
 
-std::vector<float> layer(const Surface& s, int l) {
+std::vector<float> layer(const CpuImage& s, int l) {
   std::vector<float> v(std::size_t(s.desc.width) * s.desc.height);
   for (int y = 0; y < s.desc.height; ++y)
     for (int x = 0; x < s.desc.width; ++x) v[std::size_t(y) * s.desc.width + x] = s.f(x, y, 0, l);
@@ -76,8 +76,8 @@ std::vector<float> layer(const Surface& s, int l) {
 nlohmann::json signalErrors(const Scene& scene, const GraphRun& run, const Recipe& recipe,
                             const GraphRun& exact, const Recipe& exactRecipe) {
   nlohmann::json out = nlohmann::json::object();
-  const Surface& gbuffer = exact.outputs.at("gbuffer.hits");
-  auto signalPair = [&](const std::string& slot) -> std::pair<const Surface*, const Surface*> {
+  const CpuImage& gbuffer = exact.outputs.at("gbuffer.hits");
+  auto signalPair = [&](const std::string& slot) -> std::pair<const CpuImage*, const CpuImage*> {
     const std::string mine = slotSignal(recipe, slot), ref = slotSignal(exactRecipe, slot);
     if (mine.empty() || ref.empty() || !run.outputs.count(mine) || !exact.outputs.count(ref))
       return {nullptr, nullptr};

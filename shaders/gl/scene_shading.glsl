@@ -1,6 +1,6 @@
 // Materials, lights and instances uploaded by engine/gl/shading_buffers.cpp, and the surface
 // point of a visibility-buffer texel reconstructed exactly as the CPU does it
-// (engine/rt/surface.cpp). Include after common/shading.glsl and gl/scene_buffers.glsl.
+// (engine/rt/surface_point.cpp). Include after common/shading.glsl and gl/scene_buffers.glsl.
 #include "common/bindings.glsl"
 struct GpuMaterial {
   vec4 colorKa;         // C, k_a

@@ -37,8 +37,8 @@ class AddPass : public Pass {
     out_ = b.write("out", {Format::R32F, b.frame().width, b.frame().height}, vec4(0.f));
   }
   void execute(PassContext& c) override {
-    const Surface& a = c.cpuRead(a_);
-    Surface& out = c.cpuWrite(out_);
+    const CpuImage& a = c.cpuRead(a_);
+    CpuImage& out = c.cpuWrite(out_);
     for (int y = 0; y < out.desc.height; ++y)
       for (int x = 0; x < out.desc.width; ++x)
         out.setF(x, y, 0, a.f(x, y, 0) + (b_ == kNoResource ? 0.f : c.cpuRead(b_).f(x, y, 0)));

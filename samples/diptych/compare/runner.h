@@ -14,7 +14,7 @@ namespace diptych::cli {
 struct GraphRun {
   CompiledGraph graph;
   std::vector<NodeTiming> timings;
-  std::map<std::string, Surface> outputs;
+  std::map<std::string, CpuImage> outputs;
   double totalMs = 0;  // sum over nodes of each node's median CPU time
   double rays = 0;     // rays counted by the passes in the last frame
   nlohmann::json passMs = nlohmann::json::object();  // node name -> median CPU ms

@@ -1,4 +1,4 @@
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 
 #include <string>
 
