@@ -13,15 +13,35 @@ namespace diptych::gl {
 // must not meet loader.h).
 std::unique_ptr<GlContext> createOsmesaContext(int width, int height);
 std::unique_ptr<GlContext> createGlfwContext(int width, int height, bool visible);
+// egl_context.cpp
+std::unique_ptr<GlContext> createEglContext(int width, int height);
+bool eglHardwareDeviceAvailable();
 
 std::string_view contextKindName(ContextKind kind) {
-  return kind == ContextKind::Osmesa ? "osmesa" : "glfw";
+  switch (kind) {
+    case ContextKind::Osmesa:
+      return "osmesa";
+    case ContextKind::Glfw:
+      return "glfw";
+    case ContextKind::Egl:
+      return "egl";
+    case ContextKind::Auto:
+      return "auto";
+  }
+  return "?";
 }
 
 ContextKind parseContextKind(std::string_view name) {
-  if (name == "osmesa") return ContextKind::Osmesa;
-  if (name == "glfw") return ContextKind::Glfw;
-  throw Error("unknown GL context kind '" + std::string(name) + "' (expected osmesa or glfw)");
+  for (ContextKind k :
+       {ContextKind::Osmesa, ContextKind::Glfw, ContextKind::Egl, ContextKind::Auto})
+    if (name == contextKindName(k)) return k;
+  throw Error("unknown GL context kind '" + std::string(name) +
+              "' (expected osmesa, glfw, egl or auto)");
+}
+
+ContextKind resolveContextKind(ContextKind kind) {
+  if (kind != ContextKind::Auto) return kind;
+  return eglHardwareDeviceAvailable() ? ContextKind::Egl : ContextKind::Osmesa;
 }
 
 GlContext::GlContext() = default;
@@ -73,8 +93,19 @@ std::unique_ptr<GlContext> createContext(ContextKind kind, int width, int height
     throw Error("GL context size must be positive, got " + std::to_string(width) + "x" +
                 std::to_string(height));
   }
-  return kind == ContextKind::Osmesa ? createOsmesaContext(width, height)
-                                     : createGlfwContext(width, height, visible);
+  const ContextKind resolved = resolveContextKind(kind);
+  if (kind == ContextKind::Auto)
+    log().info("GL context auto: {} ({})", contextKindName(resolved),
+               resolved == ContextKind::Egl ? "a hardware EGL device is present"
+                                            : "no hardware EGL device; OSMesa/llvmpipe");
+  switch (resolved) {
+    case ContextKind::Osmesa:
+      return createOsmesaContext(width, height);
+    case ContextKind::Glfw:
+      return createGlfwContext(width, height, visible);
+    default:
+      return createEglContext(width, height);
+  }
 }
 
 }  // namespace diptych::gl

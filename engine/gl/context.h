@@ -1,7 +1,8 @@
 #pragma once
-// OpenGL contexts. OSMesa (llvmpipe, headless) is the default; a GLFW window is the alternative
-// for interactive viewers. Every context is OpenGL 4.5 core, verified at creation, with debug
-// output routed to diptych::log() (see debug.h).
+// OpenGL contexts. OSMesa (llvmpipe, headless) is the default; EGL is headless on a GPU (device
+// platform) or on Mesa (surfaceless); a GLFW window is the alternative for interactive viewers.
+// Every context is OpenGL 4.5 core, verified at creation, with debug output routed to
+// diptych::log() (see debug.h).
 #include <memory>
 #include <string>
 #include <string_view>
@@ -10,10 +11,13 @@ namespace diptych::gl {
 
 struct GlFunctionTable;
 
-enum class ContextKind { Osmesa, Glfw };
+// Auto: EGL when a hardware EGL device exists, else OSMesa (createContext logs which).
+enum class ContextKind { Osmesa, Glfw, Egl, Auto };
 
 std::string_view contextKindName(ContextKind kind);
-ContextKind parseContextKind(std::string_view name);  // "osmesa" | "glfw"; throws Error
+ContextKind parseContextKind(std::string_view name);  // "osmesa" | "glfw" | "egl" | "auto"; throws
+// The kind `Auto` resolves to on this machine (Osmesa or Egl); other kinds are returned as given.
+ContextKind resolveContextKind(ContextKind kind);
 
 // What the driver reported at creation.
 struct ContextInfo {
@@ -35,7 +39,7 @@ class GlContext {
   // Size of the default framebuffer (OSMesa: the small owned buffer; GLFW: the window).
   virtual int width() const = 0;
   virtual int height() const = 0;
-  virtual std::string_view name() const = 0;  // for logs: "osmesa", "glfw"
+  virtual std::string_view name() const = 0;  // for logs: "osmesa", "glfw", "egl"
   virtual void swapBuffers() {}
   const ContextInfo& info() const { return info_; }
 

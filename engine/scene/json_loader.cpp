@@ -26,6 +26,8 @@ struct Context {
   std::filesystem::path folder;  // relative paths in the file are relative to this
   std::map<std::string, int> materialIndex;
   bool jsonCamera = false;
+  // Files read through resolvePath (Scene::sourceFiles); mutable because readers take ctx const.
+  mutable std::vector<std::string> files;
 };
 
 std::string indexed(const std::string& path, std::size_t i) {
@@ -69,6 +71,7 @@ std::filesystem::path resolvePath(const Context& ctx, JsonObject& o, const std::
                                   const std::string& relative) {
   const std::filesystem::path p = ctx.folder / relative;
   if (!std::filesystem::exists(p)) o.fail(key, "file not found: " + p.string());
+  ctx.files.push_back(p.string());
   return p;
 }
 
@@ -321,6 +324,8 @@ void includeGltf(JsonObject& o, const mat4& transform, const Context& ctx, Scene
   const int textureBase = int(scene.textures.size());
   const int materialBase = int(scene.materials.size());
   const int meshBase = int(scene.meshes.size());
+  for (std::string& f : part.sourceFiles)
+    if (f != path.string()) ctx.files.push_back(std::move(f));
   for (Texture& t : part.textures) scene.textures.push_back(std::move(t));
   for (Material m : part.materials) {
     if (m.colorTexture >= 0) m.colorTexture += textureBase;
@@ -484,6 +489,8 @@ Scene loadJsonSceneUnvalidated(const std::filesystem::path& path) {
     for (std::size_t i = 0; i < objects->size(); ++i)
       readObject(JsonObject((*objects)[i], indexed("objects", i), ctx.file), ctx, scene);
   top.rejectUnknownKeys();
+  scene.sourceFiles.push_back(ctx.file);
+  scene.sourceFiles.insert(scene.sourceFiles.end(), ctx.files.begin(), ctx.files.end());
   return scene;
 }
 

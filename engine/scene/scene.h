@@ -139,6 +139,9 @@ struct Environment {
 
 struct Scene {
   std::string sourcePath;
+  // Every file the scene was read from: itself, included glTF files, their buffers and images,
+  // environment images. Caches key on their bytes, so an edited texture invalidates them.
+  std::vector<std::string> sourceFiles;
   std::vector<Mesh> meshes;
   std::vector<Instance> instances;
   std::vector<Material> materials;

@@ -13,6 +13,7 @@
 #include "engine/core/log.h"
 #include "engine/core/timing.h"
 #include "engine/gl/context.h"
+#include "engine/graph/device_info.h"
 #include "engine/graph/executor.h"
 #include "engine/graph/export.h"
 #include "engine/graph/render_world.h"
@@ -27,7 +28,7 @@ namespace {
 struct RenderOptions {
   std::string scene, recipe, size = "640x480", out = "out.png", graphOut, timingsOut;
   std::vector<std::string> outputs;  // --output, repeatable
-  std::string context = "osmesa";
+  std::string context = "auto";
   std::vector<std::string> slots;
   int frames = 5, warmup = 2;
   float exposure = 0.f;
@@ -97,9 +98,12 @@ void runRender(const RenderOptions& o) {
       extensionOf(o.graphOut) != ".json")
     throw InputError("--graph-out", "", "expected a .dot or .json file name");
   const auto [width, height] = parseSize(o.size);
-  if (o.context != "glfw" && o.context != "osmesa")
-    throw InputError("--context", "", "expected osmesa or glfw");
-  const gl::ContextKind contextKind = gl::parseContextKind(o.context);
+  gl::ContextKind contextKind{};
+  try {
+    contextKind = gl::parseContextKind(o.context);
+  } catch (const Error& e) {
+    throw InputError("--context", o.context, e.what());
+  }
 
   const Scene scene = loadScene(o.scene);
   for (const std::string& w : scene.warnings) log().warn("{}", w);
@@ -119,6 +123,7 @@ void runRender(const RenderOptions& o) {
   std::unique_ptr<gl::GlContext> context;
   if (graph.usesGl()) context = gl::createContext(contextKind, width, height);
   RenderWorld world(scene, context.get());
+  const nlohmann::json devices = describeDevices(context.get());
   GraphExecutor executor(graph, world);
   const bool tty = isatty(fileno(stderr));
   const int total = o.warmup + o.frames;
@@ -151,10 +156,12 @@ void runRender(const RenderOptions& o) {
         "per node, GL_TIME_ELAPSED queries for GL nodes and transfers",
         o.frames, o.warmup);
     j["scene"] = o.scene;
+    j["devices"] = devices;
     writeText(o.timingsOut, j.dump(2));
     std::printf("wrote %s\n", o.timingsOut.c_str());
   }
   printTimingTable(graph, executor, o);
+  std::printf("devices: %s\n", deviceSummary(devices).c_str());
 }
 
 }  // namespace
@@ -185,8 +192,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--exposure", options->exposure,
                   "PNG tone map: multiply by 2^exposure, clamp, sRGB")
       ->capture_default_str();
-  cmd->add_option("--context", options->context,
-                  "OpenGL context: osmesa (headless) or glfw (window)")
+  cmd->add_option(
+         "--context", options->context,
+         "OpenGL context: auto (EGL on a GPU, else OSMesa), osmesa, egl (headless) or glfw")
       ->capture_default_str();
   cmd->add_flag("-v,--verbose", options->verbose, "Log debug messages");
   cmd->callback([options, &exitCode] {

@@ -23,3 +23,19 @@ string(FIND "${dot}" "digraph frame" pos)
 if(pos EQUAL -1)
   message(FATAL_ERROR "whitted.dot is not a DOT graph")
 endif()
+
+# EGL (headless; Mesa's surfaceless platform here, the GPU's device platform where one exists)
+# renders the same image as OSMesa: both run the same passes on the same kind of driver here.
+expect_success(render-egl ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --context egl
+               --size 96x72 --frames 1 --warmup 0 --out egl.exr FILES egl.exr)
+expect_success(render-osmesa ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --context osmesa
+               --size 96x72 --frames 1 --warmup 0 --out osmesa.exr --timings t.json FILES osmesa.exr t.json)
+expect_success(egl-vs-osmesa ARGS diff egl.exr osmesa.exr --fail-above rmse=1e-6)
+file(READ "${WORK_DIR}/t.json" timings)
+string(JSON renderer GET "${timings}" devices gl renderer)
+string(JSON embree GET "${timings}" devices embree version)
+if(renderer STREQUAL "" OR embree STREQUAL "")
+  message(FATAL_ERROR "--timings must name the GL renderer and the Embree version")
+endif()
+expect_failure(bad-context EXPECT "--context" "vulkan" ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json"
+               --context vulkan)

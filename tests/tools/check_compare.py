@@ -4,7 +4,8 @@
 usage: check_compare.py OUT_DIR
 Asserts: every file is written; results.json parses and holds every variant; the reference
 rendered as a variant scores 0 error; the all-exact hybrid scores ~0; a 256 shadow map scores
-worse than a 4096 one; results.csv has a row per variant.
+worse than a 4096 one; results.csv has a row per variant; the devices (GL renderer, CPU,
+Embree) and the one-time costs are reported apart from the frame times.
 """
 import csv
 import json
@@ -54,6 +55,19 @@ def main():
     wrong = lambda s: s["false_shadow_inside"] + s["false_lit_inside"] + s["false_shadow_outside"] + s["false_lit_outside"]
     if not wrong(vis256) > wrong(vis4096):
         fail("visibility signal: 256 map misclassifies %d pixels, 4096 map %d" % (wrong(vis256), wrong(vis4096)))
+    devices = results.get("devices", {})
+    if not (devices.get("gl") or {}).get("renderer") or not devices.get("cpu", {}).get("model") \
+            or not devices.get("embree", {}).get("version"):
+        fail("results.json must name the GL renderer, the CPU and the Embree version: %s" % devices)
+    one_time = results.get("one_time_ms", {})
+    for key in ["gl_context_ms", "embree_bvh_build_ms", "gl_scene_upload_ms"]:
+        if not one_time.get(key, -1) >= 0:
+            fail("one-time cost %s missing: %s" % (key, one_time))
+    if "reference and variants alike" not in results["method"]:
+        fail("the method must say the reference is timed like the variants: " + results["method"])
+    for v in results["variants"]:
+        if not v.get("first_frame_ms", -1) >= 0:
+            fail("%s lacks first_frame_ms" % v["name"])
     with open(os.path.join(out, "results.csv")) as f:
         rows = list(csv.DictReader(f))
     if sorted(r["variant"] for r in rows) != sorted(expected) or "flip_mean" not in rows[0]:

@@ -250,6 +250,13 @@ Scene loadGltfUnvalidated(const std::filesystem::path& path) {
   }
   Scene scene;
   scene.sourcePath = file;
+  scene.sourceFiles.push_back(file);
+  auto external = [&](const std::string& uri) {  // data: URIs and .glb chunks live in the file
+    if (!uri.empty() && uri.rfind("data:", 0) != 0)
+      scene.sourceFiles.push_back((path.parent_path() / uri).string());
+  };
+  for (const tinygltf::Buffer& b : model.buffers) external(b.uri);
+  for (const tinygltf::Image& i : model.images) external(i.uri);
   for (const std::string& used : model.extensionsUsed) {
     if (!kSupportedExtensions.count(used))
       scene.warnings.push_back(file + ": extensionsUsed: " + used + " is not supported; ignored");

@@ -7,6 +7,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
+#include "engine/graph/device_info.h"
 
 namespace diptych::cli {
 namespace {
@@ -155,6 +156,12 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       header["reference"]["cached"].get<bool>() ? ", cached" : "",
       header["size"]["width"].get<int>(), header["size"]["height"].get<int>(),
       html(header["method"].get<std::string>()));
+  std::string oneTime;
+  for (const auto& [what, ms] : header["one_time_ms"].items())
+    oneTime += fmt::format("{}{} {:.1f} ms", oneTime.empty() ? "" : ", ", what, ms.get<double>());
+  page +=
+      fmt::format("<p id=\"devices\">Measured on {}. One-time costs, not in any frame: {}.</p>\n",
+                  html(deviceSummary(header["devices"])), html(oneTime));
   page +=
       "<h2>Error against time</h2>\n<img class=\"plot\" src=\"plot.svg\" alt=\"error versus time "
       "plot\">\n";

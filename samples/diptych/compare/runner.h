@@ -16,7 +16,10 @@ struct GraphRun {
   std::vector<NodeTiming> timings;
   std::map<std::string, CpuImage> outputs;
   double totalMs = 0;  // sum over nodes of each node's median CPU time
-  double rays = 0;     // rays counted by the passes in the last frame
+  // The first frame's CPU time (every node): it carries one-time work (shader compilation, pool
+  // allocation, first-use caches) that the median of the measured frames leaves out.
+  double firstFrameMs = 0;
+  double rays = 0;                                   // rays counted by the passes in the last frame
   nlohmann::json passMs = nlohmann::json::object();  // node name -> median CPU ms
 };
 
