@@ -2,6 +2,7 @@
 // visibility V in [0,1] of the exact G-buffer surface point, from that light's reversed-Z D32F
 // map(s) under one bias mode and one filter. A tap is lit when the receiver's depth is at least
 // the stored depth (reversed-Z: nearer = greater).
+#include "common/bindings.glsl"
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
@@ -25,14 +26,14 @@ struct ShadowLayer {
   mat4 viewProj;
   mat4 invViewProj;
 };
-layout(std430, binding = 7) readonly buffer ShadowLayers { ShadowLayer shadowLayers[]; };
+layout(std430, binding = BINDING_SHADOW_LAYERS) readonly buffer ShadowLayers { ShadowLayer shadowLayers[]; };
 struct ShadowLight {
   ivec4 info;            // kind, first layer, layer count, -
   vec4 positionNear;     // light position, near plane (axis depth)
   vec4 directionFar;     // travel direction, far plane (axis depth)
   vec4 texelScaleSize;   // texel footprint (ortho: world; else per unit axis depth), PCSS size
 };
-layout(std430, binding = 8) readonly buffer ShadowLights { ShadowLight shadowLights[]; };
+layout(std430, binding = BINDING_SHADOW_LIGHTS) readonly buffer ShadowLights { ShadowLight shadowLights[]; };
 
 layout(binding = 0) uniform usampler2D uHits;
 layout(binding = 1) uniform sampler2DArray uShadowMaps;

@@ -5,7 +5,6 @@
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/gl/transfer.h"
-#include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
 
@@ -98,12 +97,13 @@ void setCamera(const Program& p, const ForwardView& view, const mat4& viewProjec
 
 }  // namespace
 
-void ForwardRenderer::render(RenderWorld& world, const ForwardView& view, const Texture& color,
-                             const Texture& depth, const ForwardOptions& o, int layer) {
+void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
+                             const Texture& color, const Texture& depth, const ForwardOptions& o,
+                             int layer) {
   ScopedGlLabel label("forward");
-  const Scene& scene = world.scene();
-  const GlSceneBuffers& buffers = world.glScene();
-  const GlShadingBuffers& shading = world.glShading();
+  const Scene& scene = input.scene;
+  const GlSceneBuffers& buffers = input.geometry;
+  const GlShadingBuffers& shading = input.shading;
   ensureEnvironment(scene);
 
   framebuffer_.attachColor(0, color, 0, layer);

@@ -23,11 +23,10 @@
 #include "engine/gl/objects.h"
 #include "engine/scene/scene.h"
 
-namespace diptych {
-class RenderWorld;
-}
-
 namespace diptych::gl {
+
+struct GlSceneBuffers;
+struct GlShadingBuffers;
 
 inline constexpr int kEnvironmentCubeSize = 64;
 
@@ -58,12 +57,20 @@ struct ForwardOptions {
   const Texture* behindVisibility = nullptr;
 };
 
+// What a forward render draws: the scene and its uploaded geometry and shading buffers (passes
+// take them from the RenderWorld, so this layer does not depend on the frame graph).
+struct ForwardScene {
+  const Scene& scene;
+  const GlSceneBuffers& geometry;
+  const GlShadingBuffers& shading;
+};
+
 // Compiled programs, the environment cube and a framebuffer; one per world (glCached).
 class ForwardRenderer {
  public:
   ForwardRenderer();
   // Renders into colour (RGBA32F 2D, or a cube face with `layer`) and depth (D32F, same size).
-  void render(RenderWorld& world, const ForwardView& view, const Texture& color,
+  void render(const ForwardScene& input, const ForwardView& view, const Texture& color,
               const Texture& depth, const ForwardOptions& options, int layer = -1);
 
  private:

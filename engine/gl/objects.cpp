@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "engine/core/check.h"
 #include "engine/core/error.h"
 
 namespace diptych::gl {
@@ -41,7 +42,9 @@ const FormatInfo& formatInfo(TextureFormat format) {
       {"SRGB8_ALPHA8", GL_SRGB8_ALPHA8, GL_RGBA, GL_FLOAT, 4, false, false},
       {"D32F", GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, 1, false, true},
   }};
-  return table.at(std::size_t(format));
+  DIPTYCH_CHECK(std::size_t(format) < table.size(),
+                "texture format " + std::to_string(int(format)) + " has no entry");
+  return table[std::size_t(format)];
 }
 
 namespace {

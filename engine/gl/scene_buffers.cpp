@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "engine/core/error.h"
+#include "engine/gl/bindings.h"
 
 namespace diptych::gl {
 
@@ -61,10 +62,10 @@ GlSceneBuffers uploadScene(const WorldGeometry& geometry) {
 }
 
 void GlSceneBuffers::bindStorage() const {
-  positions.bindBase(GL_SHADER_STORAGE_BUFFER, kScenePositionsBinding);
-  normals.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneNormalsBinding);
-  uvs.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneUvsBinding);
-  indices.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneIndicesBinding);
+  positions.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_POSITIONS);
+  normals.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_NORMALS);
+  uvs.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_UVS);
+  indices.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INDICES);
 }
 
 }  // namespace diptych::gl

@@ -19,12 +19,6 @@ struct GlMeshRange {
   std::uint32_t triangleCount = 0;
 };
 
-// SSBO binding points used by shaders that read the scene (see shaders/common/scene_buffers.glsl).
-inline constexpr GLuint kScenePositionsBinding = 0;
-inline constexpr GLuint kSceneNormalsBinding = 1;
-inline constexpr GLuint kSceneUvsBinding = 2;
-inline constexpr GLuint kSceneIndicesBinding = 3;
-
 struct GlSceneBuffers {
   Buffer positions;                 // 3 floats per vertex, world space
   Buffer normals;                   // 3 floats per vertex, world space, unit
@@ -35,7 +29,7 @@ struct GlSceneBuffers {
   std::size_t vertexCount = 0;
   std::size_t triangleCount = 0;
 
-  // Binds the four buffers to the kScene*Binding SSBO points.
+  // Binds the four buffers to the BINDING_SCENE_* SSBO points (engine/gl/bindings.h).
   void bindStorage() const;
 };
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <map>
 
+#include "engine/core/check.h"
+#include "engine/gl/bindings.h"
 #include "engine/gl/loader.h"
-#include "engine/rt/shading.h"
-#include "engine/rt/texture_sampling.h"
+#include "engine/shading/shading.h"
+#include "engine/shading/texture_sampling.h"
 
 namespace diptych::gl {
 namespace {
@@ -113,10 +115,10 @@ AlphaDraw alphaDraw(const Scene& scene, int material) {
 }
 
 void GlShadingBuffers::bindStorage() const {
-  materials.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneMaterialsBinding);
-  instances.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneInstancesBinding);
-  lights.bindBase(GL_SHADER_STORAGE_BUFFER, kSceneLightsBinding);
-  glBindTextureUnit(kSceneAlphaMaskUnit, alphaMasks.id());
+  materials.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_MATERIALS);
+  instances.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INSTANCES);
+  lights.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_LIGHTS);
+  glBindTextureUnit(UNIT_SCENE_ALPHA_MASKS, alphaMasks.id());
 }
 
 AlphaDraw GlShadingBuffers::alphaDraw(int material) const {
@@ -173,7 +175,9 @@ GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometr
     lane.flags = m.alphaMode == AlphaMode::Mask ? 32.f : 0.f;
     if (out.drawModes[i] != AlphaDraw::AlphaTested) continue;
     const diptych::Texture* t = coverageTexture(scene, m);
-    lane.layer = float(layerOf.at(t));
+    const auto layer = layerOf.find(t);
+    DIPTYCH_CHECK(layer != layerOf.end(), "an alpha-tested material's texture has no mask layer");
+    lane.layer = float(layer->second);
     lane.width = float(std::min(t->image.width, layerWidth));
     lane.height = float(std::min(t->image.height, layerHeight));
     lane.flags +=

@@ -15,13 +15,6 @@
 
 namespace diptych::gl {
 
-// SSBO binding points, after the geometry bindings 0..3 of scene_buffers.h.
-inline constexpr GLuint kSceneMaterialsBinding = 4;
-inline constexpr GLuint kSceneInstancesBinding = 5;
-inline constexpr GLuint kSceneLightsBinding = 6;
-// Texture unit of scene_shading.glsl's uSceneAlphaMasks (units 0..1 are the passes' own).
-inline constexpr GLuint kSceneAlphaMaskUnit = 7;
-
 // How a raster pass draws a mesh of a given material.
 enum class AlphaDraw {
   Opaque,      // not masked, or masked with a constant coverage at or above the cutoff
@@ -47,7 +40,8 @@ struct GlShadingBuffers {
   std::vector<AlphaDraw> drawModes;  // index material + 1, as `materials`
   int materialCount = 0, instanceCount = 0, lightCount = 0;
 
-  // Binds the three buffers to their kScene* points and alphaMasks to kSceneAlphaMaskUnit.
+  // Binds the three buffers to their BINDING_SCENE_* points and alphaMasks to
+  // UNIT_SCENE_ALPHA_MASKS (engine/gl/bindings.h).
   void bindStorage() const;
   AlphaDraw alphaDraw(int material) const;  // -1 or out of range: the default material
   bool anyAlphaTested() const { return alphaMaskLayers > 0; }

@@ -18,8 +18,8 @@ class ExecutionContext final : public PassContext {
   ExecutionContext(GraphExecutor& ex, const GraphPass& pass, NodeTiming& timing)
       : ex_(ex), pass_(pass), timing_(timing) {}
 
-  const Surface& cpuRead(ResourceId id) override { return cpuSlot(id, false); }
-  Surface& cpuWrite(ResourceId id) override { return cpuSlot(id, true); }
+  const CpuImage& cpuRead(ResourceId id) override { return cpuSlot(id, false); }
+  CpuImage& cpuWrite(ResourceId id) override { return cpuSlot(id, true); }
   const gl::Texture& glTexture(ResourceId id) override {
     return ex_.gl_->texture(ex_.glSlots_[slotOf(id, Domain::Gl, true)]);
   }
@@ -35,27 +35,26 @@ class ExecutionContext final : public PassContext {
 
  private:
   void check(ResourceId id, bool writing) const {
-    const bool valid = id >= 0 && id < ResourceId(ex_.graph_.resources.size());
+    const bool valid = ex_.graph_.resources.contains(id);
     const auto& w = pass_.writes;
     const auto& r = pass_.reads;
     const bool declared = valid && (std::find(w.begin(), w.end(), id) != w.end() ||
                                     (!writing && std::find(r.begin(), r.end(), id) != r.end()));
     if (!declared)
       throw Error("pass '" + pass_.name + "' " + (writing ? "wrote" : "read") + " resource '" +
-                  (valid ? ex_.graph_.resources[id].name : std::to_string(id)) +
+                  (valid ? ex_.graph_.resources[id].name : to_string(id)) +
                   "' without declaring it in setup");
   }
-  int slotOf(ResourceId id, Domain domain, bool writing) const {
+  PoolSlotId slotOf(ResourceId id, Domain domain, bool writing) const {
     const auto& r = pass_.reads;
     check(id, writing && std::find(r.begin(), r.end(), id) == r.end());
     if (pass_.domain != domain)
       throw Error("pass '" + pass_.name + "' runs in the " + domainName(pass_.domain) +
                   " domain but asked for the " + domainName(domain) + " copy of '" +
                   ex_.graph_.resources[id].name + "'");
-    const int storage = ex_.graph_.storageOf.at({id, domain});
-    return ex_.graph_.storages[storage].poolSlot;
+    return ex_.graph_.storages[ex_.graph_.storage(id, domain)].poolSlot;
   }
-  Surface& cpuSlot(ResourceId id, bool writing) {
+  CpuImage& cpuSlot(ResourceId id, bool writing) {
     return ex_.cpuSlots_[slotOf(id, Domain::Cpu, writing)];
   }
 
@@ -70,13 +69,10 @@ GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world)
     world_.glContext().makeCurrent();
     gl_ = std::make_unique<GlBackend>();
   }
-  cpuSlots_.resize(graph.pool.size());
-  glSlots_.assign(graph.pool.size(), -1);
-  for (std::size_t i = 0; i < graph.pool.size(); ++i) {
-    if (graph.pool[i].domain == Domain::Cpu)
-      cpuSlots_[i] = Surface(graph.pool[i].desc);
-    else
-      glSlots_[i] = gl_->createTexture(graph.pool[i].desc);
+  for (const PoolSlot& slot : graph.pool) {
+    const bool cpu = slot.domain == Domain::Cpu;
+    cpuSlots_.push_back(cpu ? CpuImage(slot.desc) : CpuImage());
+    glSlots_.push_back(cpu ? -1 : gl_->createTexture(slot.desc));
   }
 }
 
@@ -119,7 +115,7 @@ void GraphExecutor::runFrame() {
         break;
       case NodeKind::Default: {
         const GraphResource& res = graph_.resources[node.resource];
-        const int slot = slotOf(node.storagesWritten[0]);
+        const PoolSlotId slot = slotOf(node.storagesWritten[0]);
         if (node.domain == Domain::Cpu)
           cpuSlots_[slot].fill(res.fallback);
         else
@@ -136,11 +132,11 @@ void GraphExecutor::runFrame() {
   }
 }
 
-const Surface& GraphExecutor::output(const std::string& name) const {
+const CpuImage& GraphExecutor::output(const std::string& name) const {
   const auto id = graph_.findResource(name);
   if (!id || std::find(graph_.outputs.begin(), graph_.outputs.end(), *id) == graph_.outputs.end())
     throw Error("'" + name + "' is not a requested output of this graph");
-  return cpuSlots_[graph_.storages[graph_.storageOf.at({*id, Domain::Cpu})].poolSlot];
+  return cpuSlots_[graph_.storages[graph_.storage(*id, Domain::Cpu)].poolSlot];
 }
 
 }  // namespace diptych

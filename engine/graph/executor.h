@@ -30,15 +30,15 @@ class GraphExecutor {
   void runFrame();
   void clearTimings();  // drop warm-up samples
   const std::vector<NodeTiming>& timings() const { return timings_; }
-  const Surface& output(const std::string& resourceName) const;
+  const CpuImage& output(const std::string& resourceName) const;
 
  private:
   friend class ExecutionContext;
   const CompiledGraph& graph_;
   RenderWorld& world_;
   std::unique_ptr<GlBackend> gl_;
-  std::vector<Surface> cpuSlots_;
-  std::vector<int> glSlots_;
+  IdVector<PoolSlotId, CpuImage> cpuSlots_;  // empty in GL slots
+  IdVector<PoolSlotId, int> glSlots_;        // GlBackend handles; -1 in CPU slots
   std::vector<NodeTiming> timings_;
 };
 

@@ -71,7 +71,7 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
   }
   j["edges"] = nlohmann::json::array();
   for (const GraphResource& r : g.resources)
-    for (int reader : r.readers)
+    for (PassIndex reader : r.readers)
       j["edges"].push_back({{"from", g.passes[r.producer].name},
                             {"to", g.passes[reader].name},
                             {"resource", r.name}});
@@ -81,7 +81,7 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
                              {"domain", domainName(s.domain)},
                              {"first_node", s.firstNode},
                              {"last_node", s.lastNode},
-                             {"pool_slot", s.poolSlot},
+                             {"pool_slot", s.poolSlot.value},
                              {"bytes", s.desc.bytes()}});
   j["memory"] = {{"bytes_without_reuse", g.bytesWithoutReuse()},
                  {"bytes_with_reuse", g.bytesWithReuse()},
@@ -117,7 +117,7 @@ std::string graphToDot(const CompiledGraph& g, const std::vector<NodeTiming>* ti
                        dotEscape(pass.cullReason));
   }
   for (const GraphResource& r : g.resources) {
-    for (int reader : r.readers) {
+    for (PassIndex reader : r.readers) {
       if (!g.passes[r.producer].culled && !g.passes[reader].culled) continue;
       dot += fmt::format("  \"{}\" -> \"{}\" [style=dashed, label=\"{}\"];\n",
                          dotEscape(g.passes[r.producer].name), dotEscape(g.passes[reader].name),

@@ -4,6 +4,7 @@
 #include <functional>
 #include <set>
 
+#include "engine/core/check.h"
 #include "engine/core/error.h"
 #include "engine/core/known.h"
 
@@ -24,9 +25,16 @@ const char* nodeKindName(NodeKind kind) {
 }
 
 std::optional<ResourceId> CompiledGraph::findResource(const std::string& name) const {
-  for (std::size_t i = 0; i < resources.size(); ++i)
-    if (resources[i].name == name) return ResourceId(i);
+  for (ResourceId id : resources.ids())
+    if (resources[id].name == name) return id;
   return std::nullopt;
+}
+
+int CompiledGraph::storage(ResourceId resource, Domain domain) const {
+  const auto it = storageOf.find({resource, domain});
+  DIPTYCH_CHECK(it != storageOf.end(), "no " + std::string(domainName(domain)) +
+                                           " storage for resource " + to_string(resource));
+  return it->second;
 }
 
 std::size_t CompiledGraph::bytesWithoutReuse() const {
@@ -55,7 +63,7 @@ class Builder final : public PassBuilder {
  public:
   Builder(CompiledGraph& g, const Recipe& r, const Scene& s) : g_(g), recipe_(r), scene_(s) {}
 
-  void bind(int passIndex, const RecipePass* spec, const PassParams* params) {
+  void bind(PassIndex passIndex, const RecipePass* spec, const PassParams* params) {
     pass_ = passIndex;
     spec_ = spec;
     params_ = params;
@@ -102,8 +110,7 @@ class Builder final : public PassBuilder {
     if (desc.width <= 0 || desc.height <= 0 || desc.layers <= 0)
       fail("", "writes '" + name + "' with an empty size " + describe(desc));
     GraphResource res{.name = name, .desc = desc, .producer = pass_, .fallback = fallback};
-    g_.resources.push_back(res);
-    const ResourceId id = ResourceId(g_.resources.size() - 1);
+    const ResourceId id = g_.resources.push_back(res);
     g_.passes[pass_].writes.push_back(id);
     return id;
   }
@@ -130,14 +137,15 @@ class Builder final : public PassBuilder {
   CompiledGraph& g_;
   const Recipe& recipe_;
   const Scene& scene_;
-  int pass_ = -1;
+  PassIndex pass_;
   const RecipePass* spec_ = nullptr;
   const PassParams* params_ = nullptr;
   std::set<std::string> slotsRead_;
 };
 
 // Orders recipe passes so that producers come before consumers; reports a cycle by its path.
-std::vector<int> setupOrder(const Recipe& recipe) {
+// Pass k of the recipe is CompiledGraph::passes[PassIndex(k)].
+std::vector<PassIndex> setupOrder(const Recipe& recipe) {
   std::map<std::string, int> index;
   for (std::size_t i = 0; i < recipe.passes.size(); ++i) index[recipe.passes[i].name] = int(i);
   std::vector<std::vector<std::pair<int, std::string>>> deps(recipe.passes.size());
@@ -153,7 +161,8 @@ std::vector<int> setupOrder(const Recipe& recipe) {
       deps[i].push_back({it->second, source});
     }
   }
-  std::vector<int> order, state(recipe.passes.size(), 0);  // 0 new, 1 on stack, 2 done
+  std::vector<PassIndex> order;
+  std::vector<int> state(recipe.passes.size(), 0);  // 0 new, 1 on stack, 2 done
   std::vector<int> stack;
   std::function<void(int)> visit = [&](int p) {
     if (state[p] == 2) return;
@@ -169,7 +178,7 @@ std::vector<int> setupOrder(const Recipe& recipe) {
     for (const auto& [producer, source] : deps[p]) visit(producer);
     stack.pop_back();
     state[p] = 2;
-    order.push_back(p);
+    order.push_back(PassIndex(p));
   };
   for (std::size_t i = 0; i < recipe.passes.size(); ++i) visit(int(i));
   return order;
@@ -177,18 +186,18 @@ std::vector<int> setupOrder(const Recipe& recipe) {
 
 // Marks passes no requested output needs; scene-culled passes do not pull in their inputs.
 void cullUnrequested(CompiledGraph& g) {
-  std::vector<bool> live(g.passes.size(), false);
-  std::vector<int> work;
+  std::set<PassIndex> live;
+  std::vector<PassIndex> work;
   for (ResourceId out : g.outputs) work.push_back(g.resources[out].producer);
   while (!work.empty()) {
-    const int p = work.back();
+    const PassIndex p = work.back();
     work.pop_back();
-    if (live[p] || g.passes[p].culled) continue;
-    live[p] = true;
+    if (live.count(p) || g.passes[p].culled) continue;
+    live.insert(p);
     for (ResourceId r : g.passes[p].reads) work.push_back(g.resources[r].producer);
   }
-  for (std::size_t p = 0; p < g.passes.size(); ++p) {
-    if (!live[p] && !g.passes[p].culled) {
+  for (PassIndex p : g.passes.ids()) {
+    if (!live.count(p) && !g.passes[p].culled) {
       g.passes[p].culled = true;
       g.passes[p].cullReason = "output not requested";
     }
@@ -197,7 +206,7 @@ void cullUnrequested(CompiledGraph& g) {
 
 // Emits the schedule: live passes in setup order, with transfers and defaults just before the
 // first node that needs them, and a readback for every output that lives on the GPU.
-void schedule(CompiledGraph& g, const std::vector<int>& order) {
+void schedule(CompiledGraph& g, const std::vector<PassIndex>& order) {
   auto storageFor = [&](ResourceId r, Domain d) {
     auto key = std::make_pair(r, d);
     auto it = g.storageOf.find(key);
@@ -220,14 +229,14 @@ void schedule(CompiledGraph& g, const std::vector<int>& order) {
       const Domain home = g.passes[g.resources[r].producer].domain;
       node.kind = d == Domain::Cpu ? NodeKind::Readback : NodeKind::Upload;
       node.name = std::string(nodeKindName(node.kind)) + ":" + g.resources[r].name;
-      node.storagesRead.push_back(g.storageOf.at({r, home}));
+      node.storagesRead.push_back(g.storage(r, home));
     }
     const int s = storageFor(r, d);
     node.storagesWritten.push_back(s);
     g.nodes.push_back(node);
     return s;
   };
-  for (int p : order) {
+  for (PassIndex p : order) {
     GraphPass& pass = g.passes[p];
     if (pass.culled) continue;
     GraphNode node{.kind = NodeKind::Pass, .name = pass.name, .domain = pass.domain, .pass = p};
@@ -236,7 +245,7 @@ void schedule(CompiledGraph& g, const std::vector<int>& order) {
       const ResourceId prev = g.resources[w].previous;
       if (prev != kNoResource) {
         // In-place version: shares the storage of the input it modifies.
-        const int s = g.storageOf.at({prev, pass.domain});
+        const int s = g.storage(prev, pass.domain);
         g.storageOf[{w, pass.domain}] = s;
         node.storagesWritten.push_back(s);
       } else {
@@ -271,29 +280,28 @@ void computeLifetimesAndPool(CompiledGraph& g) {
       g.storages[s].lastNode = std::max(g.storages[s].lastNode, int(n));
   }
   for (ResourceId out : g.outputs)
-    g.storages[g.storageOf.at({out, Domain::Cpu})].lastNode = int(g.nodes.size());
+    g.storages[g.storage(out, Domain::Cpu)].lastNode = int(g.nodes.size());
   // Greedy interval assignment in order of first use: reuse a slot of the same domain and
   // description whose previous tenant is dead before this one is born.
   std::vector<int> byStart(g.storages.size());
   for (std::size_t i = 0; i < byStart.size(); ++i) byStart[i] = int(i);
   std::sort(byStart.begin(), byStart.end(),
             [&](int a, int b) { return g.storages[a].firstNode < g.storages[b].firstNode; });
-  std::vector<int> slotFreeAfter;
+  std::vector<int> slotFreeAfter;  // index PoolSlotId::value
   for (int s : byStart) {
     GraphStorage& st = g.storages[s];
-    for (std::size_t slot = 0; slot < g.pool.size(); ++slot) {
+    for (PoolSlotId slot : g.pool.ids()) {
       if (g.pool[slot].domain == st.domain && g.pool[slot].desc == st.desc &&
-          slotFreeAfter[slot] < st.firstNode) {
-        st.poolSlot = int(slot);
+          slotFreeAfter[std::size_t(slot.value)] < st.firstNode) {
+        st.poolSlot = slot;
         break;
       }
     }
-    if (st.poolSlot < 0) {
-      g.pool.push_back({st.domain, st.desc});
+    if (!st.poolSlot.valid()) {
+      st.poolSlot = g.pool.push_back({st.domain, st.desc});
       slotFreeAfter.push_back(-1);
-      st.poolSlot = int(g.pool.size() - 1);
     }
-    slotFreeAfter[st.poolSlot] = st.lastNode;
+    slotFreeAfter[std::size_t(st.poolSlot.value)] = st.lastNode;
   }
 }
 
@@ -339,7 +347,7 @@ CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, c
   g.recipeFile = recipe.file;
   g.frame = frame;
   rejectRenamed(recipe, registry);
-  const std::vector<int> order = setupOrder(recipe);
+  const std::vector<PassIndex> order = setupOrder(recipe);
 
   for (const RecipePass& spec : recipe.passes) {
     const PassTypeInfo* info = registry.find(spec.type);
@@ -352,8 +360,8 @@ CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, c
   }
 
   Builder builder(g, recipe, scene);
-  for (int p : order) {
-    const RecipePass& spec = recipe.passes[p];
+  for (PassIndex p : order) {
+    const RecipePass& spec = recipe.passes[std::size_t(p.value)];
     const PassParams params(spec.params, registry.find(spec.type)->params, spec.type, recipe.file,
                             spec.place + ".params");
     builder.bind(p, &spec, &params);

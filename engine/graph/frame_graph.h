@@ -17,11 +17,11 @@ namespace diptych {
 struct GraphResource {
   std::string name;  // "pass.output"
   ResourceDesc desc;
-  int producer = -1;                  // index into CompiledGraph::passes
+  PassIndex producer;
   ResourceId previous = kNoResource;  // the input this version modified in place, if any
   int version = 0;
   vec4 fallback{0.f};
-  std::vector<int> readers;  // pass indices (declared reads)
+  std::vector<PassIndex> readers;  // declared reads
 };
 
 struct GraphPass {
@@ -42,7 +42,7 @@ struct GraphNode {
   NodeKind kind = NodeKind::Pass;
   std::string name;  // pass name, or "readback:gbuffer.hits", "default:shadows.visibility"
   Domain domain = Domain::Cpu;
-  int pass = -1;                      // NodeKind::Pass
+  PassIndex pass;                     // NodeKind::Pass
   ResourceId resource = kNoResource;  // transfers and defaults: what they move or fill
   std::vector<int> storagesRead, storagesWritten;
 };
@@ -53,7 +53,7 @@ struct GraphStorage {
   Domain domain = Domain::Cpu;
   ResourceDesc desc;
   int firstNode = 0, lastNode = 0;  // lifetime, as schedule indices, inclusive
-  int poolSlot = -1;
+  PoolSlotId poolSlot;
 };
 
 struct PoolSlot {
@@ -65,15 +65,18 @@ class CompiledGraph {
  public:
   std::string recipeFile;
   FrameSettings frame;
-  std::vector<GraphPass> passes;
-  std::vector<GraphResource> resources;
+  IdVector<PassIndex, GraphPass> passes;
+  IdVector<ResourceId, GraphResource> resources;
   std::vector<GraphNode> nodes;  // execution order
   std::vector<GraphStorage> storages;
-  std::vector<PoolSlot> pool;
+  IdVector<PoolSlotId, PoolSlot> pool;
   std::vector<ResourceId> outputs;
   std::map<std::pair<ResourceId, Domain>, int> storageOf;
 
   std::optional<ResourceId> findResource(const std::string& name) const;
+  // The storage of `resource` in `domain` (an index into storages); the compiler made one for
+  // every resource a node touches, so a missing one is an internal error (DIPTYCH_CHECK).
+  int storage(ResourceId resource, Domain domain) const;
   std::size_t bytesWithoutReuse() const;
   std::size_t bytesWithReuse() const;
   bool usesGl() const;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 
+#include "engine/core/check.h"
 #include "engine/core/error.h"
 #include "engine/gl/loader.h"
 #include "engine/gl/transfer.h"
@@ -38,10 +39,17 @@ int GlBackend::createTexture(const ResourceDesc& d) {
   return int(textures_.size() - 1);
 }
 
-void GlBackend::readback(int handle, Surface& into) {
-  const ResourceDesc& d = descs_.at(handle);
+std::size_t GlBackend::checked(int handle) const {
+  DIPTYCH_CHECK(
+      handle >= 0 && std::size_t(handle) < textures_.size(),
+      "GL texture handle " + std::to_string(handle) + " of " + std::to_string(textures_.size()));
+  return std::size_t(handle);
+}
+
+void GlBackend::readback(int handle, CpuImage& into) {
+  const ResourceDesc& d = descs_[checked(handle)];
   if (!(into.desc == d))
-    throw Error("readback into a surface of another description: " + describe(into.desc));
+    throw Error("readback into a CPU image of another description: " + describe(into.desc));
   const std::size_t layerWords = std::size_t(d.width) * d.height * formatChannels(d.format);
   for (int layer = 0; layer < d.layers; ++layer)
     gl::readTextureInto(textures_[handle],
@@ -49,10 +57,10 @@ void GlBackend::readback(int handle, Surface& into) {
                         layer);
 }
 
-void GlBackend::upload(const Surface& from, int handle) {
-  const ResourceDesc& d = descs_.at(handle);
+void GlBackend::upload(const CpuImage& from, int handle) {
+  const ResourceDesc& d = descs_[checked(handle)];
   if (!(from.desc == d))
-    throw Error("upload from a surface of another description: " + describe(from.desc));
+    throw Error("upload from a CPU image of another description: " + describe(from.desc));
   const std::size_t layerWords = std::size_t(d.width) * d.height * formatChannels(d.format);
   for (int layer = 0; layer < d.layers; ++layer) {
     const auto first = from.words.begin() + std::ptrdiff_t(layer * layerWords);
@@ -62,7 +70,7 @@ void GlBackend::upload(const Surface& from, int handle) {
 }
 
 void GlBackend::fill(int handle, const vec4& value) {
-  const ResourceDesc& d = descs_.at(handle);
+  const ResourceDesc& d = descs_[checked(handle)];
   const gl::FormatInfo& info = gl::formatInfo(toGlFormat(d.format));
   std::uint32_t words[4];
   for (int c = 0; c < 4; ++c)

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "engine/gl/objects.h"
-#include "engine/graph/resource.h"
+#include "engine/graph/cpu_image.h"
 
 namespace diptych {
 
@@ -16,14 +16,15 @@ class GlBackend {
   ~GlBackend();
   // A texture for `desc` (2D, or a 2D array when layers > 1); returns its handle.
   int createTexture(const ResourceDesc& desc);
-  const gl::Texture& texture(int handle) const { return textures_.at(handle); }
-  void readback(int handle, Surface& into);
-  void upload(const Surface& from, int handle);
+  const gl::Texture& texture(int handle) const { return textures_[checked(handle)]; }
+  void readback(int handle, CpuImage& into);
+  void upload(const CpuImage& from, int handle);
   void fill(int handle, const vec4& value);
   void beginTimer();
   double endTimerMs();  // waits for the query result
 
  private:
+  std::size_t checked(int handle) const;  // DIPTYCH_CHECK: a handle createTexture returned
   std::vector<gl::Texture> textures_;
   std::vector<ResourceDesc> descs_;
   gl::TimerQuery timer_;

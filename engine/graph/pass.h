@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/graph/cpu_image.h"
+#include "engine/graph/ids.h"
 #include "engine/graph/params.h"
 #include "engine/graph/resource.h"
 #include "engine/graph/scene_needs.h"
@@ -22,9 +24,6 @@ namespace gl {
 class Texture;
 }
 
-using ResourceId = int;
-constexpr ResourceId kNoResource = -1;
-
 struct FrameSettings {
   int width = 640, height = 480;
   Camera camera;
@@ -35,15 +34,16 @@ class PassBuilder {
   virtual ~PassBuilder() = default;
   // Reads the resource connected to input `slot` in the recipe. Errors name the pass and slot
   // when the slot is unconnected, the producer never writes it, or the format differs.
-  virtual ResourceId read(const std::string& slot, Format expected) = 0;
+  [[nodiscard]] virtual ResourceId read(const std::string& slot, Format expected) = 0;
   // Like read(), but an unconnected slot yields kNoResource instead of an error.
-  virtual ResourceId readOptional(const std::string& slot, Format expected) = 0;
+  [[nodiscard]] virtual ResourceId readOptional(const std::string& slot, Format expected) = 0;
   // Declares a new resource "<pass>.<output>". `fallback` is what consumers read when this pass
   // is culled because the scene lacks something it needs.
-  virtual ResourceId write(const std::string& output, const ResourceDesc& desc, vec4 fallback) = 0;
+  [[nodiscard]] virtual ResourceId write(const std::string& output, const ResourceDesc& desc,
+                                         vec4 fallback) = 0;
   // Writes a new version of an input in place ("versioned on write"); same storage, new handle.
-  virtual ResourceId modify(const std::string& slot, const std::string& output,
-                            Format expected) = 0;
+  [[nodiscard]] virtual ResourceId modify(const std::string& slot, const std::string& output,
+                                          Format expected) = 0;
   virtual void needs(SceneNeed need) = 0;
 
   virtual const Scene& scene() const = 0;
@@ -54,8 +54,8 @@ class PassBuilder {
 class PassContext {
  public:
   virtual ~PassContext() = default;
-  virtual const Surface& cpuRead(ResourceId id) = 0;
-  virtual Surface& cpuWrite(ResourceId id) = 0;
+  virtual const CpuImage& cpuRead(ResourceId id) = 0;
+  virtual CpuImage& cpuWrite(ResourceId id) = 0;
   virtual const gl::Texture& glTexture(ResourceId id) = 0;  // GL-domain passes, read or write
   virtual const ResourceDesc& desc(ResourceId id) const = 0;
   virtual RenderWorld& world() = 0;

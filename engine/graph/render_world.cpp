@@ -2,6 +2,7 @@
 
 #include "engine/core/error.h"
 #include "engine/gl/context.h"
+#include "engine/gl/forward_renderer.h"
 #include "engine/gl/scene_buffers.h"
 #include "engine/gl/shading_buffers.h"
 
@@ -43,9 +44,6 @@ const gl::GlSceneBuffers& RenderWorld::glScene() {
   return *glScene_;
 }
 
-}  // namespace diptych
-
-namespace diptych {
 const gl::GlShadingBuffers& RenderWorld::glShading() {
   if (!glShading_) {
     const gl::GlSceneBuffers& geometry = glScene();
@@ -53,4 +51,10 @@ const gl::GlShadingBuffers& RenderWorld::glShading() {
   }
   return *glShading_;
 }
+
+gl::ForwardScene RenderWorld::forwardScene() {
+  const gl::GlShadingBuffers& shading = glShading();
+  return {scene_, *glScene_, shading};
+}
+
 }  // namespace diptych

@@ -15,8 +15,9 @@ namespace diptych {
 
 namespace gl {
 class GlContext;
-class GlSceneBuffers;
-class GlShadingBuffers;
+struct GlSceneBuffers;
+struct GlShadingBuffers;
+struct ForwardScene;
 }  // namespace gl
 
 class RenderWorld {
@@ -30,6 +31,8 @@ class RenderWorld {
   const gl::GlSceneBuffers& glScene();      // uploaded on first call; needs a context
   const gl::GlShadingBuffers& glShading();  // materials, lights, instances; uploaded on first call
   gl::GlContext& glContext();               // throws Error when there is none
+  // The scene with its GL buffers, what gl::ForwardRenderer draws (uploads on first call).
+  gl::ForwardScene forwardScene();
 
   // One T per world (a compiled program, a framebuffer...), built on first use with the context
   // current and destroyed with it current. Passes keep GL state here, never in themselves,

@@ -57,7 +57,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     const auto hit = intersectAnalyticPart(a, part, r.origin, r.direction, r.tnear, r.tfar);
     if (!hit) continue;
     // SDF hits carry their object-space point: x, y as (u, v), z's bits as the primitive id
-    // (SurfaceHit's encoding, engine/rt/surface.h).
+    // (SurfaceHit's encoding, engine/rt/surface_point.h).
     const vec3 normal = a.sdf ? sdfNormal(a, hit->point) : analyticNormal(a, part, hit->uv);
     const unsigned primitive = a.sdf ? std::bit_cast<unsigned>(float(hit->point.z)) : args->primID;
     RTCRayN_tfar(rays, n, i) = float(hit->t);

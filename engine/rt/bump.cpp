@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "engine/rt/texture_sampling.h"
+#include "engine/shading/texture_sampling.h"
 
 namespace diptych {
 

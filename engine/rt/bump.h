@@ -1,7 +1,7 @@
 #pragma once
 // The lecture's bump mapping (shaders/common/bump.glsl) compiled as C++, plus the finite
 // differences of a greyscale height texture sampled the way the CPU side samples textures.
-#include "engine/rt/shading.h"
+#include "engine/shading/shading.h"
 
 namespace diptych::shading {
 #define in

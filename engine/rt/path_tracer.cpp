@@ -6,9 +6,9 @@
 #include <numbers>
 
 #include "engine/rt/light_sampling.h"
-#include "engine/rt/shading.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/scene/environment.h"
+#include "engine/shading/shading.h"
 
 namespace diptych {
 namespace {

@@ -2,7 +2,8 @@
 // A unidirectional path tracer (J. T. Kajiya, "The Rendering Equation", SIGGRAPH 1986; the
 // lecture's "Path-Tracing: iluminación indirecta o global"): the global-illumination reference.
 //
-// The lecture's material coefficients read as a BRDF (docs/references.md has the derivation):
+// The lecture's material coefficients read as a BRDF (docs/reference-renderers.md has the
+// derivation):
 //   f = k_d C / pi                                     Lambert
 //     + k_s d (e + 2) / (2 pi) max(0, r.v)^e           normalised Phong lobe (Lafortune and
 //                                                      Willems 1994), r = reflection of l
@@ -25,7 +26,7 @@
 #include <vector>
 
 #include "engine/rt/rt_scene.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/camera_math.h"
 
 namespace diptych {

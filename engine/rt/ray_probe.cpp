@@ -6,9 +6,9 @@
 #include <limits>
 
 #include "engine/core/error.h"
-#include "engine/rt/shading.h"
+#include "engine/shading/shading.h"
 #include "engine/rt/shadow_rays.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 
 namespace diptych {
 namespace {

@@ -10,8 +10,8 @@
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/rt/analytic_geometry.h"
-#include "engine/rt/texture_sampling.h"
 #include "engine/scene/sdf.h"
+#include "engine/shading/texture_sampling.h"
 
 namespace diptych {
 namespace {

@@ -3,9 +3,9 @@
 #include <limits>
 
 #include "engine/rt/light_sampling.h"
-#include "engine/rt/shading.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/scene/environment.h"
+#include "engine/shading/shading.h"
 
 namespace diptych {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The lecture's recursive ray tracer (Tema 5, RAYTRACING / EVALUAMILREC / DIRECTA), sharing the
-// shading code of the hybrid passes (shaders/common/shading.glsl through engine/rt/shading.h):
+// shading code of the hybrid passes (shaders/common/shading.glsl through engine/shading/shading.h):
 //   RAYTRACING(o, u, n): n > max -> 0; miss -> environment radiance along u;
 //                        hit p -> EVALUAMILREC(p, -u, n)
 //   EVALUAMILREC: M_E + A_G + sum_i V_i S_i DIRECTA(p, v, l_i)
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "engine/rt/rt_scene.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/camera_math.h"
 
 namespace diptych {

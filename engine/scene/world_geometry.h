@@ -45,7 +45,7 @@ WorldGeometry flattenScene(const Scene& scene);
 
 // Closest hit of the float world ray o + t d, t in [tmin, tmax], with the placed shape: the ray
 // is taken to object space in double, so Embree's callback and a G-buffer texel lifted onto the
-// shape (liftToAnalytic in engine/rt/surface.h) compute bit-identical hits for the same ray.
+// shape (liftToAnalytic in engine/rt/surface_point.h) compute bit-identical hits for the same ray.
 std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3& o, const vec3& d,
                                           float tmin, float tmax);
 // The one-part variant (an Embree user primitive is one part).

@@ -4,12 +4,12 @@
 #include <bit>
 #include <optional>
 
-#include "engine/graph/resource.h"
-#include "engine/rt/surface.h"
+#include "engine/graph/cpu_image.h"
+#include "engine/rt/surface_point.h"
 
 namespace diptych {
 
-inline std::optional<SurfaceHit> hitsTexel(const Surface& hits, int x, int y) {
+inline std::optional<SurfaceHit> hitsTexel(const CpuImage& hits, int x, int y) {
   const std::uint32_t id = hits.u(x, y, 0);
   if (id == 0) return std::nullopt;
   return SurfaceHit{int(id - 1), hits.u(x, y, 1), std::bit_cast<float>(hits.u(x, y, 2)),
@@ -20,7 +20,7 @@ inline std::optional<SurfaceHit> hitsTexel(const Surface& hits, int x, int y) {
 // (quadric or SDF) is moved onto the exact surface along the pixel-centre ray the G-buffer traced
 // (liftToAnalytic), so rt_shadows, rt_reflection, rt_transmission and the CPU shade pass shade the
 // point the Whitted reference finds; raster producers keep reading hitsTexel (the triangles).
-inline std::optional<SurfaceHit> exactTexel(const Surface& hits, const WorldGeometry& world,
+inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeometry& world,
                                             const Camera& camera, int x, int y) {
   auto hit = hitsTexel(hits, x, y);
   if (hit && world.meshes.at(std::size_t(hit->instance)).analytic) {

@@ -3,9 +3,9 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/graph/render_world.h"
-#include "engine/rt/shading.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
+#include "engine/shading/shading.h"
 #include "passes/common/hits_texel.h"
 #include "passes/slots.h"
 
@@ -24,17 +24,17 @@ void ShadePass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
-  const Surface& hits = c.cpuRead(hits_);
-  const Surface* visibility =
+  const CpuImage& hits = c.cpuRead(hits_);
+  const CpuImage* visibility =
       lightVisibility_ == kNoResource ? nullptr : &c.cpuRead(lightVisibility_);
-  const Surface* reflection = reflection_ == kNoResource ? nullptr : &c.cpuRead(reflection_);
-  const Surface* transmission = transmission_ == kNoResource ? nullptr : &c.cpuRead(transmission_);
-  Surface& out = c.cpuWrite(color_);
+  const CpuImage* reflection = reflection_ == kNoResource ? nullptr : &c.cpuRead(reflection_);
+  const CpuImage* transmission = transmission_ == kNoResource ? nullptr : &c.cpuRead(transmission_);
+  CpuImage& out = c.cpuWrite(color_);
 
   std::vector<shading::ShadingLight> lights;
   for (const Light& l : scene.lights) lights.push_back(shading::toShadingLight(l));
   const int visibilityLayers = visibility ? visibility->desc.layers : 0;
-  auto rgb = [](const Surface* s, int x, int y) {
+  auto rgb = [](const CpuImage* s, int x, int y) {
     return s ? vec3(s->f(x, y, 0), s->f(x, y, 1), s->f(x, y, 2)) : vec3(0.f);
   };
 

@@ -66,7 +66,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   gl::ForwardOptions opaque;
   opaque.instances = gl::InstanceSet::Opaque;
   opaque.behindVisibility = &hits;
-  renderer.render(world, view, out, cache.depth, opaque);
+  renderer.render(world.forwardScene(), view, out, cache.depth, opaque);
 
   // Lines 4-10: transparent polygons in Z order, I = I_m + k_t M_t I, depth-tested, not written.
   gl::ForwardOptions transparent;
@@ -77,7 +77,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   transparent.depthWrite = false;
   transparent.blend = true;
   transparent.behindVisibility = &hits;
-  renderer.render(world, view, out, cache.depth, transparent);
+  renderer.render(world.forwardScene(), view, out, cache.depth, transparent);
 
   // The slot's contract: 0 where the first surface transmits nothing.
   gl::glBindTextureUnit(0, hits.id());

@@ -53,8 +53,8 @@ void EnvDynamicCubePass::execute(PassContext& c) {
     gl::ForwardOptions options;
     options.excludeInstance = mesh.instance;
     for (int face = 0; face < 6; ++face) {
-      renderer.render(world, gl::cubeFaceView(box.center(), face, znear), cache.cube, cache.depth,
-                      options, face);
+      renderer.render(world.forwardScene(), gl::cubeFaceView(box.center(), face, znear), cache.cube,
+                      cache.depth, options, face);
     }
     gl::glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     gl::glBindTextureUnit(0, hits.id());

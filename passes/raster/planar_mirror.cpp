@@ -97,7 +97,7 @@ void PlanarMirrorPass::execute(PassContext& c) {
     gl::ForwardOptions options;
     options.excludeInstance = mirror.instance;
     options.clipPlane = vec4(n, d);
-    renderer.render(world, mirrored, cache.color, cache.depth, options);
+    renderer.render(world.forwardScene(), mirrored, cache.color, cache.depth, options);
 
     gl::glBindTextureUnit(0, hits.id());
     gl::glBindTextureUnit(1, cache.color.id());

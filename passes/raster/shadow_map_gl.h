@@ -18,10 +18,6 @@ class RenderWorld;
 
 namespace diptych::shadowmap {
 
-// SSBO bindings of shaders/shadow_map_lookup.frag, after the scene's 0..6.
-inline constexpr GLuint kShadowLayersBinding = 7;
-inline constexpr GLuint kShadowLightsBinding = 8;
-
 class ShadowMapGl {
  public:
   ShadowMapGl();

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/gl/bindings.h"
 #include "engine/gl/debug.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
@@ -80,8 +81,8 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
   world.glScene().bindStorage();
   const gl::GlShadingBuffers& shading = world.glShading();
   shading.bindStorage();
-  layers_.bindBase(GL_SHADER_STORAGE_BUFFER, kShadowLayersBinding);
-  lights_.bindBase(GL_SHADER_STORAGE_BUFFER, kShadowLightsBinding);
+  layers_.bindBase(GL_SHADER_STORAGE_BUFFER, gl::BINDING_SHADOW_LAYERS);
+  lights_.bindBase(GL_SHADER_STORAGE_BUFFER, gl::BINDING_SHADOW_LIGHTS);
   gl::glBindTextureUnit(0, gbuffer.id());
   gl::glBindTextureUnit(1, maps.id());
 

@@ -48,7 +48,7 @@ void RtDistributedPass::execute(PassContext& c) {
   const FrameSettings& frame = c.frame();
   Camera camera = frame.camera;
   if (!thinLens_) camera.aperture = 0.f;  // a pinhole: thinLensRay is then primaryRay exactly
-  Surface& out = c.cpuWrite(color_);
+  CpuImage& out = c.cpuWrite(color_);
   const WhittedTracer tracer(world.scene(), world.geometry(), world.rtScene(),
                              {maxDepth_, areaSamples_});
   tbb::parallel_for(0, frame.height, [&](int y) {

@@ -75,8 +75,8 @@ void RtPathPass::execute(PassContext& c) {
     if (timeBudgetMs_ > 0.0 && elapsedMs >= timeBudgetMs_) break;
   }
 
-  Surface& color = c.cpuWrite(color_);
-  Surface& variance = c.cpuWrite(variance_);
+  CpuImage& color = c.cpuWrite(color_);
+  CpuImage& variance = c.cpuWrite(variance_);
   const double n = passes;
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {

@@ -26,8 +26,8 @@ void RtSecondaryPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
-  const Surface& hits = c.cpuRead(io_.hits);
-  Surface& out = c.cpuWrite(io_.signal);
+  const CpuImage& hits = c.cpuRead(io_.hits);
+  CpuImage& out = c.cpuWrite(io_.signal);
   const WhittedTracer tracer(scene, world.geometry(), world.rtScene(), {maxDepth_, areaSamples_});
   const bool reflection = kind_ == Kind::Reflection;
 

@@ -21,8 +21,8 @@ void RtShadowsPass::setup(PassBuilder& b) {
 
 void RtShadowsPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
-  const Surface& hits = c.cpuRead(io_.hits);
-  Surface& out = c.cpuWrite(io_.signal);
+  const CpuImage& hits = c.cpuRead(io_.hits);
+  CpuImage& out = c.cpuWrite(io_.signal);
   const int w = hits.desc.width, h = hits.desc.height;
   const auto& lights = world.scene().lights;
   const RtScene& rt = world.rtScene();

@@ -37,7 +37,7 @@ struct CompareOptions {
 };
 
 // Pixels whose material has the coefficient `pick` > 0 (k_ps for reflection, k_t for transmission).
-std::vector<std::uint8_t> materialMask(const Scene& scene, const Surface& gbuffer,
+std::vector<std::uint8_t> materialMask(const Scene& scene, const CpuImage& gbuffer,
                                        const std::function<float(const Material&)>& pick) {
   std::vector<std::uint8_t> mask(std::size_t(gbuffer.desc.width) * gbuffer.desc.height, 0);
   for (int y = 0; y < gbuffer.desc.height; ++y)
@@ -54,8 +54,8 @@ std::vector<std::uint8_t> materialMask(const Scene& scene, const Surface& gbuffe
 nlohmann::json signalErrors(const Scene& scene, const GraphRun& run, const Recipe& recipe,
                             const GraphRun& exact, const Recipe& exactRecipe) {
   nlohmann::json out = nlohmann::json::object();
-  const Surface& gbuffer = exact.outputs.at("gbuffer.hits");
-  auto signalPair = [&](const std::string& slot) -> std::pair<const Surface*, const Surface*> {
+  const CpuImage& gbuffer = exact.outputs.at("gbuffer.hits");
+  auto signalPair = [&](const std::string& slot) -> std::pair<const CpuImage*, const CpuImage*> {
     const std::string mine = slotSignal(recipe, slot), ref = slotSignal(exactRecipe, slot);
     if (mine.empty() || ref.empty() || !run.outputs.count(mine) || !exact.outputs.count(ref))
       return {nullptr, nullptr};

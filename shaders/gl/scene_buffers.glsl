@@ -1,9 +1,10 @@
 // The scene as uploaded by engine/gl/scene_buffers.cpp: tightly packed float/uint arrays (std430
-// `float[]`, since a vec3[] would be padded to 16 bytes). Bindings match kScene*Binding.
-layout(std430, binding = 0) readonly buffer ScenePositions { float scenePositions[]; };
-layout(std430, binding = 1) readonly buffer SceneNormals { float sceneNormals[]; };
-layout(std430, binding = 2) readonly buffer SceneUvs { float sceneUvs[]; };
-layout(std430, binding = 3) readonly buffer SceneIndices { uint sceneIndices[]; };
+// `float[]`, since a vec3[] would be padded to 16 bytes). Bindings: common/bindings.glsl.
+#include "common/bindings.glsl"
+layout(std430, binding = BINDING_SCENE_POSITIONS) readonly buffer ScenePositions { float scenePositions[]; };
+layout(std430, binding = BINDING_SCENE_NORMALS) readonly buffer SceneNormals { float sceneNormals[]; };
+layout(std430, binding = BINDING_SCENE_UVS) readonly buffer SceneUvs { float sceneUvs[]; };
+layout(std430, binding = BINDING_SCENE_INDICES) readonly buffer SceneIndices { uint sceneIndices[]; };
 
 uvec3 sceneTriangle(uint triangle) {
   return uvec3(sceneIndices[3u * triangle], sceneIndices[3u * triangle + 1u],

@@ -1,6 +1,7 @@
 // Materials, lights and instances uploaded by engine/gl/shading_buffers.cpp, and the surface
 // point of a visibility-buffer texel reconstructed exactly as the CPU does it
-// (engine/rt/surface.cpp). Include after common/shading.glsl and gl/scene_buffers.glsl.
+// (engine/rt/surface_point.cpp). Include after common/shading.glsl and gl/scene_buffers.glsl.
+#include "common/bindings.glsl"
 struct GpuMaterial {
   vec4 colorKa;         // C, k_a
   vec4 kdKsExpKps;      // k_d, k_s, e, k_ps
@@ -12,8 +13,8 @@ struct GpuMaterial {
   vec4 checkerBCutoff;  // checker colour B, alpha cutoff
   vec4 alphaMask;       // layer of uSceneAlphaMasks (-1: none), width, height, flags
 };
-layout(std430, binding = 4) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
-layout(std430, binding = 5) readonly buffer SceneInstances { ivec2 sceneInstances[]; };
+layout(std430, binding = BINDING_SCENE_MATERIALS) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
+layout(std430, binding = BINDING_SCENE_INSTANCES) readonly buffer SceneInstances { ivec2 sceneInstances[]; };
 struct GpuLight {
   vec4 typeRangeCos;     // type, range, cos inner, cos outer
   vec4 colorIntensity;   // colour, intensity
@@ -21,14 +22,14 @@ struct GpuLight {
   vec4 directionShadow;  // direction, 1 when it casts shadows
   vec4 edgeURadius;      // quad edge u, radius
 };
-layout(std430, binding = 6) readonly buffer SceneLights { GpuLight sceneLights[]; };
+layout(std430, binding = BINDING_SCENE_LIGHTS) readonly buffer SceneLights { GpuLight sceneLights[]; };
 uniform int uLightCount;  // sceneLights has a dummy entry when the scene has no lights
 // Alpha of the colour textures of alpha-masked materials, one per layer at its own size in the
 // layer's corner, image row y at GL row y (engine/gl/shading_buffers.cpp).
-layout(binding = 7) uniform sampler2DArray uSceneAlphaMasks;
+layout(binding = UNIT_SCENE_ALPHA_MASKS) uniform sampler2DArray uSceneAlphaMasks;
 
 // Material m of Scene::materials (-1: the default), with the checker applied at uv
-// (colour alternates every 1/scale in u and v, as engine/rt/texture_sampling.cpp).
+// (colour alternates every 1/scale in u and v, as engine/shading/texture_sampling.cpp).
 ShadingMaterial sceneMaterial(int m, vec2 uv) {
   GpuMaterial g = sceneMaterials[m + 1];
   ShadingMaterial s;
@@ -53,7 +54,7 @@ ShadingMaterial sceneMaterial(int m, vec2 uv) {
   return s;
 }
 
-// The wrap modes of engine/rt/texture_sampling.cpp (0 repeat, 1 clamp to edge, 2 mirrored
+// The wrap modes of engine/shading/texture_sampling.cpp (0 repeat, 1 clamp to edge, 2 mirrored
 // repeat), applied the same way: the coordinate reduced by whole periods, then texel indices.
 float sceneReduceCoordinate(float t, int mode) {
   if (isnan(t) || isinf(t)) return 0.0;

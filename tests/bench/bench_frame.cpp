@@ -102,13 +102,13 @@ void BM_HybridFrame(benchmark::State& state, const std::string& sceneName) {
 void BM_ShadowsBreakdown(benchmark::State& state, const std::string& sceneName) {
   const Scene scene = loadSample(sceneName);
   HybridFrame h(scene, int(state.range(0)), int(state.range(1)), {"shade.color", "gbuffer.hits"});
-  const Surface& gbuffer = h.executor->output("gbuffer.hits");
+  const CpuImage& gbuffer = h.executor->output("gbuffer.hits");
   RenderWorld& world = *h.world;
   const auto& lights = world.scene().lights;
   const RtScene& rt = world.rtScene();
   const int w = gbuffer.desc.width, hgt = gbuffer.desc.height;
   const int layers = std::max<int>(1, int(lights.size()));
-  Surface out(ResourceDesc{Format::R32F, w, hgt, layers});
+  CpuImage out(ResourceDesc{Format::R32F, w, hgt, layers});
 
   std::vector<double> setupMs, traceMs, writeMs;
   std::size_t rays = 0;

@@ -6,7 +6,7 @@
 //   samples/s  pixel samples (paths) per second of wall time
 //   rays/s     intersection + shadow rays per second (the pass's "rays" counter)
 //   rays/sample
-// Wall clock on a shared machine: reported, never asserted (docs/references.md).
+// Wall clock on a shared machine: reported, never asserted (docs/reference-renderers.md).
 #include <benchmark/benchmark.h>
 
 #include <memory>

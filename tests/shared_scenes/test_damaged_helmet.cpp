@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "engine/rt/rt_scene.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/default_lighting.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
@@ -20,7 +20,7 @@ const std::filesystem::path kHelmet =
 constexpr int kW = 96, kH = 96;
 
 // Mean Rec. 709 luminance of the central half (in each axis) of the image, where the helmet is.
-double centralMean(const Surface& s) {
+double centralMean(const CpuImage& s) {
   double sum = 0;
   int n = 0;
   for (int y = kH / 4; y < 3 * kH / 4; ++y)

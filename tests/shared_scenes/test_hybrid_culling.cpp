@@ -33,8 +33,8 @@ struct Coverage {
 // Checks every texel of the G-buffer ids against the world geometry, and shade.color for NaN/Inf.
 Coverage inspect(const testing::HybridFrame& f) {
   Coverage c;
-  const Surface& vis = f.output("gbuffer.hits");
-  const Surface& color = f.output("shade.color");
+  const CpuImage& vis = f.output("gbuffer.hits");
+  const CpuImage& color = f.output("shade.color");
   const WorldGeometry& g = f.world->geometry();
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {
@@ -70,7 +70,7 @@ TEST(HybridCullingShared, CornellBoxWithoutPunctualLightsCullsShadowsAndShadesWi
   EXPECT_NE(testing::scheduledNode(f->graph, "shade"), nullptr);
   ASSERT_NE(testing::scheduledNode(f->graph, "default:shadows.visibility"), nullptr);
 
-  const Surface& vis = f->output("shadows.visibility");
+  const CpuImage& vis = f->output("shadows.visibility");
   int notOne = 0;
   for (int l = 0; l < vis.desc.layers; ++l)
     for (int y = 0; y < kH; ++y)
@@ -125,9 +125,9 @@ TEST_P(HybridSharedModel, WithAHeadlightCastsShadowRaysAndStaysFinite) {
   EXPECT_EQ(c.nonFinite, 0) << "NaN or Inf in shade.color";
   EXPECT_EQ(c.invalidIds, 0);
 
-  const Surface& vis = f->output("shadows.visibility");
-  const Surface& color = f->output("shade.color");
-  const Surface& ids = f->output("gbuffer.hits");
+  const CpuImage& vis = f->output("shadows.visibility");
+  const CpuImage& color = f->output("shade.color");
+  const CpuImage& ids = f->output("gbuffer.hits");
   const int headlight = vis.desc.layers - 1;
   int lit = 0, badVisibility = 0, shadowed = 0;
   for (int y = 0; y < kH; ++y) {

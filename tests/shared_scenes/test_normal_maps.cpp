@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "engine/rt/rt_scene.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/load.h"
 #include "tests/support/test_paths.h"
 

@@ -27,7 +27,7 @@ struct HybridFrame {
   CompiledGraph graph;
   std::unique_ptr<GraphExecutor> executor;
 
-  const Surface& output(const std::string& name) const { return executor->output(name); }
+  const CpuImage& output(const std::string& name) const { return executor->output(name); }
   const GraphPass* pass(const std::string& name) const {
     for (const GraphPass& p : graph.passes)
       if (p.name == name) return &p;

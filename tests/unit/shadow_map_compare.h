@@ -57,9 +57,9 @@ inline ShadowComparison compareShadows(const Scene& scene, const nlohmann::json&
   RenderWorld world(scene, &gl::testing::osmesaContext());
   GraphExecutor ex(graph, world);
   ex.runFrame();
-  const Surface& sm = ex.output("sm.visibility");
-  const Surface& rt = ex.output("rt.visibility");
-  const Surface& gb = ex.output("gbuffer.hits");
+  const CpuImage& sm = ex.output("sm.visibility");
+  const CpuImage& rt = ex.output("rt.visibility");
+  const CpuImage& gb = ex.output("gbuffer.hits");
 
   ShadowComparison c;
   c.width = width;

@@ -101,9 +101,9 @@ Frame renderFrame(const Scene& scene, Check&& check) {
   ex.runFrame();
   EXPECT_EQ(gl::glDebugErrorCount(), errors);
   Frame f;
-  const Surface& sm = ex.output("sm.visibility");
-  const Surface& rt = ex.output("rt.visibility");
-  const Surface& gb = ex.output("gbuffer.hits");
+  const CpuImage& sm = ex.output("sm.visibility");
+  const CpuImage& rt = ex.output("rt.visibility");
+  const CpuImage& gb = ex.output("gbuffer.hits");
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       f.map.push_back(sm.f(x, y, 0));

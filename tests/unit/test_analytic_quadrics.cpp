@@ -11,7 +11,7 @@
 
 #include "engine/core/error.h"
 #include "engine/rt/rt_scene.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/load.h"
 #include "engine/scene/primitives.h"
 #include "tests/support/test_paths.h"

@@ -15,7 +15,7 @@
 #include <random>
 
 #include "engine/rt/rt_scene.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/primitives.h"
 
 using namespace diptych;

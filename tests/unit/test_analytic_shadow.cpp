@@ -58,9 +58,9 @@ TEST(AnalyticShadow, SphereOverPlaneShadowDiscHasTheExactRadius) {
     if (frame->scene.instances[i].name == "ground") plane = int(i);
   ASSERT_GE(plane, 0) << "shadow-sphere.json has no instance named 'ground'";
 
-  const Surface& gbuffer = frame->output("gbuffer.hits");
-  const Surface& shadows = frame->output("shadows.visibility");
-  const Surface& color = frame->output("shade.color");
+  const CpuImage& gbuffer = frame->output("gbuffer.hits");
+  const CpuImage& shadows = frame->output("shadows.visibility");
+  const CpuImage& color = frame->output("shade.color");
   ASSERT_EQ(shadows.desc.layers, 1);
   const WorldMesh& mesh = frame->world->geometry().meshes.at(std::size_t(plane));
 

@@ -19,7 +19,7 @@
 #include "engine/graph/frame_graph.h"
 #include "engine/graph/recipe.h"
 #include "engine/graph/render_world.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
 #include "engine/scene/load.h"
@@ -99,7 +99,7 @@ class EnvFixture : public ::testing::Test {
 fs::path EnvFixture::dir_;
 
 struct Frame {
-  Surface hits, reflection;
+  CpuImage hits, reflection;
 };
 
 Frame render(const Scene& scene, const std::string& type, int resolution) {

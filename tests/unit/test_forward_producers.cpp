@@ -11,7 +11,7 @@
 #include "engine/graph/executor.h"
 #include "engine/graph/render_world.h"
 #include "engine/rt/ray_offset.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
 #include "engine/scene/load.h"
@@ -32,7 +32,7 @@ Scene sceneFromJson(const std::string& name, const std::string& json) {
 }
 
 struct ProducerRun {
-  Surface signal, hits;
+  CpuImage signal, hits;
 };
 
 // gbuffer -> producer; returns the producer's signal and the G-buffer hits.
@@ -51,7 +51,7 @@ ProducerRun runProducer(const Scene& scene, const std::string& type, const std::
   return {executor.output("p." + signal), executor.output("gbuffer.hits")};
 }
 
-vec3 rgb(const Surface& s, int x, int y) {
+vec3 rgb(const CpuImage& s, int x, int y) {
   return {s.f(x, y, 0), s.f(x, y, 1), s.f(x, y, 2)};
 }
 float maxDiff(const vec3& a, const vec3& b) {
@@ -106,11 +106,11 @@ TEST(BlendTransmission, SortedIsOrderIndependentUnsortedIsNotWhereQuadsOverlap) 
   constexpr int W = 64, H = 48;
   const Scene frontToBack = sceneFromJson("f2b", layeredQuads(true));
   const Scene backToFront = sceneFromJson("b2f", layeredQuads(false));
-  const Surface sortedF2B = runProducer(frontToBack, "sorted_blend", "transmission", W, H).signal;
-  const Surface sortedB2F = runProducer(backToFront, "sorted_blend", "transmission", W, H).signal;
-  const Surface unsortedF2B =
+  const CpuImage sortedF2B = runProducer(frontToBack, "sorted_blend", "transmission", W, H).signal;
+  const CpuImage sortedB2F = runProducer(backToFront, "sorted_blend", "transmission", W, H).signal;
+  const CpuImage unsortedF2B =
       runProducer(frontToBack, "unsorted_blend", "transmission", W, H).signal;
-  const Surface unsortedB2F =
+  const CpuImage unsortedB2F =
       runProducer(backToFront, "unsorted_blend", "transmission", W, H).signal;
 
   // Lecture: I = I_m + k_t M_t I from the back: background 1, B: (0, 0.2, 0) + 0.5 I,

@@ -37,8 +37,8 @@ class AddPass : public Pass {
     out_ = b.write("out", {Format::R32F, b.frame().width, b.frame().height}, vec4(0.f));
   }
   void execute(PassContext& c) override {
-    const Surface& a = c.cpuRead(a_);
-    Surface& out = c.cpuWrite(out_);
+    const CpuImage& a = c.cpuRead(a_);
+    CpuImage& out = c.cpuWrite(out_);
     for (int y = 0; y < out.desc.height; ++y)
       for (int x = 0; x < out.desc.width; ++x)
         out.setF(x, y, 0, a.f(x, y, 0) + (b_ == kNoResource ? 0.f : c.cpuRead(b_).f(x, y, 0)));
@@ -82,7 +82,7 @@ class SneakyPass : public Pass {
   void setup(PassBuilder& b) override {
     out_ = b.write("out", {Format::R32F, b.frame().width, b.frame().height}, vec4(0.f));
   }
-  void execute(PassContext& c) override { c.cpuRead(0); }
+  void execute(PassContext& c) override { c.cpuRead(ResourceId(0)); }
 
  private:
   ResourceId out_ = kNoResource;
@@ -93,9 +93,12 @@ class FakeGlProducer : public Pass {
  public:
   Domain domain() const override { return Domain::Gl; }
   void setup(PassBuilder& b) override {
-    b.write("out", {Format::R32F, b.frame().width, b.frame().height}, vec4(0.f));
+    out_ = b.write("out", {Format::R32F, b.frame().width, b.frame().height}, vec4(0.f));
   }
   void execute(PassContext&) override {}
+
+ private:
+  ResourceId out_ = kNoResource;
 };
 
 PassRegistry testRegistry() {
@@ -166,9 +169,9 @@ TEST(FrameGraph, CullsPassesNoOutputNeedsWithReason) {
       {"name": "one", "type": "constant"}, {"name": "unused", "type": "constant"}],
     "outputs": ["one.out"]})"),
                               testRegistry(), scene, smallFrame());
-  EXPECT_FALSE(g.passes[0].culled);
-  EXPECT_TRUE(g.passes[1].culled);
-  EXPECT_EQ(g.passes[1].cullReason, "output not requested");
+  EXPECT_FALSE(g.passes[PassIndex(0)].culled);
+  EXPECT_TRUE(g.passes[PassIndex(1)].culled);
+  EXPECT_EQ(g.passes[PassIndex(1)].cullReason, "output not requested");
   EXPECT_EQ(g.nodes.size(), 1u);
 }
 
@@ -179,8 +182,8 @@ TEST(FrameGraph, SceneDrivenCullingFeedsConsumersTheDefault) {
     "outputs": ["sum.out"]})";
   const Scene noGlass = sceneWithTriangle(0.f);
   const auto g = compileGraph(recipe(json), testRegistry(), noGlass, smallFrame());
-  EXPECT_TRUE(g.passes[0].culled);
-  EXPECT_EQ(g.passes[0].cullReason, "scene has no transmissive materials");
+  EXPECT_TRUE(g.passes[PassIndex(0)].culled);
+  EXPECT_EQ(g.passes[PassIndex(0)].cullReason, "scene has no transmissive materials");
   ASSERT_EQ(g.nodes.size(), 2u);
   EXPECT_EQ(g.nodes[0].kind, NodeKind::Default);
   RenderWorld world(noGlass);
@@ -190,7 +193,7 @@ TEST(FrameGraph, SceneDrivenCullingFeedsConsumersTheDefault) {
 
   const Scene glass = sceneWithTriangle(0.9f);
   const auto g2 = compileGraph(recipe(json), testRegistry(), glass, smallFrame());
-  EXPECT_FALSE(g2.passes[0].culled);
+  EXPECT_FALSE(g2.passes[PassIndex(0)].culled);
   RenderWorld world2(glass);
   GraphExecutor ex2(g2, world2);
   ex2.runFrame();

@@ -56,7 +56,7 @@ struct Agreement {
 
 Agreement compareWithEmbree(const std::filesystem::path& file, int w, int h) {
   auto frame = testing::renderHybridFrame(file, w, h, {"gbuffer.hits"});
-  const Surface& vis = frame->output("gbuffer.hits");
+  const CpuImage& vis = frame->output("gbuffer.hits");
   EXPECT_EQ(vis.desc.width, w);
   EXPECT_EQ(vis.desc.height, h);
   const WorldGeometry& geometry = frame->world->geometry();

@@ -35,7 +35,7 @@ TEST(HybridCulling, WhittedKeepsEveryPassAndCastsShadows) {
     EXPECT_FALSE(p.culled) << p.name << " culled: " << p.cullReason;
   EXPECT_EQ(testing::scheduledNode(f->graph, "default:shadows.visibility"), nullptr);
   ASSERT_NE(testing::scheduledNode(f->graph, "shadows"), nullptr);
-  const Surface& vis = f->output("shadows.visibility");
+  const CpuImage& vis = f->output("shadows.visibility");
   int zeros = 0;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) zeros += vis.f(x, y, 0) == 0.f;
@@ -57,7 +57,7 @@ TEST(HybridCulling, LightsThatCastNoShadowsCullTheShadowPassAndShadeReadsVisibil
   ASSERT_NE(testing::scheduledNode(culled->graph, "default:shadows.visibility"), nullptr);
 
   // What shade read: the fallback, 1 everywhere, in every light's layer.
-  const Surface& vis = culled->output("shadows.visibility");
+  const CpuImage& vis = culled->output("shadows.visibility");
   ASSERT_EQ(vis.desc.layers, int(scene.lights.size()));
   for (int l = 0; l < vis.desc.layers; ++l)
     for (int y = 0; y < kH; ++y)
@@ -65,9 +65,9 @@ TEST(HybridCulling, LightsThatCastNoShadowsCullTheShadowPassAndShadeReadsVisibil
 
   auto shadeOnly = testing::renderHybridFrame(scene, kW, kH, {}, withoutShadowPass());
   auto full = testing::renderHybridFrame(kWhitted, kW, kH, {});
-  const Surface& a = culled->output("shade.color");
-  const Surface& b = shadeOnly->output("shade.color");
-  const Surface& c = full->output("shade.color");
+  const CpuImage& a = culled->output("shade.color");
+  const CpuImage& b = shadeOnly->output("shade.color");
+  const CpuImage& c = full->output("shade.color");
   EXPECT_EQ(a.words, b.words) << "culled frame differs from a frame without a shadow pass";
   EXPECT_NE(a.words, c.words) << "shadows must change the image, or this test proves nothing";
 }

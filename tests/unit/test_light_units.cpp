@@ -40,7 +40,7 @@ TEST(LightUnits, BlenderPointLightPlaneRadianceMatchesPhotometricPrediction) {
   ASSERT_EQ(scene.instances.size(), 1u);
   constexpr int kW = 96, kH = 72;
   auto f = testing::renderHybridFrame(scene, kW, kH, {"shade.color"});
-  const Surface& color = f->output("shade.color");
+  const CpuImage& color = f->output("shade.color");
   const Camera camera = testing::cameraOf(f->scene);
   const vec3 light = f->scene.lights[0].position;
   const double intensityWattsPerSr = kCandela / 683.0;

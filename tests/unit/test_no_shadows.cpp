@@ -19,15 +19,15 @@ TEST(NoShadows, LightsEveryPixelAndOnlyAddsLight) {
   auto exact =
       diptych::testing::renderHybridFrame(file, kW, kH, {"shade.color", "shadows.visibility"});
 
-  const Surface& v = none->output("shadows.visibility");
+  const CpuImage& v = none->output("shadows.visibility");
   ASSERT_EQ(v.desc.layers, int(none->scene.lights.size()));
   for (int l = 0; l < v.desc.layers; ++l)
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) ASSERT_EQ(v.f(x, y, 0, l), 1.f) << x << "," << y;
 
-  const Surface& unshadowed = none->output("shade.color");
-  const Surface& shadowed = exact->output("shade.color");
-  const Surface& exactV = exact->output("shadows.visibility");
+  const CpuImage& unshadowed = none->output("shade.color");
+  const CpuImage& shadowed = exact->output("shade.color");
+  const CpuImage& exactV = exact->output("shadows.visibility");
   int brighter = 0, inShadow = 0;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {

@@ -43,9 +43,9 @@ Agreement compareHybridWithReference(const char* sceneFile, int w, int h) {
   RenderWorld world(scene, context.get());
   GraphExecutor ex(g, world);
   ex.runFrame();
-  const Surface& hybrid = ex.output("shade.color");
-  const Surface& reference = ex.output("reference.color");
-  const Surface& gbuffer = ex.output("gbuffer.hits");
+  const CpuImage& hybrid = ex.output("shade.color");
+  const CpuImage& reference = ex.output("reference.color");
+  const CpuImage& gbuffer = ex.output("gbuffer.hits");
 
   double num = 0, den = 0;
   int mismatched = 0, analyticPixels = 0;

@@ -37,7 +37,7 @@ Scene sample(const char* file) {
 
 // A CPU-only frame of the given passes; outputs copied out, counters of every pass kept.
 struct Frame {
-  std::map<std::string, Surface> outputs;
+  std::map<std::string, CpuImage> outputs;
   std::map<std::string, std::map<std::string, double>> counters;  // pass -> counter -> value
 };
 
@@ -64,7 +64,7 @@ RecipePass pass(const std::string& name, const std::string& type, nlohmann::json
   return {.name = name, .type = type, .params = std::move(params)};
 }
 
-bool allFinite(const Surface& s) {
+bool allFinite(const CpuImage& s) {
   for (int y = 0; y < s.desc.height; ++y)
     for (int x = 0; x < s.desc.width; ++x)
       for (int c = 0; c < 4; ++c)
@@ -84,7 +84,7 @@ std::string edgeScene(float aperture, float focus) {
 constexpr int kEdgeW = 65, kEdgeH = 49;
 
 // Where the falling profile of row y crosses `level`, interpolating between pixel centres.
-double crossing(const Surface& s, int y, float level) {
+double crossing(const CpuImage& s, int y, float level) {
   for (int x = 0; x + 1 < s.desc.width; ++x) {
     const float a = s.f(x, y, 0), b = s.f(x + 1, y, 0);
     if (a >= level && b < level) return x + 0.5 + (a - level) / (a - b);
@@ -142,7 +142,7 @@ TEST(RtDistributed, SixteenSamplesMakeTheEdgePixelFractional) {
   const Scene scene = loadScene(writeScene("edge.json", edgeScene(0.f, 5.f)));
   const Frame f =
       render(scene, {pass("d", "rt_distributed", {{"spp", 16}})}, {"d.color"}, kEdgeW, kEdgeH);
-  const Surface& s = f.outputs.at("d.color");
+  const CpuImage& s = f.outputs.at("d.color");
   double sum = 0;
   int exactHalf = 0;
   for (int y = 0; y < kEdgeH; ++y) {
@@ -167,10 +167,10 @@ TEST(RtDistributed, ThinLensBlursAnEdgeOffFocusByTheCircleOfConfusion) {
   const nlohmann::json p = {{"spp", 256}, {"depth", 1}};
   const Scene sharp = loadScene(writeScene("edge-focused.json", edgeScene(0.4f, 5.f)));
   const Scene blurred = loadScene(writeScene("edge-blurred.json", edgeScene(0.4f, 2.5f)));
-  const Surface inFocus =
+  const CpuImage inFocus =
       render(sharp, {pass("d", "rt_distributed", p)}, {"d.color"}, kEdgeW, kEdgeH)
           .outputs.at("d.color");
-  const Surface outOfFocus =
+  const CpuImage outOfFocus =
       render(blurred, {pass("d", "rt_distributed", p)}, {"d.color"}, kEdgeW, kEdgeH)
           .outputs.at("d.color");
   const int y = kEdgeH / 2;
@@ -202,7 +202,7 @@ TEST(RtPath, WhiteFurnaceConvergesToOneEverywhere) {
   const Frame f =
       render(scene, {pass("p", "rt_path", {{"spp", n}, {"max_depth", 64}, {"rr_depth", 3}})},
              {"p.color", "p.variance"}, w, h);
-  const Surface &color = f.outputs.at("p.color"), &variance = f.outputs.at("p.variance");
+  const CpuImage &color = f.outputs.at("p.color"), &variance = f.outputs.at("p.variance");
   ASSERT_TRUE(allFinite(color));
   ASSERT_TRUE(allFinite(variance));
   EXPECT_EQ(f.counters.at("p").at("invalid_samples"), 0.0);
@@ -353,7 +353,7 @@ TEST(RtPath, IsReproducible) {
     return render(scene, {pass("p", "rt_path", {{"spp", 2}})}, {"p.color"}, 20, 20)
         .outputs.at("p.color");
   };
-  const Surface a = once(), b = once();
+  const CpuImage a = once(), b = once();
   for (int y = 0; y < 20; ++y)
     for (int x = 0; x < 20; ++x) ASSERT_EQ(a.f(x, y, 0), b.f(x, y, 0));
 }

@@ -93,8 +93,8 @@ TEST(RtShadows, QuadAreaLightCastsUmbraPenumbraAndLitRegions) {
   RenderWorld world(scene, context.get());
   GraphExecutor ex(g, world);
   ex.runFrame();
-  const Surface& vis = ex.output("shadows.visibility");
-  const Surface& gbuffer = ex.output("gbuffer.hits");
+  const CpuImage& vis = ex.output("shadows.visibility");
+  const CpuImage& gbuffer = ex.output("gbuffer.hits");
   int umbra = 0, penumbra = 0, lit = 0, plane = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "engine/rt/shadow_rays.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "tests/support/rt_test_geometry.h"
 
 using namespace diptych;

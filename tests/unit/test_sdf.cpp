@@ -14,7 +14,7 @@
 
 #include "engine/core/error.h"
 #include "engine/rt/rt_scene.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/load.h"
 #include "engine/scene/sdf.h"
 #include "tests/support/test_paths.h"

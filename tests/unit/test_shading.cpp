@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "engine/rt/shading.h"
+#include "engine/shading/shading.h"
 
 using namespace diptych;
 using namespace diptych::shading;

@@ -1,7 +1,8 @@
 // GLSL vs C++ shading parity: shaders/common/shading.glsl compiled as GLSL (a compute shader on
-// OSMesa/llvmpipe) and as C++ (engine/rt/shading.h) must give the same values on the same inputs,
-// including grazing and extreme ones; and scene_shading.glsl's surfaceFromHits must
-// reconstruct the same surface point as makeSurfacePoint (engine/rt/surface.h) from a G-buffer.
+// OSMesa/llvmpipe) and as C++ (engine/shading/shading.h) must give the same values on the same
+// inputs, including grazing and extreme ones; and scene_shading.glsl's surfaceFromHits must
+// reconstruct the same surface point as makeSurfacePoint (engine/rt/surface_point.h) from a
+// G-buffer.
 //
 // Norm: for each output vector (or scalar) g (GPU) and c (CPU),
 //   |g - c|_inf <= 1e-5 * max(|c|_inf, floor)
@@ -23,9 +24,9 @@
 #include "engine/gl/shading_buffers.h"
 #include "engine/gl/transfer.h"
 #include "engine/graph/render_world.h"
-#include "engine/rt/shading.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/load.h"
+#include "engine/shading/shading.h"
 #include "gl_test_context.h"
 #include "tests/support/test_paths.h"
 

@@ -95,7 +95,7 @@ TEST(Slots, EveryRegisteredProducerCompilesInItsSlot) {
       applySlotOverride(r, parseSlotOverride(slot.name + "=" + type->name), builtinPasses());
       const std::string signal = slotSignalOf(r, slot);
       const CompiledGraph g = compileGraph(r, builtinPasses(), scene, frame, {signal});
-      const GraphResource& res = g.resources.at(*g.findResource(signal));
+      const GraphResource& res = g.resources[*g.findResource(signal)];
       EXPECT_EQ(res.desc.format, slot.format) << type->name;
       EXPECT_EQ(res.desc.layers, slot.layerPerLight ? int(scene.lights.size()) : 1) << type->name;
       ++producers;

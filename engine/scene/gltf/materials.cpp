@@ -153,7 +153,7 @@ class TextureTable {
 
   // Mean of the green (roughness) and blue (metallic) channels of a metallicRoughnessTexture,
   // or (1, 1) when there is none: the material's constants (what the GL side shades with);
-  // the CPU side samples the texture per hit instead (engine/rt/surface.cpp).
+  // the CPU side samples the texture per hit instead (engine/rt/surface_point.cpp).
   vec2 meanRoughnessMetallic(const tinygltf::TextureInfo& info, const std::string& place) {
     if (info.index < 0) return vec2(1.f);
     if (info.index >= int(model_.textures.size()))
@@ -224,7 +224,7 @@ Material convertMaterial(const tinygltf::Material& src, const std::string& place
   m.mirrorColor = k.mirrorColor;
   m.kt = k.kt;
   m.transmitColor = k.transmitColor;
-  // The inputs, for per-hit mapping of textured materials (engine/rt/surface.cpp).
+  // The inputs, for per-hit mapping of textured materials (engine/rt/surface_point.cpp).
   m.baseColorFactor = base;
   m.metallicFactor = std::clamp(float(pbr.metallicFactor), 0.f, 1.f);
   m.roughnessFactor = std::clamp(float(pbr.roughnessFactor), 0.f, 1.f);

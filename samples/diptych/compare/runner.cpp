@@ -50,7 +50,7 @@ void progress(const char* label, int done, int total, const std::string& what) {
   std::fflush(stderr);
 }
 
-std::vector<std::uint8_t> coverage(const Surface& gbuffer) {
+std::vector<std::uint8_t> coverage(const CpuImage& gbuffer) {
   std::vector<std::uint8_t> mask(std::size_t(gbuffer.desc.width) * gbuffer.desc.height);
   for (int y = 0; y < gbuffer.desc.height; ++y)
     for (int x = 0; x < gbuffer.desc.width; ++x)
@@ -58,7 +58,7 @@ std::vector<std::uint8_t> coverage(const Surface& gbuffer) {
   return mask;
 }
 
-std::vector<float> layer(const Surface& s, int l) {
+std::vector<float> layer(const CpuImage& s, int l) {
   std::vector<float> v(std::size_t(s.desc.width) * s.desc.height);
   for (int y = 0; y < s.desc.height; ++y)
     for (int x = 0; x < s.desc.width; ++x) v[std::size_t(y) * s.desc.width + x] = s.f(x, y, 0, l);

@@ -14,7 +14,7 @@ namespace diptych::cli {
 struct GraphRun {
   CompiledGraph graph;
   std::vector<NodeTiming> timings;
-  std::map<std::string, Surface> outputs;
+  std::map<std::string, CpuImage> outputs;
   double totalMs = 0;  // sum over nodes of each node's median CPU time
   // The first frame's CPU time (every node): it carries one-time work (shader compilation, pool
   // allocation, first-use caches) that the median of the measured frames leaves out.
@@ -34,8 +34,8 @@ std::string slotSignal(const Recipe& recipe, const std::string& slot);
 // otherwise (logs, CI).
 void progress(const char* label, int done, int total, const std::string& what);
 // G-buffer coverage: 1 where a surface is seen.
-std::vector<std::uint8_t> coverage(const Surface& gbuffer);
+std::vector<std::uint8_t> coverage(const CpuImage& gbuffer);
 // One layer of a float surface, row-major.
-std::vector<float> layer(const Surface& s, int l);
+std::vector<float> layer(const CpuImage& s, int l);
 
 }  // namespace diptych::cli

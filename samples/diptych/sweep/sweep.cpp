@@ -12,7 +12,7 @@
 #include "engine/core/image.h"
 #include "engine/gl/context.h"
 #include "engine/metrics/signal_metrics.h"
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
 #include "passes/common/hits_texel.h"
@@ -80,7 +80,7 @@ struct StateReference {
 
 // Geometry of the receiver pixels against the camera and the swept light.
 void measureGeometry(StateReference& s, const FrameSettings& frame, int light) {
-  const Surface& gb = s.exact.outputs.at("gbuffer.hits");
+  const CpuImage& gb = s.exact.outputs.at("gbuffer.hits");
   const int w = gb.desc.width, h = gb.desc.height;
   s.footprint.assign(std::size_t(w) * h, 0.f);
   const double pixelAngle = 2.0 * std::tan(frame.camera.verticalFov / 2.0) / h;
@@ -284,7 +284,7 @@ nlohmann::json runSweep(const SweepOptions& o) {
           runGraph(exactRecipe, *state->world, frame, {"gbuffer.hits", state->exactSignal}, 0, 1);
       state->mask = coverage(state->exact.outputs.at("gbuffer.hits"));
       if (!receivers.empty()) {
-        const Surface& gb = state->exact.outputs.at("gbuffer.hits");
+        const CpuImage& gb = state->exact.outputs.at("gbuffer.hits");
         for (int y = 0; y < o.height; ++y)
           for (int x = 0; x < o.width; ++x) {
             auto& m = state->mask[std::size_t(y) * o.width + x];
@@ -302,8 +302,8 @@ nlohmann::json runSweep(const SweepOptions& o) {
                           {"producer_ms", run.passMs.value(node, 0.0)},
                           {"total_ms", run.totalMs},
                           {"pass_ms", run.passMs}};
-    const Surface& mine = run.outputs.at(signal);
-    const Surface& exact = state->exact.outputs.at(state->exactSignal);
+    const CpuImage& mine = run.outputs.at(signal);
+    const CpuImage& exact = state->exact.outputs.at(state->exactSignal);
     nlohmann::json measured = nlohmann::json::object();
     if (base.slot == "visibility") {
       const int l = std::min(o.light, mine.desc.layers - 1);

@@ -1,4 +1,4 @@
-#include "engine/rt/surface.h"
+#include "engine/rt/surface_point.h"
 
 #include <bit>
 #include <cmath>
@@ -7,8 +7,8 @@
 
 #include "engine/core/error.h"
 #include "engine/rt/ray_offset.h"
-#include "engine/rt/texture_sampling.h"
 #include "engine/scene/gltf_pbr.h"
+#include "engine/shading/texture_sampling.h"
 
 namespace diptych {
 

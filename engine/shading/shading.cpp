@@ -1,4 +1,4 @@
-#include "engine/rt/shading.h"
+#include "engine/shading/shading.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,9 +3,9 @@
 // uv, and the material with its textures and checker resolved at the point.
 #include <cstdint>
 
-#include "engine/rt/shading.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/world_geometry.h"
+#include "engine/shading/shading.h"
 
 namespace diptych {
 

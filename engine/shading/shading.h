@@ -42,7 +42,7 @@ static_assert(LIGHT_POINT == int(LightType::Point) &&
 ShadingLight toShadingLight(const Light& light);
 
 // The material's constant parameters; textures and the checker are NOT applied here (see
-// engine/rt/surface.h, which resolves them at a point).
+// engine/rt/surface_point.h, which resolves them at a point).
 ShadingMaterial toShadingMaterial(const Material& material);
 
 }  // namespace diptych::shading

@@ -1,4 +1,4 @@
-#include "engine/rt/texture_sampling.h"
+#include "engine/shading/texture_sampling.h"
 
 #include <cmath>
 

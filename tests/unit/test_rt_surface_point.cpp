@@ -3,8 +3,8 @@
 
 #include "engine/core/error.h"
 #include "engine/rt/rt_scene.h"
-#include "engine/rt/surface.h"
-#include "engine/rt/texture_sampling.h"
+#include "engine/rt/surface_point.h"
+#include "engine/shading/texture_sampling.h"
 #include "tests/support/rt_test_geometry.h"
 
 using namespace diptych;

@@ -1,0 +1,120 @@
+# Layer check: every `#include "..."` in the scanned folders must point to the file's own layer
+# or to a layer its row of the layer table allows. The table is read from docs/architecture.md
+# (the rows between the `layer-table` markers), so the documentation and the check cannot
+# disagree. A file or an include target under a top-level source folder that no row covers is
+# an error too, so a new folder must be placed in the table before it can be used.
+#
+#   cmake -DSOURCE_DIR=<tree> [-DDIRS="engine;passes;samples;tests/support"] -P check_layers.cmake
+#
+# Table rows look like:  | `engine/gl` | OpenGL ... | `engine/core`, `engine/scene` |
+# (first cell: the layer, a folder; last cell: the layers it may include, or "-"). An allowed
+# layer also allows every layer below its folder (`engine` allows `engine/gl`).
+cmake_minimum_required(VERSION 3.25)
+if(NOT SOURCE_DIR)
+  message(FATAL_ERROR "check_layers: SOURCE_DIR is not set")
+endif()
+if(NOT DIRS)
+  set(DIRS engine passes samples tests/support)
+endif()
+set(table_file "${SOURCE_DIR}/docs/architecture.md")
+if(NOT EXISTS "${table_file}")
+  message(FATAL_ERROR "check_layers: ${table_file} does not exist")
+endif()
+
+# ---- the table ----
+file(STRINGS "${table_file}" doc_lines)
+set(in_table FALSE)
+set(layers)
+foreach(line IN LISTS doc_lines)
+  if(line MATCHES "<!-- layer-table:begin")
+    set(in_table TRUE)
+  elseif(line MATCHES "<!-- layer-table:end")
+    set(in_table FALSE)
+  elseif(in_table AND line MATCHES "^\\| *`([^`]+)` *\\|.*\\|([^|]*)\\| *$")
+    set(layer "${CMAKE_MATCH_1}")
+    string(REGEX MATCHALL "`[^`]+`" allowed "${CMAKE_MATCH_2}")
+    string(REPLACE "`" "" allowed "${allowed}")
+    list(APPEND layers "${layer}")
+    string(MAKE_C_IDENTIFIER "${layer}" key)
+    set(allow_${key} "${allowed}")
+  endif()
+endforeach()
+if(NOT layers)
+  message(FATAL_ERROR "check_layers: no layer rows between <!-- layer-table:begin --> and "
+                      "<!-- layer-table:end --> in ${table_file}")
+endif()
+
+# The layer of a path: the longest table folder that is a prefix of it (empty when none).
+function(layer_of path out)
+  set(best "")
+  foreach(layer IN LISTS layers)
+    string(LENGTH "${layer}" n)
+    string(LENGTH "${best}" best_n)
+    if(path MATCHES "^${layer}/" AND n GREATER best_n)
+      set(best "${layer}")
+    endif()
+  endforeach()
+  set(${out} "${best}" PARENT_SCOPE)
+endfunction()
+
+# ---- the includes ----
+set(top_folders engine passes samples shaders tests)
+set(errors)
+set(files_checked 0)
+set(includes_checked 0)
+foreach(dir IN LISTS DIRS)
+  file(GLOB_RECURSE sources RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/${dir}/*.h"
+       "${SOURCE_DIR}/${dir}/*.hpp" "${SOURCE_DIR}/${dir}/*.cpp" "${SOURCE_DIR}/${dir}/*.inl")
+  foreach(source IN LISTS sources)
+    math(EXPR files_checked "${files_checked} + 1")
+    layer_of("${source}" from)
+    if(from STREQUAL "")
+      list(APPEND errors "${source}: its folder is in no row of the layer table")
+      continue()
+    endif()
+    string(MAKE_C_IDENTIFIER "${from}" key)
+    file(STRINGS "${SOURCE_DIR}/${source}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+    # file(STRINGS) gives no line numbers; find them in a second pass only when reporting.
+    foreach(line IN LISTS lines)
+      if(NOT line MATCHES "\"([^\"]+)\"")
+        continue()
+      endif()
+      set(target "${CMAKE_MATCH_1}")
+      math(EXPR includes_checked "${includes_checked} + 1")
+      string(REGEX MATCH "^[^/]+" top "${target}")
+      if(NOT target MATCHES "/" OR NOT top IN_LIST top_folders)
+        continue()  # beside the including file, or not ours
+      endif()
+      layer_of("${target}" to)
+      if(to STREQUAL "")
+        list(APPEND errors "${source}: includes \"${target}\", whose folder is in no row of the layer table")
+        continue()
+      endif()
+      if(to STREQUAL from)
+        continue()
+      endif()
+      set(ok FALSE)
+      foreach(allowed IN LISTS allow_${key})
+        if(to STREQUAL allowed OR to MATCHES "^${allowed}/")
+          set(ok TRUE)
+        endif()
+      endforeach()
+      if(NOT ok)
+        set(allowed_text "${allow_${key}}")
+        string(REPLACE ";" ", " allowed_text "${allowed_text}")
+        if(allowed_text STREQUAL "")
+          set(allowed_text "nothing")
+        endif()
+        list(APPEND errors "${source}: includes \"${target}\": layer ${from} may not include layer ${to} (it may include: ${allowed_text}, per docs/architecture.md)")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+
+if(errors)
+  list(LENGTH errors count)
+  string(REPLACE ";" "\n  " text "${errors}")
+  message(FATAL_ERROR "check_layers: ${count} forbidden include(s):\n  ${text}")
+endif()
+message(STATUS "check_layers: ${files_checked} files, ${includes_checked} includes, "
+               "all within docs/architecture.md's layer table")
