@@ -6,15 +6,23 @@
 #include <limits>
 
 #include "engine/core/error.h"
-#include "engine/shading/shading.h"
+#include "engine/rt/ray_offset.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/rt/surface_point.h"
+#include "engine/shading/shading.h"
 
 namespace diptych {
 namespace {
 
-bool sameTriangle(const std::optional<Hit>& h, const SurfacePoint& p) {
-  return h && h->instance == p.hit.instance && h->primitive == p.hit.primitive;
+// A ray re-hitting the surface it left. A triangle is flat, so any hit on the same triangle is
+// one. An analytic part (a sphere's body) is curved: a refraction ray legitimately meets the same
+// part again on the far side, so there only a hit within a few of the origin's error bounds
+// (ray_offset.h) counts. `direction` is the ray's (unit for shadow and spawned rays).
+bool selfHit(const std::optional<Hit>& h, const SurfacePoint& p, const vec3& direction) {
+  if (!h || h->instance != p.hit.instance || h->primitive != p.hit.primitive) return false;
+  if (!h->analytic) return true;
+  const float bound = glm::length(positionErrorBound(p.position, p.positionMagnitude));
+  return h->t * glm::length(direction) <= 64.f * bound;
 }
 
 }  // namespace
@@ -37,14 +45,15 @@ RayProbe probeSecondaryRays(const Scene& scene, const WorldGeometry& world, cons
       if (!hit) continue;
       ++nPrimary;
       const SurfacePoint p = makeSurfacePoint(
-          scene, world, {hit->instance, hit->primitive, hit->u, hit->v}, ray.direction);
+          scene, world, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
+          ray.direction);
       const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
       for (std::size_t l = 0; l < lights; ++l) {
         const OcclusionRay s = makeShadowRay(scene.lights[l], receiver);
         if (s.tnear > s.tfar) continue;
         ++nSecondary;
         const auto h = rt.intersect(Ray{s.origin, s.direction}, s.tnear, s.tfar);
-        nSelf += sameTriangle(h, p) ? 1 : 0;
+        nSelf += selfHit(h, p, s.direction) ? 1 : 0;
         probe.occluded[(std::size_t(y) * width + x) * lights + l] = h ? 1 : 0;
       }
       const vec3 v = -ray.direction;
@@ -52,13 +61,15 @@ RayProbe probeSecondaryRays(const Scene& scene, const WorldGeometry& world, cons
       if (m.kps > 0.f) {
         const vec3 r = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
         ++nSecondary;
-        nSelf += sameTriangle(rt.intersect(spawnRay(p, r), 0.f, inf), p) ? 1 : 0;
+        const Ray reflected = spawnRay(p, r);
+        nSelf += selfHit(rt.intersect(reflected, 0.f, inf), p, reflected.direction) ? 1 : 0;
       }
       if (m.kt > 0.f) {
         const float eta = p.frontFacing ? 1.f / m.ior : m.ior;
         const shading::Refraction t = shading::refractLecture(v, p.shadingNormal, eta);
         ++nSecondary;
-        nSelf += sameTriangle(rt.intersect(spawnRay(p, t.t), 0.f, inf), p) ? 1 : 0;
+        const Ray refracted = spawnRay(p, t.t);
+        nSelf += selfHit(rt.intersect(refracted, 0.f, inf), p, refracted.direction) ? 1 : 0;
       }
     }
     primary += nPrimary;

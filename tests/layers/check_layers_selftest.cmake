@@ -79,6 +79,6 @@ run_case(real_table_forbids_gl_to_graph REAL fail
   FILES engine/gl/forward.cpp "#include \"engine/graph/render_world.h\"")
 run_case(real_table_forbids_gl_to_rt REAL fail
   MESSAGE "layer engine/gl may not include layer engine/rt"
-  FILES engine/gl/shading.cpp "#include \"engine/shading/shading.h\"")
+  FILES engine/gl/shading.cpp "#include \"engine/rt/shading.h\"")
 run_case(real_table_allows_gl_to_shading REAL pass
   FILES engine/gl/shading.cpp "#include \"engine/shading/shading.h\"")

@@ -1,4 +1,4 @@
-#include "engine/rt/bump.h"
+#include "engine/shading/bump.h"
 
 #include <cmath>
 
