@@ -104,7 +104,14 @@ std::unique_ptr<GlContext> createContext(ContextKind kind, int width, int height
     case ContextKind::Glfw:
       return createGlfwContext(width, height, visible);
     default:
-      return createEglContext(width, height);
+      break;
+  }
+  if (kind != ContextKind::Auto) return createEglContext(width, height);
+  try {  // auto: a GPU whose EGL setup fails still leaves a working (software) context
+    return createEglContext(width, height);
+  } catch (const Error& e) {
+    log().warn("GL context auto: EGL failed ({}); falling back to OSMesa", e.what());
+    return createOsmesaContext(width, height);
   }
 }
 

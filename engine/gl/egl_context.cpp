@@ -101,14 +101,22 @@ class EglContext final : public GlContext {
     if (context_ == EGL_NO_CONTEXT)
       throw Error("EGL: cannot create an OpenGL 4.5 core context on the " + platform_ +
                   " display (error " + errorCode() + ")");
-    makeCurrentNative();
-    initialize();
+    try {
+      makeCurrentNative();
+      initialize();
+    } catch (...) {
+      release();  // the destructor does not run for a constructor that throws
+      throw;
+    }
     log().info("EGL {}.{} on the {} platform", major, minor, platform_);
   }
-  ~EglContext() override {
+  ~EglContext() override { release(); }
+
+  void release() {
     if (display_ != EGL_NO_DISPLAY) {
       eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
       if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+      context_ = EGL_NO_CONTEXT;
       // No eglTerminate: displays are per-process singletons in EGL, and terminating Mesa's
       // unloads its DRI driver, whose process-lifetime allocations LeakSanitizer could then no
       // longer attribute to a module (the same trap as tests/lsan_suppressions.txt describes).

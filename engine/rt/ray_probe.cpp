@@ -15,12 +15,13 @@ namespace diptych {
 namespace {
 
 // A ray re-hitting the surface it left. A triangle is flat, so any hit on the same triangle is
-// one. An analytic part (a sphere's body) is curved: a refraction ray legitimately meets the same
-// part again on the far side, so there only a hit within a few of the origin's error bounds
-// (ray_offset.h) counts. `direction` is the ray's (unit for shadow and spawned rays).
+// one. Analytic objects are curved: a refraction ray legitimately meets the same quadric or SDF
+// again on the far side, so there only a hit on the same instance within a few of the origin's
+// error bounds (ray_offset.h) counts (an SDF hit's primitive id encodes its point, not a part).
+// `direction` is the ray's (unit for shadow and spawned rays).
 bool selfHit(const std::optional<Hit>& h, const SurfacePoint& p, const vec3& direction) {
-  if (!h || h->instance != p.hit.instance || h->primitive != p.hit.primitive) return false;
-  if (!h->analytic) return true;
+  if (!h || h->instance != p.hit.instance) return false;
+  if (!h->analytic) return h->primitive == p.hit.primitive;
   const float bound = glm::length(positionErrorBound(p.position, p.positionMagnitude));
   return h->t * glm::length(direction) <= 64.f * bound;
 }

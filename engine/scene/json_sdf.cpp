@@ -19,6 +19,10 @@ double positiveNumber(JsonObject& o, const std::string& key, double fallback) {
 
 // Node placement: "translate" [x,y,z], "rotate" [degrees about x, y, z], "scale" (one number:
 // a uniform scale keeps the distance a distance). toLocal is the inverse of T R S.
+// Limits that keep a hostile SDF from exhausting memory or time at load (docs/robustness.md).
+constexpr std::size_t kMaxSdfNodes = 1024;
+constexpr double kMaxSdfEvaluations = 1.5e9;  // e.g. 256^3 x 89 nodes, or 64^3 x 1024
+
 void readPlacement(JsonObject& o, SdfNode& n) {
   const dvec3 t(o.vector3("translate", vec3(0.f)));
   const dvec3 r = glm::radians(dvec3(o.vector3("rotate", vec3(0.f))));
@@ -36,6 +40,10 @@ int readNode(const json& value, const std::string& path, const std::string& file
              int depth) {
   JsonObject o(value, path, file);
   if (depth > 64) o.fail("", "SDF tree deeper than 64 levels");
+  // Every distance evaluation walks every node, and polygonisation evaluates resolution^3 times:
+  // the node count bounds both (kMaxSdfNodes, and the budget in readSdfObject).
+  if (sdf.nodes.size() >= kMaxSdfNodes)
+    o.fail("", "SDF tree has more than " + std::to_string(kMaxSdfNodes) + " nodes");
   const std::string type = o.requiredString("type");
   SdfNode n;
   readPlacement(o, n);
@@ -122,7 +130,16 @@ Mesh readSdfObject(JsonObject& o) {
   if (!(object->settings.relaxation >= 1.0 && object->settings.relaxation < 2.0))
     o.fail("relaxation", "must be in [1, 2) (1: plain sphere tracing)");
   const int resolution = o.integer("resolution").value_or(64);
-  if (resolution < 4 || resolution > 512) o.fail("resolution", "must be between 4 and 512");
+  if (resolution < 4 || resolution > 256) o.fail("resolution", "must be between 4 and 256");
+  // Polygonisation cost: (resolution + 1)^3 distance evaluations of every node, done at load.
+  const double evaluations =
+      std::pow(double(resolution) + 1.0, 3.0) * double(object->sdf.nodes.size());
+  if (evaluations > kMaxSdfEvaluations)
+    o.fail("resolution",
+           "polygonising " + std::to_string(object->sdf.nodes.size()) +
+               " nodes at this resolution needs " + std::to_string(std::llround(evaluations)) +
+               " distance evaluations (limit " + std::to_string(std::llround(kMaxSdfEvaluations)) +
+               "): lower the resolution or simplify the tree");
   Mesh mesh = polygonizeSdf(object->sdf, object->lo, object->hi, resolution);
   mesh.sdf = std::move(object);
   return mesh;

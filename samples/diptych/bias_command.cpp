@@ -1,9 +1,11 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <tuple>
 
 #include "samples/diptych/bias/report.h"
 #include "samples/diptych/bias/study.h"
+#include "samples/diptych/parse_size.h"
 #include "samples/diptych/sweep_command.h"
 
 namespace diptych::cli {
@@ -74,7 +76,7 @@ void addShadowBiasCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", c->out, "Output folder (resumed when it holds this study)")
       ->capture_default_str();
   cmd->callback([c, &exitCode] {
-    parseSize("--size", c->size, c->options.width, c->options.height);
+    std::tie(c->options.width, c->options.height) = parseSize(c->size, 8192);
     c->options.out = c->out;
     const nlohmann::json summary = runBiasStudy(c->options);
     writeBiasReport(c->options.out, summary);

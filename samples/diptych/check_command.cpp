@@ -20,6 +20,7 @@
 #include "samples/diptych/check/cases.h"
 #include "samples/diptych/compare/runner.h"
 #include "samples/diptych/compare/variants.h"
+#include "samples/diptych/parse_size.h"
 
 namespace diptych::cli {
 namespace {
@@ -50,16 +51,6 @@ std::vector<double> parseList(const std::string& option, const std::string& text
     values.push_back(v);
   }
   return values;
-}
-
-std::pair<int, int> parseSize(const std::string& text) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
-      w <= 0 || h <= 0 || w > 4096 || h > 4096)
-    throw InputError("--size", "",
-                     "expected WIDTHxHEIGHT with each in 1..4096, got '" + text + "'");
-  return {w, h};
 }
 
 // "hybrid" (built in), "whitted" (the exact reference), a name in samples/graphs, or a file.
@@ -146,7 +137,7 @@ void writeText(const std::filesystem::path& p, const std::string& text) {
 }
 
 int runCheck(const CheckOptions& o) {
-  const auto [width, height] = parseSize(o.size);
+  const auto [width, height] = parseSize(o.size, 4096);
   const std::vector<double> scales = parseList("--scales", o.scales, true);
   const std::vector<double> offsets = parseList("--offsets", o.offsets, false);
   if (!(o.failAbove >= 0.0) || !std::isfinite(o.failAbove))

@@ -1,18 +1,13 @@
 #include "samples/diptych/sweep_command.h"
 
 #include <cstdio>
+#include <tuple>
 
 #include "engine/core/error.h"
+#include "samples/diptych/parse_size.h"
 #include "samples/diptych/sweep/sweep.h"
 
 namespace diptych::cli {
-
-void parseSize(const std::string& option, const std::string& text, int& width, int& height) {
-  char x = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d", &width, &x, &height) != 3 || x != 'x' || width <= 0 ||
-      height <= 0 || width > 8192 || height > 8192)
-    throw InputError(option, "", "expected WIDTHxHEIGHT with each in 1..8192, got '" + text + "'");
-}
 
 namespace {
 
@@ -67,7 +62,7 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", c->out, "Output folder (resumed when it holds this sweep)")
       ->capture_default_str();
   cmd->callback([c, &exitCode] {
-    parseSize("--size", c->size, c->options.width, c->options.height);
+    std::tie(c->options.width, c->options.height) = parseSize(c->size, 8192);
     c->options.out = c->out;
     c->options.axes.clear();
     for (const auto& v : c->vary) c->options.axes.push_back(parseAxis(v, false));

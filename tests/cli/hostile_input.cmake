@@ -75,3 +75,20 @@ endif()
 expect_failure(graph-out-unwritable EXPECT "--graph-out" "/nonexistent" ARGS render ${whitted} ${small} --out out.png --graph-out /nonexistent/g.dot)
 expect_failure(timings-in-proc EXPECT "--timings" "/proc/diptych-timings.json" "cannot be written" ARGS render ${whitted} ${small} --out out.png --timings /proc/diptych-timings.json)
 expect_failure(timings-is-folder EXPECT "--timings" "not a regular file" ARGS render ${whitted} ${small} --out out.png --timings ${WORK_DIR})
+
+# SDF objects: every distance evaluation walks every node and polygonisation evaluates the tree
+# (resolution + 1)^3 times at load, so both the node count and their product are bounded.
+set(sdf_children "{\"type\": \"sphere\", \"radius\": 0.1}")
+foreach(i RANGE 1 10)
+  set(sdf_children "{\"type\": \"union\", \"children\": [${sdf_children}, ${sdf_children}]}")
+endforeach()
+file(WRITE "${WORK_DIR}/sdf-nodes.json" "{\"objects\": [{\"type\": \"sdf\", \"shape\": ${sdf_children}}]}")
+expect_failure(sdf-too-many-nodes EXPECT "sdf-nodes.json" "more than 1024 nodes" ARGS render sdf-nodes.json)
+set(sdf_children "{\"type\": \"sphere\", \"radius\": 0.1}")
+foreach(i RANGE 1 6)
+  set(sdf_children "{\"type\": \"union\", \"children\": [${sdf_children}, ${sdf_children}]}")
+endforeach()
+file(WRITE "${WORK_DIR}/sdf-budget.json"
+     "{\"objects\": [{\"type\": \"sdf\", \"resolution\": 256, \"shape\": ${sdf_children}}]}")
+expect_failure(sdf-polygonise-budget EXPECT "sdf-budget.json" "resolution" "distance evaluations"
+               ARGS render sdf-budget.json)

@@ -74,3 +74,11 @@ expect_rejected(sweep-point-light EXPECT "--vary-light" "not directional"
                      --vary-light elevation=10,20)
 expect_rejected(sweep-nothing EXPECT "--vary" "nothing to sweep"
                 ARGS sweep "${scene}" --slot visibility=shadow_map)
+# Bounded work: the product of the axes, and the classification's pixel bands.
+expect_rejected(sweep-too-many-points EXPECT "--vary" "points (limit 10000)"
+                ARGS sweep "${scene}" --slot visibility=shadow_map --vary constant_bias=0.001:1:log200
+                     --vary resolution=64:8000:1)
+expect_rejected(sweep-huge-band EXPECT "--band" "width + height"
+                ARGS sweep "${scene}" --slot visibility=shadow_map --vary resolution=64 --band 2147483647)
+expect_rejected(sweep-negative-reach EXPECT "--reach"
+                ARGS sweep "${scene}" --slot visibility=shadow_map --vary resolution=64 --reach -1)

@@ -187,6 +187,13 @@ nlohmann::json runBiasStudy(const BiasStudyOptions& o) {
   if (o.light < 0 || o.light >= int(scene.lights.size()))
     throw InputError(o.scene, "lights", "the scene has no light " + std::to_string(o.light));
   const bool directional = scene.lights[o.light].type == LightType::Directional;
+  // The thresholds scale with tan(90 - elevation): 0 at 90 and unbounded at 0, so both ends are
+  // outside what a sweep of amounts can span.
+  if (directional && o.elevations.empty())
+    throw InputError("--elevations", "", "empty list (a directional light needs elevations)");
+  for (double e : o.elevations)
+    if (!(e > 0.0 && e < 90.0))
+      throw InputError("--elevations", fmt::format("{}", e), "each must be in (0, 90) degrees");
   // Every mode's sweep, built (and so validated) before the first is rendered.
   std::vector<std::pair<std::string, SweepOptions>> sweeps;
   for (const std::string& mode : o.modes) {

@@ -110,6 +110,13 @@ std::vector<nlohmann::json> cartesianProduct(const std::vector<SweepAxis>& input
     if (!keys.insert(a.key).second)
       throw InputError(a.light ? "--vary-light" : "--vary", a.text,
                        "key '" + a.key + "' is swept twice");
+  // Each axis is bounded; their product must be too (every point is checked before rendering).
+  double count = 1;
+  for (const SweepAxis& a : axes) count *= double(a.values.size());
+  if (count > double(kMaxSweepPoints))
+    throw InputError("--vary", "",
+                     fmt::format("the sweep has {:.0f} points (limit {}): sweep fewer values",
+                                 count, kMaxSweepPoints));
   std::vector<nlohmann::json> points = {nlohmann::json::object()};
   for (const SweepAxis& a : axes) {
     std::vector<nlohmann::json> next;

@@ -27,6 +27,8 @@ SweepAxis parseAxis(const std::string& text, bool light);
 
 // Every combination, light axes outermost (so points sharing a scene state are adjacent); each
 // point maps key -> value. Throws InputError when a key is swept twice.
+// At most kMaxSweepPoints points (InputError beyond): every point is compiled before rendering.
+inline constexpr long kMaxSweepPoints = 10000;
 std::vector<nlohmann::json> cartesianProduct(const std::vector<SweepAxis>& axes);
 
 }  // namespace diptych::cli

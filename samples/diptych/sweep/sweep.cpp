@@ -179,6 +179,11 @@ nlohmann::json runSweep(const SweepOptions& o) {
   if (o.axes.empty()) throw InputError("--vary", "", "nothing to sweep: give at least one --vary");
   if (o.frames < 1 || o.warmup < 0)
     throw InputError("--frames", "", "need at least one measured frame");
+  // The classification's band filters cost (2 band + 1) per pixel: bounded by the image.
+  if (o.band < 0 || o.band > o.width + o.height)
+    throw InputError("--band", std::to_string(o.band), "must be in 0..width + height");
+  if (o.reach < 0 || o.reach > o.width + o.height)
+    throw InputError("--reach", std::to_string(o.reach), "must be in 0..width + height");
   const SlotOverride base = parseSlotOverride(o.producer);
   const std::vector<nlohmann::json> points = cartesianProduct(o.axes);
   const Scene scene = loadScene(o.scene);
