@@ -1,7 +1,6 @@
 #include "samples/diptych/check_command.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -60,18 +59,6 @@ Recipe namedRecipe(const std::string& name) {
   if (name.find('/') == std::string::npos && name.find('.') == std::string::npos)
     return loadRecipe(std::string(DIPTYCH_SAMPLES_DIR) + "/graphs/" + name + ".json");
   return loadRecipe(name);
-}
-
-void progress(int done, int total, const std::string& what) {
-  if (isatty(fileno(stderr))) {
-    const int width = 30, filled = total ? width * done / total : width;
-    std::fprintf(stderr, "\r[%s%s] %d/%d %-40.40s", std::string(filled, '#').c_str(),
-                 std::string(width - filled, '.').c_str(), done, total, what.c_str());
-    if (done == total) std::fputc('\n', stderr);
-  } else {
-    std::fprintf(stderr, "check: %d/%d %s\n", done, total, what.c_str());
-  }
-  std::fflush(stderr);
 }
 
 struct NonFinite {
@@ -208,7 +195,7 @@ int runCheck(const CheckOptions& o) {
         anyShadowMap ? shadowMapDepthWarnings(scene, 2048) : std::vector<std::string>{};
     bool pass = probe.selfHits == 0;
     for (std::size_t r = 0; r < recipes.size(); ++r) {
-      progress(done, total, c.name + " / " + recipeNames[r]);
+      progress("check", done, total, c.name + " / " + recipeNames[r]);
       const std::string output = recipes[r].outputs.at(0);
       GraphRun run = runGraph(recipes[r], world, frame, {output}, 0, 1);
       Image image = run.outputs.at(output).toImage();
@@ -227,7 +214,7 @@ int runCheck(const CheckOptions& o) {
     allPass = allPass && pass;
     j["cases"].push_back(jc);
   }
-  progress(total, total, "done");
+  progress("check", total, total, "done");
   j["pass"] = allPass;
   const std::filesystem::path dir(o.out);
   writeText(dir / "check.json", j.dump(2));
