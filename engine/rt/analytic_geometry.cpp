@@ -13,15 +13,8 @@ const AnalyticInstance& shapeOf(void* userPtr) {
 
 void boundsCallback(const RTCBoundsFunctionArguments* args) {
   const AnalyticInstance& a = shapeOf(args->geometryUserPtr);
-  dvec3 lo, hi, wlo(std::numeric_limits<double>::max()), whi(-std::numeric_limits<double>::max());
-  analyticPartBounds(a, int(args->primID), lo, hi);
-  for (int corner = 0; corner < 8; ++corner) {
-    const dvec3 c((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
-                  (corner & 4) ? hi.z : lo.z);
-    const dvec3 w = dvec3(a.toWorld * glm::dvec4(c, 1.0));
-    wlo = glm::min(wlo, w);
-    whi = glm::max(whi, w);
-  }
+  dvec3 wlo, whi;
+  analyticPartWorldBounds(a, int(args->primID), wlo, whi);
   // Rounded outward, so the float box holds the double one; a flat part (disc) gets a box of
   // nonzero width from the rounding, which Embree's traversal needs no more than that.
   constexpr float kInf = std::numeric_limits<float>::infinity();

@@ -33,14 +33,9 @@ AnalyticInstance placeShape(const AnalyticShape& shape, std::shared_ptr<const Sd
   dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (int part = 0; part < analyticPartCount(a); ++part) {
     dvec3 plo, phi;
-    analyticPartBounds(a, part, plo, phi);
-    for (int corner = 0; corner < 8; ++corner) {
-      const dvec3 c((corner & 1) ? phi.x : plo.x, (corner & 2) ? phi.y : plo.y,
-                    (corner & 4) ? phi.z : plo.z);
-      const dvec3 w = dvec3(a.toWorld * glm::dvec4(c, 1.0));
-      lo = glm::min(lo, w);
-      hi = glm::max(hi, w);
-    }
+    analyticPartWorldBounds(a, part, plo, phi);
+    lo = glm::min(lo, plo);
+    hi = glm::max(hi, phi);
   }
   // Rounded outward so the float box contains the double one.
   constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -118,6 +113,20 @@ void analyticPartBounds(const AnalyticInstance& a, int part, dvec3& lo, dvec3& h
     return;
   }
   partBounds(a.shape, part, lo, hi);
+}
+
+void analyticPartWorldBounds(const AnalyticInstance& a, int part, dvec3& lo, dvec3& hi) {
+  dvec3 plo, phi;
+  analyticPartBounds(a, part, plo, phi);
+  lo = dvec3(std::numeric_limits<double>::max());
+  hi = dvec3(-std::numeric_limits<double>::max());
+  for (int corner = 0; corner < 8; ++corner) {
+    const dvec3 c((corner & 1) ? phi.x : plo.x, (corner & 2) ? phi.y : plo.y,
+                  (corner & 4) ? phi.z : plo.z);
+    const dvec3 w = dvec3(a.toWorld * glm::dvec4(c, 1.0));
+    lo = glm::min(lo, w);
+    hi = glm::max(hi, w);
+  }
 }
 
 vec3 sdfPosition(const AnalyticInstance& a, const dvec3& p) {

@@ -23,15 +23,15 @@ struct AnalyticInstance {
 struct WorldMesh {
   int instance = 0;
   int material = -1;
-  std::vector<vec3> positions;         // world space
-  std::vector<vec3> normals;           // world space, unit length (computed when the mesh has none)
-  std::vector<vec2> uvs;               // empty when the mesh has none
+  std::vector<vec3> positions;  // world space
+  std::vector<vec3> normals;    // world space, unit length (computed when the mesh has none)
+  std::vector<vec2> uvs;        // empty when the mesh has none
   // World-space unit tangent (xyz) and handedness w, bitangent = w cross(n, t); filled only for
   // meshes whose material has a normal map: TANGENT when the file has it (w negated for mirrored
   // instances), else generated from uv derivatives (computeVertexTangents).
   std::vector<vec4> tangents;
-  std::vector<std::uint32_t> indices;  // winding flipped for mirrored instances
-  bool mirrored = false;               // det(transform) < 0
+  std::vector<std::uint32_t> indices;        // winding flipped for mirrored instances
+  bool mirrored = false;                     // det(transform) < 0
   std::optional<AnalyticInstance> analytic;  // the exact surface, for ray tracers (see Mesh)
 };
 
@@ -61,6 +61,8 @@ vec3 sdfNormal(const AnalyticInstance& a, const dvec3& objectPoint);
 int analyticPartCount(const AnalyticInstance& a);
 // Object-space box of one part (the SDF's bounds for SDF objects).
 void analyticPartBounds(const AnalyticInstance& a, int part, dvec3& lo, dvec3& hi);
+// That box's 8 corners mapped by toWorld: the part's world-space box, in double.
+void analyticPartWorldBounds(const AnalyticInstance& a, int part, dvec3& lo, dvec3& hi);
 
 // Exact world position of a hit: p = (1-u-v) p0 + u p1 + v p2 with Embree's barycentric
 // convention (u weights vertex 1, v weights vertex 2), evaluated in one fixed order.

@@ -36,28 +36,13 @@ expect_failure(compare-bad-reference EXPECT "--reference" ARGS compare --referen
 
 # The report in a real browser: no console messages, the plot loaded, every table row there,
 # and a screenshot that is not blank. Debian chromium, installed by .ci/install-deps.
-find_program(CHROMIUM chromium)
-if(NOT CHROMIUM)
-  message(FATAL_ERROR "chromium not found: install Debian's chromium (bash .ci/install-deps)")
-endif()
-set(flags --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking
-          --disable-component-update --disable-sync --user-data-dir=${WORK_DIR}/chromium-profile)
-execute_process(COMMAND ${CHROMIUM} ${flags} --enable-logging=stderr --v=0 --virtual-time-budget=5000
-                        --dump-dom "file://${WORK_DIR}/cmp/report.html"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE dom ERROR_VARIABLE log TIMEOUT 120)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "chromium --dump-dom failed (${rc}):\n${log}")
-endif()
-string(REGEX MATCH "CONSOLE[^\n]*" console "${log}")
-if(console)
-  message(FATAL_ERROR "report.html logged to the console: ${console}")
-endif()
+chromium_dump_dom(cmp/report.html dom)
 string(FIND "${dom}" "data-plot-loaded=\"true\"" plot_loaded)
 string(FIND "${dom}" "data-rows=\"1\"" one_row)
 if(plot_loaded EQUAL -1 OR one_row EQUAL -1)
   message(FATAL_ERROR "report.html: plot not loaded or table rows missing:\n${dom}")
 endif()
-execute_process(COMMAND ${CHROMIUM} ${flags} --window-size=1200,1600 --screenshot=${WORK_DIR}/report.png
+execute_process(COMMAND ${CHROMIUM} ${CHROMIUM_FLAGS} --window-size=1200,1600 --screenshot=${WORK_DIR}/report.png
                         "file://${WORK_DIR}/cmp/report.html"
                 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET TIMEOUT 120)
 execute_process(COMMAND /usr/bin/python3 -c

@@ -21,22 +21,7 @@ if(NOT pos EQUAL -1)
 endif()
 expect_failure(shadow-bias-unknown-mode EXPECT "--modes" "sharp" ARGS shadow-bias --modes sharp)
 
-find_program(CHROMIUM chromium)
-if(NOT CHROMIUM)
-  message(FATAL_ERROR "chromium not found: install Debian's chromium (bash .ci/install-deps)")
-endif()
-set(flags --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking
-          --disable-component-update --disable-sync --user-data-dir=${WORK_DIR}/chromium-profile)
-execute_process(COMMAND ${CHROMIUM} ${flags} --enable-logging=stderr --v=0 --virtual-time-budget=5000
-                        --dump-dom "file://${WORK_DIR}/sb/report.html"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE dom ERROR_VARIABLE log TIMEOUT 120)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "chromium --dump-dom failed (${rc}):\n${log}")
-endif()
-string(REGEX MATCH "CONSOLE[^\n]*" console "${log}")
-if(console)
-  message(FATAL_ERROR "report.html logged to the console: ${console}")
-endif()
+chromium_dump_dom(sb/report.html dom)
 # 2 curves (one per elevation, one resolution) for each of none, constant and slope.
 string(FIND "${dom}" "data-plots-loaded=\"true\"" loaded)
 string(FIND "${dom}" "data-rows=\"6\"" rows)

@@ -1,4 +1,5 @@
-// The lecture's bump mapping (shaders/common/bump.glsl, engine/shading/bump.h) against a closed form.
+// The lecture's bump mapping (shaders/common/bump.glsl, engine/shading/bump.h) against a closed
+// form.
 //
 // A plane P(u, v) = (L u, L v, 0) displaced by k f_h(u, v) along n = +z, with
 // f_h = A sin(2 pi u) cos(2 pi v), is the surface Q = (L u, L v, k f_h); its exact normal is
