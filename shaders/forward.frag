@@ -60,5 +60,6 @@ void main() {
   }
   // Alpha: 1 for a replaced pixel; blended pixels keep the destination's alpha (0 + 1 * a).
   outColor = vec4(radiance, uBlend != 0 ? 0.0 : 1.0);
-  outTransmit = vec4(m.kt * m.transmitColor, 1.0);
+  // The transmission factor of the material's model (k_t M_T, or the glTF model's Fresnel-weighted one).
+  outTransmit = vec4(secondaryWeights(m, n, v).transmission, 1.0);
 }

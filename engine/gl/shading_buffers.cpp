@@ -48,7 +48,7 @@ int wrapCode(WrapMode w) {
   return 0;
 }
 
-// std430 layout of scene_shading.glsl's GpuMaterial: nine vec4.
+// std430 layout of scene_shading.glsl's GpuMaterial: nine vec4, then the glTF model's three.
 void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& out) {
   const shading::ShadingMaterial s = shading::toShadingMaterial(m);
   const bool checker = m.checker.has_value();
@@ -87,6 +87,9 @@ void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& 
                             m.alphaCutoff};
   out.insert(out.end(), std::begin(values), std::end(values));
   out.insert(out.end(), {lane.layer, lane.width, lane.height, lane.flags});
+  out.insert(out.end(), {s.baseColor.x, s.baseColor.y, s.baseColor.z, s.metallic,          //
+                         s.specularTint.x, s.specularTint.y, s.specularTint.z, s.roughness,  //
+                         float(s.model), s.transmission, s.specularWeight, 0.f});
 }
 
 void packLight(const Light& l, std::vector<float>& out) {

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "engine/rt/light_sampling.h"
+#include "engine/rt/path_pbr.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/scene/environment.h"
 #include "engine/shading/shading.h"
@@ -57,14 +58,15 @@ float phongExponent(const shading::ShadingMaterial& m) {
   return std::max(m.exponent, 0.f);
 }
 
-// Direct light from a scene light in the lecture's units: DIRECTA without k_a,
+// Direct light from a scene light per unit of S_i, by the material's model (the glTF model's
+// pi f n.l, or) DIRECTA without k_a,
 // k_d C max(0, n.l) + k_s d_i max(0, r.v)^e per unit of S_i. The lecture's lights deliver S_i
 // into this term with no 1/pi, so next-event estimation uses it (and not f cos) to make the
 // path-traced reference equal the Whitted one wherever there is no indirect light; the
 // energy-conserving BRDF above governs the bounces.
 vec3 lectureDirect(shading::ShadingMaterial m, const vec3& n, const vec3& v, const vec3& l) {
   m.ka = 0.f;  // ambient is what global illumination replaces
-  return shading::directTerm(m, n, v, l);
+  return shading::directResponse(m, n, v, l);
 }
 
 // Direction about `axis` with pdf (e + 1) / (2 pi) cos^e(alpha) per steradian: e = 0 is the
@@ -135,7 +137,8 @@ PathTracer::PathTracer(const Scene& scene, const WorldGeometry& world, const RtS
 vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
                            std::uint32_t& rays) const {
   const shading::ShadingMaterial& m = p.resolved;
-  if (!(m.kd > 0.f) && !(m.ks > 0.f)) return vec3(0.f);  // delta lobes only: NEE cannot hit
+  const bool lecture = m.model != shading::SHADING_MODEL_GLTF;
+  if (lecture && !(m.kd > 0.f) && !(m.ks > 0.f)) return vec3(0.f);  // delta lobes only
   const vec3& n = p.shadingNormal;
   const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
   vec3 sum(0.f);
@@ -190,37 +193,49 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
     out.radiance += throughput * (m.emission + nextEvent(p, v, rng, out.rays));
     if (depth >= settings_.maxDepth) break;
 
-    // Scatter: pick one lobe with probability weight / total and divide by it.
-    const LobeChoice choice = chooseLobe(m, rng.next());
-    if (!(choice.probability > 0.f)) break;
-    const vec3& n = p.shadingNormal;
-    const vec2 u = rng.next2();
     vec3 direction, weight;
-    switch (choice.lobe) {
-      case kDiffuse:  // f cos / pdf = (k_d C / pi) cos / (cos / pi)
-        direction = sampleCosine(n, u);
-        weight = m.kd * m.color;
-        break;
-      case kGlossy: {  // f cos / pdf = k_s d (e + 2) / (e + 1) cos(theta): cos^e cancels
-        const float e = phongExponent(m);
-        direction = samplePowerCosine(glm::normalize(shading::reflectAbout(v, n)), e, u);
-        weight = m.ks * m.specularColor *
-                 ((e + 2.f) / (e + 1.f) * std::max(0.f, glm::dot(n, direction)));
-        break;
+    bool smoothLobe = true;
+    if (m.model == shading::SHADING_MODEL_GLTF) {  // the glTF model's own sampling (path_pbr.h)
+      const float ior = scene_.material(p.material).ior;
+      const float uLobe = rng.next();
+      const PbrScatter s = samplePbr(m, p.shadingNormal, v, p.frontFacing ? 1.f / ior : ior,
+                                     uLobe, rng.next2());
+      if (!s.valid) break;
+      direction = s.direction;
+      weight = s.weight;
+      smoothLobe = !s.delta;
+    } else {
+      // Scatter: pick one lobe with probability weight / total and divide by it.
+      const LobeChoice choice = chooseLobe(m, rng.next());
+      if (!(choice.probability > 0.f)) break;
+      const vec3& n = p.shadingNormal;
+      const vec2 u = rng.next2();
+      switch (choice.lobe) {
+        case kDiffuse:  // f cos / pdf = (k_d C / pi) cos / (cos / pi)
+          direction = sampleCosine(n, u);
+          weight = m.kd * m.color;
+          break;
+        case kGlossy: {  // f cos / pdf = k_s d (e + 2) / (e + 1) cos(theta): cos^e cancels
+          const float e = phongExponent(m);
+          direction = samplePowerCosine(glm::normalize(shading::reflectAbout(v, n)), e, u);
+          weight = m.ks * m.specularColor *
+                   ((e + 2.f) / (e + 1.f) * std::max(0.f, glm::dot(n, direction)));
+          break;
+        }
+        case kMirror:
+          direction = glm::normalize(shading::reflectAbout(v, n));
+          weight = m.kps * m.mirrorColor;
+          break;
+        default: {  // as in the Whitted tracer: air outside, ior inside, told apart by the face
+          const float ior = scene_.material(p.material).ior;
+          direction = shading::refractLecture(v, n, p.frontFacing ? 1.f / ior : ior).t;
+          weight = m.kt * m.transmitColor;
+          break;
+        }
       }
-      case kMirror:
-        direction = glm::normalize(shading::reflectAbout(v, n));
-        weight = m.kps * m.mirrorColor;
-        break;
-      default: {  // as in the Whitted tracer: air outside, ior inside, told apart by the face
-        const float ior = scene_.material(p.material).ior;
-        direction = shading::refractLecture(v, n, p.frontFacing ? 1.f / ior : ior).t;
-        weight = m.kt * m.transmitColor;
-        break;
-      }
+      weight /= choice.probability;
+      smoothLobe = choice.lobe == kDiffuse || choice.lobe == kGlossy;
     }
-    weight /= choice.probability;
-    const bool smoothLobe = choice.lobe == kDiffuse || choice.lobe == kGlossy;
     // A smooth lobe is sampled about the shading normal and may point into the geometry: no
     // light arrives from there, and tracing it would leak through the surface.
     if (smoothLobe && !(glm::dot(direction, p.geometricNormal) > 0.f)) break;

@@ -8,6 +8,7 @@
 #include "engine/core/error.h"
 #include "engine/rt/ray_offset.h"
 #include "engine/scene/gltf_pbr.h"
+#include "engine/shading/bump.h"
 #include "engine/shading/texture_sampling.h"
 
 namespace diptych {
@@ -19,9 +20,11 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
   };
   if (material.checker) {
     m.color = checkerColor(*material.checker, uv);
+    m.baseColor = m.color;
   } else if (const Texture* t = texture(material.colorTexture)) {
     const vec4 c = sampleTexture(*t, uv);
     m.color *= vec3(c.x, c.y, c.z);
+    m.baseColor *= vec3(c.x, c.y, c.z);
     m.alpha *= c.w;
   }
   if (const Texture* t = texture(material.emissionTexture)) {
@@ -46,6 +49,8 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
     m.mirrorColor = k.mirrorColor;
     m.kt = k.kt;
     m.transmitColor = k.transmitColor;
+    m.metallic = glm::clamp(material.metallicFactor * mr.z, 0.f, 1.f);  // the glTF model's inputs
+    m.roughness = glm::clamp(material.roughnessFactor * mr.y, 0.f, 1.f);
   }
   if (const Texture* t = texture(material.occlusionTexture)) {
     // glTF: occlusion darkens indirect light only; the lecture's ambient k_a is that term.
@@ -161,6 +166,12 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, co
       !mesh.tangents.empty())
     n = normalMapped(scene.textures[material.normalTexture], material.normalScale, n,
                      interpolateTangent(mesh, hit.primitive, hit.u, hit.v), s.uv);
+  if (material.bump && !mesh.uvs.empty()) {  // the lecture's bump mapping (engine/shading/bump.h)
+    const SurfaceTangents t = triangleTangents(
+        mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]], mesh.uvs[tri[0]],
+        mesh.uvs[tri[1]], mesh.uvs[tri[2]]);
+    n = bumpMapNormal(scene, *material.bump, s.uv, t.tu, t.tv, n);
+  }
   s.shadingNormal = s.frontFacing ? n : -n;  // mapped first: the back sees the same surface
   s.resolved = resolveMaterial(scene, material, s.uv);
   return s;

@@ -46,9 +46,11 @@ vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth,
                           std::uint32_t seed) const {
   const shading::ShadingMaterial& m = p.resolved;
   vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + direct(p, v, seed);
-  if (m.kt > 0.f) rad += m.kt * m.transmitColor * transmitted(p, v, depth, seed);
-  if (m.kps > 0.f) rad += m.kps * m.mirrorColor * reflected(p, v, depth, seed);
-  return rad;
+  // k_t and k_ps say whether the signals exist (as for the hybrid's rt_reflection and
+  // rt_transmission); secondaryTerms weights them by the material's model.
+  const vec3 trans = m.kt > 0.f ? transmitted(p, v, depth, seed) : vec3(0.f);
+  const vec3 refl = m.kps > 0.f ? reflected(p, v, depth, seed) : vec3(0.f);
+  return rad + shading::secondaryTerms(m, p.shadingNormal, v, refl, trans);
 }
 
 vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth,

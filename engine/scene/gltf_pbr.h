@@ -3,7 +3,11 @@
 // "glTF material mapping"; docs/materials.md). One function, used by the glTF loader for the
 // material's constants and by the CPU surface code per hit when a metallicRoughnessTexture is
 // sampled, so both give the same coefficients for the same inputs.
+#include <optional>
+#include <string>
+
 #include "engine/core/math.h"
+#include "engine/scene/scene.h"
 
 namespace diptych {
 
@@ -21,5 +25,19 @@ struct LectureCoefficients {
 // here); ior of the dielectric.
 LectureCoefficients gltfPbrToLecture(vec3 base, float metallic, float roughness, float transmission,
                                      float ior);
+
+// The reverse, for `--shading gltf` on a lecture material: fills the metallic-roughness inputs
+// (baseColorFactor, metallicFactor, roughnessFactor, transmissionFactor) from the lecture's
+// coefficients. A coarse rule, documented in docs/materials.md: the mirror share
+// k_ps / (k_ps + k_d) becomes metallic, roughness inverts e = 2 / alpha^2 - 2 (0 for mirrors),
+// k_t becomes transmission.
+void lectureToGltfPbr(Material& m);
+
+// "lecture" or "gltf"; nullopt for anything else.
+std::optional<ShadingModel> parseShadingModel(const std::string& name);
+
+// --shading: every material is shaded by `model`. glTF materials keep their lecture mapping for
+// the lecture model; lecture materials get lectureToGltfPbr for the glTF model.
+void forceShadingModel(Scene& scene, ShadingModel model);
 
 }  // namespace diptych

@@ -6,6 +6,7 @@
 #include "engine/core/input_file.h"
 #include "engine/core/json_text.h"
 
+#include "engine/scene/gltf_pbr.h"
 #include "engine/scene/json_reader.h"
 #include "engine/scene/json_sdf.h"
 #include "engine/scene/load.h"
@@ -120,7 +121,30 @@ mat4 readTransform(JsonObject& parent, const Context& ctx) {
   return m;
 }
 
-Material readMaterial(JsonObject o, const std::string& name) {
+// "bump": {"texture": FILE | "amplitude": A, "frequency": [fu, fv], "k", "delta"}: the lecture's
+// height field, a greyscale image (first channel, read linear) or the procedural sinusoid.
+BumpMap readBump(JsonObject o, const Context& ctx, Scene& scene) {
+  BumpMap b;
+  if (auto file = o.string("texture")) {
+    if (o.has("amplitude") || o.has("frequency"))
+      o.fail("texture", "give either a texture or amplitude/frequency, not both");
+    Texture t;
+    t.name = *file;
+    t.image = readImageAt(ctx, o, "texture", *file);
+    b.texture = int(scene.textures.size());
+    scene.textures.push_back(std::move(t));
+  } else {
+    b.amplitude = o.number("amplitude", b.amplitude);
+    if (const json* f = o.find("frequency")) b.frequency = toVector2(*f, o.pathOf("frequency"), ctx.file);
+  }
+  b.k = o.number("k", b.k);
+  b.delta = positive(o, "delta", b.delta);
+  if (b.delta > 0.25f) o.fail("delta", "must be at most 0.25 (uv units)");
+  o.rejectUnknownKeys();
+  return b;
+}
+
+Material readMaterial(JsonObject o, const std::string& name, const Context& ctx, Scene& scene) {
   Material m;
   m.name = name;
   m.color = o.vector3("color", m.color);
@@ -138,6 +162,33 @@ Material readMaterial(JsonObject o, const std::string& name) {
   m.alpha = o.number("alpha", m.alpha);
   m.doubleSided = o.boolean("double_sided", m.doubleSided);
   m.castsShadows = o.boolean("casts_shadows", m.castsShadows);
+  // The glTF model's inputs (docs/materials.md): "model": "gltf" shades with pbr.glsl.
+  if (auto model = o.string("model")) {
+    const auto parsed = parseShadingModel(*model);
+    if (!parsed) o.fail("model", "expected lecture or gltf, got '" + *model + "'");
+    m.model = *parsed;
+  }
+  m.baseColorFactor = vec4(o.vector3("base_color", vec3(m.baseColorFactor)), m.alpha);
+  m.metallicFactor = o.number("metallic", m.metallicFactor);
+  m.roughnessFactor = o.number("roughness", m.roughnessFactor);
+  m.transmissionFactor = o.number("transmission", m.transmissionFactor);
+  for (const char* key : {"metallic", "roughness", "transmission"})
+    if (o.has(key) && !(o.number(key, 0.f) >= 0.f && o.number(key, 0.f) <= 1.f))
+      o.fail(key, "must be in [0, 1]");
+  if (m.model == ShadingModel::Gltf) {
+    // As for a glTF file: the lecture coefficients from the glTF mapping, for --shading lecture
+    // and for k_ps / k_t, which say whether the reflection / transmission signals exist.
+    for (const char* key : {"color", "ka", "kd", "ks", "exponent", "specular_color", "kps",
+                            "mirror_color", "kt", "transmit_color"})
+      if (o.has(key)) o.fail(key, "is a lecture-model key; this material has \"model\": \"gltf\"");
+    const LectureCoefficients k =
+        gltfPbrToLecture(vec3(m.baseColorFactor), m.metallicFactor, m.roughnessFactor,
+                         m.transmissionFactor, m.ior);
+    m.color = k.color, m.kd = k.kd, m.ks = k.ks, m.exponent = k.exponent;
+    m.specularColor = k.specularColor, m.kps = k.kps, m.mirrorColor = k.mirrorColor;
+    m.kt = k.kt, m.transmitColor = k.transmitColor;
+  }
+  if (auto bump = o.object("bump")) m.bump = readBump(std::move(*bump), ctx, scene);
   if (auto c = o.object("checker")) {
     Checker checker;
     checker.colorA = c->vector3("a", checker.colorA);
@@ -488,7 +539,7 @@ Scene loadJsonSceneUnvalidated(const std::filesystem::path& path) {
     for (auto it = raw.begin(); it != raw.end(); ++it) {
       auto material = materials->object(it.key());
       ctx.materialIndex[it.key()] = int(scene.materials.size());
-      scene.materials.push_back(readMaterial(std::move(*material), it.key()));
+      scene.materials.push_back(readMaterial(std::move(*material), it.key(), ctx, scene));
     }
   }
   if (auto camera = top.object("camera")) {

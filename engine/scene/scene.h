@@ -77,6 +77,22 @@ struct Checker {
 // L = M_E + A_G + sum_i V_i S_i [k_a C + k_d C max(0,n.l) + k_s d_i max(0,r.v)^e]
 //       + k_ps M_PS L_refl + k_t M_T L_trans.
 // d_i is the specular colour (specularColor), white unless authored.
+// The lecture's bump mapping (Tema 5, "Perturbación de la normal"): a height field f_h over uv,
+// either a greyscale texture (its first channel) or the procedural sinusoid
+// f_h = amplitude sin(2 pi frequency.x u) cos(2 pi frequency.y v); d_u, d_v by central
+// differences with step `delta` (uv units), scaled by k (engine/shading/bump.h).
+struct BumpMap {
+  int texture = -1;  // index into Scene::textures; -1: the procedural sinusoid
+  float amplitude = 0.f;
+  vec2 frequency{1.f};
+  float k = 1.f;
+  float delta = 1.f / 1024.f;
+};
+
+// Which shared model shades a material (shaders/common/shading.glsl dispatches on it): the
+// lecture's (JSON default) or glTF 2.0 metallic-roughness (glTF default; pbr.glsl).
+enum class ShadingModel { Lecture, Gltf };
+
 struct Material {
   std::string name;
   vec3 color{0.8f};  // C
@@ -100,6 +116,7 @@ struct Material {
   int colorTexture = -1;           // multiplies C (and alpha); index into Scene::textures
   int emissionTexture = -1;        // multiplies M_E
   std::optional<Checker> checker;  // replaces C when present
+  ShadingModel model = ShadingModel::Lecture;
   bool fromGltfPbr = false;  // true when mapped from metallic-roughness (see docs/scene-format.md)
   // glTF metallic-roughness inputs, kept so that textured materials can be mapped per hit
   // (gltfPbrAt in engine/scene/gltf_pbr.h) instead of from one averaged constant.
@@ -110,6 +127,9 @@ struct Material {
   float occlusionStrength = 1.f;
   int normalTexture = -1;  // linear tangent-space normal map, (2 t - 1) * (scale, scale, 1)
   float normalScale = 1.f;
+  std::optional<BumpMap> bump;  // JSON "bump" key; perturbs the shading normal (CPU side)
+  float specularWeight = 1.f;  // KHR_materials_specular specularFactor
+  vec3 specularTint{1.f};      // KHR_materials_specular specularColorFactor
   bool castsShadows = true;
 };
 

@@ -14,6 +14,7 @@ using glm::abs;
 using glm::clamp;
 using glm::cross;
 using glm::dot;
+using glm::exp2;
 using glm::floor;
 using glm::inversesqrt;
 using glm::length;
@@ -37,6 +38,8 @@ static_assert(LIGHT_POINT == int(LightType::Point) &&
               LIGHT_SPOT == int(LightType::Spot) && LIGHT_QUAD_AREA == int(LightType::QuadArea) &&
               LIGHT_DISC_AREA == int(LightType::DiscArea) &&
               LIGHT_SPHERE_AREA == int(LightType::SphereArea));
+static_assert(SHADING_MODEL_LECTURE == int(ShadingModel::Lecture) &&
+              SHADING_MODEL_GLTF == int(ShadingModel::Gltf));
 
 // Flattens a scene light (cone cosines and emitting area precomputed).
 ShadingLight toShadingLight(const Light& light);

@@ -26,13 +26,14 @@
 #include "samples/diptych/compare/runner.h"
 #include "samples/diptych/compare/variants.h"
 #include "samples/diptych/parse_size.h"
+#include "samples/diptych/shading_option.h"
 
 namespace diptych::cli {
 namespace {
 
 struct CompareOptions {
   std::string scene, variants, reference = "whitted", out = "out", size = "640x480",
-                               metric = "flip_mean", context = "auto";
+                               metric = "flip_mean", context = "auto", shading;
   int frames = 3, warmup = 1;
 };
 
@@ -104,6 +105,8 @@ std::string cacheKey(const Scene& scene, const ReferenceSpec& ref, const FrameSe
   std::string key = std::to_string(std::hash<std::string>{}(fileBytes("/proc/self/exe")));
   for (const std::string& file : scene.sourceFiles)
     key += "|" + file + ":" + std::to_string(std::hash<std::string>{}(fileBytes(file)));
+  key += "|models:";  // --shading changes the reference without changing a file
+  for (const Material& m : scene.materials) key += std::to_string(int(m.model));
   key += "|" + ref.recipe().passes[0].params.dump() + "|" + ref.passType + "|" +
          std::to_string(frame.width) + "x" + std::to_string(frame.height);
   return fmt::format("{:016x}", std::hash<std::string>{}(key));
@@ -122,7 +125,9 @@ void runCompare(const CompareOptions& o) {
   std::vector<Recipe> recipes;
   for (const Variant& v : variants) recipes.push_back(v.build(registry));  // errors before any work
 
+  checkShadingOption(o.shading);
   Scene scene = loadScene(sceneFile);
+  applyShadingOption(scene, o.shading);
   // The geometry axis joins the defaults where the scene has analytic quadrics.
   const bool analytic = std::any_of(scene.meshes.begin(), scene.meshes.end(),
                                     [](const Mesh& m) { return bool(m.analytic); });
@@ -314,6 +319,7 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
   cmd->add_option("--pareto-metric", o->metric, "Error metric of the plot and Pareto front")
       ->capture_default_str();
+  addShadingOption(cmd, o->shading);
   cmd->add_option("--context", o->context, "OpenGL context: auto, osmesa, egl or glfw")
       ->capture_default_str();
   cmd->callback([o, &exitCode] {

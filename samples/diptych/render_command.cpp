@@ -30,6 +30,7 @@
 #include "passes/registry.h"
 #include "passes/slots.h"
 #include "samples/diptych/parse_size.h"
+#include "samples/diptych/shading_option.h"
 
 namespace diptych::cli {
 namespace {
@@ -42,6 +43,7 @@ struct RenderOptions {
   int frames = 5, warmup = 2;
   std::string exposure = "0", tonemap = "clamp";
   LightingOptions lighting;
+  std::string shading;  // --shading lecture|gltf (empty: each material its own)
   bool verbose = false;
 };
 
@@ -144,6 +146,7 @@ void runRender(const RenderOptions& o) {
           "expected 'auto' or a number of stops in [-64, 64], got '" + o.exposure + "'");
     fixedExposure = ev;
   }
+  checkShadingOption(o.shading);
   checkWritable("--out", o.out);
   if (!o.graphOut.empty()) checkWritable("--graph-out", o.graphOut);
   if (!o.timingsOut.empty()) checkWritable("--timings", o.timingsOut);
@@ -152,6 +155,7 @@ void runRender(const RenderOptions& o) {
   for (const std::string& w : scene.warnings) log().warn("{}", w);
   const Camera camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds());
   if (auto line = applyLighting(scene, camera, o.lighting)) log().warn("{}", *line);
+  applyShadingOption(scene, o.shading);
   Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);
   for (const std::string& text : o.slots)
     applySlotOverride(recipe, parseSlotOverride(text), builtinPasses());
@@ -253,6 +257,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--tonemap", options->tonemap,
                   "PNG/JPEG tone map after exposure: clamp, reinhard or aces (docs/materials.md)")
       ->capture_default_str();
+  addShadingOption(cmd, options->shading);
   cmd->add_option("--env", options->lighting.environmentFile,
                   "Equirect environment image (.hdr/.exr); replaces the scene's (see "
                   "docs/materials.md, default lighting)");

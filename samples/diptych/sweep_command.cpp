@@ -5,6 +5,7 @@
 
 #include "engine/core/error.h"
 #include "samples/diptych/parse_size.h"
+#include "samples/diptych/shading_option.h"
 #include "samples/diptych/sweep/sweep.h"
 
 namespace diptych::cli {
@@ -51,6 +52,7 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
                   "elevation=... | azimuth=... (degrees; a directional light)");
   cmd->add_option("--light", c->options.light, "The light classified and moved")
       ->capture_default_str();
+  addShadingOption(cmd, c->options.shading);
   cmd->add_option("--receiver", c->options.receiver, "Measure only this object's pixels");
   cmd->add_option("--band", c->options.band, "Boundary band, px")->capture_default_str();
   cmd->add_option("--reach", c->options.reach, "Peter-panning reach, px (farther: leak)")

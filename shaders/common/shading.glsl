@@ -17,8 +17,9 @@
 // the lecture itself says a source that does not illuminate the point adds nothing.
 //
 // ---- Subset rules: this file must stay valid GLSL 4.50 AND valid C++20 through GLM ----
-//  1. No #version, no #include, no uniforms/in/out variables: the including program adds
-//     those. An include guard (#ifndef) is fine in both languages.
+//  1. No #version, no uniforms/in/out variables: the including program adds those. An include
+//     guard (#ifndef) is fine in both languages. #include only of a sibling in shaders/common by
+//     its bare name ("pbr.glsl"): the GL loader and the C++ compiler both look beside the file.
 //  2. Float literals carry the f suffix (1.0f): a plain 1.0 is a double in C++ and breaks
 //     GLM's template deduction (max(0.0, x) does not compile).
 //  3. No swizzles at all (GLM_FORCE_XYZW_ONLY); use .x .y .z members and constructors.
@@ -51,6 +52,11 @@ const int LIGHT_QUAD_AREA = 3;
 const int LIGHT_DISC_AREA = 4;
 const int LIGHT_SPHERE_AREA = 5;
 
+// Shading models (ShadingMaterial::model): the lecture's, and glTF 2.0 metallic-roughness
+// (pbr.glsl). The values of diptych::ShadingModel.
+const int SHADING_MODEL_LECTURE = 0;
+const int SHADING_MODEL_GLTF = 1;
+
 const float SHADING_FLT_MAX = 3.402823466e+38f;
 const float SHADING_PI = 3.14159265358979f;
 
@@ -69,6 +75,15 @@ struct ShadingMaterial {
   vec3 emission;       // M_E, radiance
   float ior;           // index of refraction of the inside
   float alpha;         // coverage
+  // SHADING_MODEL_GLTF inputs (pbr.glsl); the lecture's fields above are then unused but for
+  // emission, ior and alpha. Zero-initialised on the C++ side = the lecture model.
+  int model;             // SHADING_MODEL_*
+  vec3 baseColor;        // glTF baseColor (linear RGB), texture applied
+  float metallic;        // [0, 1]
+  float roughness;       // perceptual roughness [0, 1]; GGX alpha = roughness^2
+  float transmission;    // KHR_materials_transmission factor
+  float specularWeight;  // KHR_materials_specular "specular" (1 without the extension)
+  vec3 specularTint;     // KHR_materials_specular "specularColor" (1 without the extension)
 };
 
 // One light, flattened from diptych::Light.
@@ -89,6 +104,12 @@ struct LightSample {
   vec3 l;          // unit, toward the light; zero when undefined (point on the light)
   float distance;  // to the light's position; SHADING_FLT_MAX for directional lights
   vec3 radiance;   // S_i, finite, >= 0
+};
+
+// Factors of the reflection and transmission signals (secondaryTerms).
+struct SecondaryWeights {
+  vec3 reflection;
+  vec3 transmission;
 };
 
 struct Refraction {
@@ -238,21 +259,42 @@ SHADING_FN vec3 directTerm(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
   return m.ka * m.color + m.kd * m.color * nl + m.ks * m.specularColor * glossy;
 }
 
-// One summand of the lecture's sum: V_i S_i L_dir,i.
+#include "pbr.glsl"
+
+// The material's response to one light per unit of S_i: the lecture's DIRECTA or the glTF
+// BRDF's pi f(l, v) max(0, n.l) (pbr.glsl), by m.model. The one place the model is chosen for
+// direct light; the path tracer's next-event estimation calls it too.
+SHADING_FN vec3 directResponse(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
+  if (m.model == SHADING_MODEL_GLTF) return pbrDirect(m, n, v, l);
+  return directTerm(m, n, v, l);
+}
+
+// One summand of the lecture's sum: V_i S_i L_dir,i (L_dir,i by the material's model).
 SHADING_FN vec3 lightContribution(ShadingMaterial m, vec3 n, vec3 v, LightSample s,
                                   float visibility) {
-  vec3 lit = saturate01(visibility) * s.radiance * directTerm(m, n, v, s.l);
+  vec3 lit = saturate01(visibility) * s.radiance * directResponse(m, n, v, s.l);
   return min(lit, vec3(SHADING_FLT_MAX));  // S_i near FLT_MAX times a factor > 1 saturates
 }
 
-// M_E + A_G: the terms that do not depend on any light.
+// M_E + A_G: the terms that do not depend on any light (the same in both models: A_G is the
+// lecture's global ambient radiance, added as it is).
 SHADING_FN vec3 emittedAndAmbient(ShadingMaterial m, vec3 ambientGlobal) {
   return m.emission + ambientGlobal;
 }
 
-// k_ps M_PS L_refl + k_t M_T L_trans, given the radiance arriving along r and t.
-SHADING_FN vec3 secondaryTerms(ShadingMaterial m, vec3 reflected, vec3 transmitted) {
-  return m.kps * m.mirrorColor * reflected + m.kt * m.transmitColor * transmitted;
+// The factors of the reflected and transmitted radiance: the lecture's k_ps M_PS and k_t M_T,
+// or the glTF model's Fresnel-weighted ones (pbrSecondaryWeights). n, v as for lightContribution.
+SHADING_FN SecondaryWeights secondaryWeights(ShadingMaterial m, vec3 n, vec3 v) {
+  if (m.model == SHADING_MODEL_GLTF) return pbrSecondaryWeights(m, n, v);
+  return SecondaryWeights(m.kps * m.mirrorColor, m.kt * m.transmitColor);
+}
+
+// k_ps M_PS L_refl + k_t M_T L_trans (lecture), given the radiance arriving along the mirror
+// direction and the refracted one; the glTF model weights them by its own terms.
+SHADING_FN vec3 secondaryTerms(ShadingMaterial m, vec3 n, vec3 v, vec3 reflected,
+                               vec3 transmitted) {
+  SecondaryWeights w = secondaryWeights(m, n, v);
+  return min(w.reflection * reflected + w.transmission * transmitted, vec3(SHADING_FLT_MAX));
 }
 
 #endif  // DIPTYCH_SHADING_GLSL

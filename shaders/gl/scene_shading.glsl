@@ -12,6 +12,9 @@ struct GpuMaterial {
   vec4 checkerAScale;   // checker colour A, scale
   vec4 checkerBCutoff;  // checker colour B, alpha cutoff
   vec4 alphaMask;       // layer of uSceneAlphaMasks (-1: none), width, height, flags
+  vec4 baseMetallic;    // glTF model: base colour, metallic
+  vec4 tintRoughness;   // KHR_materials_specular colour, roughness
+  vec4 modelTransSpec;  // SHADING_MODEL_*, transmission, specular weight, unused
 };
 layout(std430, binding = BINDING_SCENE_MATERIALS) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
 layout(std430, binding = BINDING_SCENE_INSTANCES) readonly buffer SceneInstances { ivec2 sceneInstances[]; };
@@ -51,6 +54,13 @@ ShadingMaterial sceneMaterial(int m, vec2 uv) {
   s.transmitColor = g.transmitAlpha.xyz;
   s.alpha = g.transmitAlpha.w;
   s.emission = g.emissionChecker.xyz;
+  s.model = int(g.modelTransSpec.x + 0.5);
+  s.baseColor = g.emissionChecker.w > 0.5 ? s.color : g.baseMetallic.xyz;
+  s.metallic = g.baseMetallic.w;
+  s.roughness = g.tintRoughness.w;
+  s.specularTint = g.tintRoughness.xyz;
+  s.transmission = g.modelTransSpec.y;
+  s.specularWeight = g.modelTransSpec.z;
   return s;
 }
 

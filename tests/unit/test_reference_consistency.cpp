@@ -11,11 +11,13 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <optional>
 
 #include "engine/gl/context.h"
 #include "engine/graph/executor.h"
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
+#include "engine/scene/gltf_pbr.h"
 #include "engine/scene/load.h"
 #include "passes/common/hits_texel.h"
 #include "passes/registry.h"
@@ -32,8 +34,11 @@ struct Agreement {
   int analyticPixels = 0;  // pixels whose Whitted primary hit is an analytic surface
 };
 
-Agreement compareHybridWithReference(const char* sceneFile, int w, int h) {
-  const Scene scene = loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / sceneFile);
+// `model`: when set, every material is shaded by it (as --shading does).
+Agreement compareHybridWithReference(const char* sceneFile, int w, int h,
+                                     std::optional<ShadingModel> model = std::nullopt) {
+  Scene scene = loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / sceneFile);
+  if (model) forceShadingModel(scene, *model);
   Recipe recipe = defaultHybridRecipe();
   recipe.passes.push_back({.name = "reference", .type = "rt_whitted", .place = "test"});
   const FrameSettings frame{w, h, scene.camera};
@@ -98,4 +103,17 @@ TEST(ReferenceConsistency, AllExactHybridMatchesWhittedOnCornell) {
               100 * a.mismatchFraction);
   EXPECT_LT(a.mismatchFraction, 1e-3);
   EXPECT_LT(a.relativeRmse, 1e-4);
+}
+
+// The same with every material shaded by the glTF model (pbr.glsl; the lecture's coefficients
+// mapped by lectureToGltfPbr): Fresnel-weighted reflection and transmission signals, GGX lights.
+// Both sides call the same dispatch points, so the bound is the lecture's.
+TEST(ReferenceConsistency, AllExactHybridMatchesWhittedUnderTheGltfModel) {
+  for (const char* file : {"whitted.json", "cornell.json"}) {
+    const Agreement a = compareHybridWithReference(file, 160, 120, ShadingModel::Gltf);
+    std::printf("%s, glTF model: relative RMSE %.3g, primary mismatch %.4f%%\n", file,
+                a.relativeRmse, 100 * a.mismatchFraction);
+    EXPECT_LT(a.mismatchFraction, 2e-3) << file;
+    EXPECT_LT(a.relativeRmse, 1e-4) << file;
+  }
 }

@@ -188,6 +188,7 @@ Material convertMaterial(const tinygltf::Material& src, const std::string& place
   Material m;
   m.name = src.name.empty() ? place : src.name;
   m.fromGltfPbr = true;
+  m.model = ShadingModel::Gltf;
 
   const vec4 base = pbr.baseColorFactor.size() >= 4
                         ? vec4(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]),
@@ -207,6 +208,10 @@ Material convertMaterial(const tinygltf::Material& src, const std::string& place
     m.thickness = valueNumber(*ext, "thicknessFactor", 0.f);
     m.attenuationColor = valueVec3(ext->Get("attenuationColor"), vec3(1.f));
     m.attenuationDistance = valueNumber(*ext, "attenuationDistance", 0.f);
+  }
+  if (const tinygltf::Value* ext = extension(src, "KHR_materials_specular")) {
+    m.specularWeight = std::clamp(valueNumber(*ext, "specularFactor", 1.f), 0.f, 1.f);
+    m.specularTint = glm::max(valueVec3(ext->Get("specularColorFactor"), vec3(1.f)), vec3(0.f));
   }
   float emissiveStrength = 1.f;
   if (const tinygltf::Value* ext = extension(src, "KHR_materials_emissive_strength"))

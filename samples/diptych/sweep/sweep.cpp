@@ -1,5 +1,7 @@
 #include "samples/diptych/sweep/sweep.h"
 
+#include "samples/diptych/shading_option.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -186,7 +188,9 @@ nlohmann::json runSweep(const SweepOptions& o) {
     throw InputError("--reach", std::to_string(o.reach), "must be in 0..width + height");
   const SlotOverride base = parseSlotOverride(o.producer);
   const std::vector<nlohmann::json> points = cartesianProduct(o.axes);
-  const Scene scene = loadScene(o.scene);
+  checkShadingOption(o.shading);
+  Scene scene = loadScene(o.scene);
+  applyShadingOption(scene, o.shading);
   const FrameSettings frame{o.width, o.height,
                             scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
 

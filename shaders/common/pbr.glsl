@@ -1,0 +1,126 @@
+// pbr.glsl: the glTF 2.0 metallic-roughness BRDF (glTF 2.0 specification, Appendix B "BRDF
+// Implementation"), with KHR_materials_ior, KHR_materials_specular and
+// KHR_materials_transmission, written once for GLSL 4.50 and C++ under the subset rules at the
+// top of shading.glsl, which includes this file after ShadingMaterial and its helpers.
+//
+//   f = mix(dielectric, metal, metallic)
+//   metal      = F(base) D V                                     conductor Fresnel
+//   dielectric = (1 - w max(F_d)) c_diff / pi + w F_d D V        KHR_materials_specular fresnel_mix
+//   c_diff     = base (1 - transmission)                         transmission replaces diffuse
+//   F(f0)      = f0 + (1 - f0) (1 - |v.h|)^5                      Schlick
+//   F_d        = F(min(((ior - 1) / (ior + 1))^2 specularTint, 1)), w = specularWeight
+//   D          = a^2 / (pi ((n.h)^2 (a^2 - 1) + 1)^2)             GGX / Trowbridge-Reitz, a = r^2
+//   V          = 0.5 / (n.l sqrt((n.v)^2 (1 - a^2) + a^2) + n.v sqrt((n.l)^2 (1 - a^2) + a^2))
+//                                                               Smith height-correlated G / (4 n.l n.v)
+// Units: the lecture's S_i is the radiance a white Lambertian surface facing the light reflects,
+// E / pi (docs/materials.md), so one light contributes f E n.l = pi f n.l S_i: pbrDirect returns
+// pi f n.l, which for a white diffuse surface is n.l, the lecture's k_d C n.l with k_d C = 1.
+// The transmission BTDF is a delta here (the transmission signal, traced along refractLecture):
+// lights are not seen through a rough transmissive surface. KHR_materials_volume is not part
+// of the model (no attenuation inside).
+#ifndef DIPTYCH_PBR_GLSL
+#define DIPTYCH_PBR_GLSL
+
+// GGX alpha = roughness^2 (glTF Appendix B), floored at 1e-3 so that D and V stay finite at
+// roughness 0 (D's peak is then 1 / (pi 1e-6), a near-mirror). Filament floors likewise.
+SHADING_FN float pbrAlpha(float roughness) {
+  float r = saturate01(roughness);
+  return max(r * r, 1.0e-3f);
+}
+
+// (1 - c)^5 for Schlick's Fresnel, c clamped to [0, 1].
+SHADING_FN float pbrSchlickWeight(float c) {
+  float x = 1.0f - saturate01(c);
+  float x2 = x * x;
+  return x2 * x2 * x;
+}
+
+// Dielectric reflectance at normal incidence: ((ior - 1) / (ior + 1))^2 (KHR_materials_ior; 0.04
+// at 1.5) tinted by specularColor and clamped to 1 (KHR_materials_specular).
+SHADING_FN vec3 pbrDielectricF0(ShadingMaterial m) {
+  float sum = m.ior + 1.0f;
+  float r = sum > 0.0f ? (m.ior - 1.0f) / sum : 0.0f;
+  r = min(r * r, 1.0f);
+  return min(r * max(m.specularTint, vec3(0.0f)), vec3(1.0f));
+}
+
+// GGX normal distribution D(n.h).
+SHADING_FN float pbrD(float nh, float a) {
+  float a2 = a * a;
+  float c = saturate01(nh);
+  float d = c * c * (a2 - 1.0f) + 1.0f;  // >= a2 > 0 for c in [0, 1]
+  return a2 / (SHADING_PI * d * d);
+}
+
+// Smith height-correlated visibility V = G2 / (4 n.l n.v) (Heitz 2014, eq. 99).
+SHADING_FN float pbrV(float nl, float nv, float a) {
+  float a2 = a * a;
+  float gv = nl * sqrt(max(nv * nv * (1.0f - a2) + a2, 0.0f));
+  float gl = nv * sqrt(max(nl * nl * (1.0f - a2) + a2, 0.0f));
+  float s = gv + gl;
+  return s > 0.0f ? 0.5f / s : 0.0f;
+}
+
+// pi f(l, v) max(0, n.l): the glTF BRDF's response to one light per unit of S_i. n, v, l need
+// not be normalised; 0 for a light below the tangent plane. n.v is floored at 1e-4 (as the
+// glTF sample viewer clamps it) so that a normal-mapped normal facing away from v stays finite.
+SHADING_FN vec3 pbrDirect(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
+  vec3 N = safeNormalize(n);
+  vec3 V = safeNormalize(v);
+  vec3 L = safeNormalize(l);
+  float nl = dot(N, L);
+  if (!(nl > 0.0f)) return vec3(0.0f);
+  nl = min(nl, 1.0f);
+  float nv = clamp(dot(N, V), 1.0e-4f, 1.0f);
+  vec3 H = safeNormalize(L + V);
+  float vh = saturate01(dot(V, H));
+  float a = pbrAlpha(m.roughness);
+  float specular = pbrD(dot(N, H), a) * pbrV(nl, nv, a);
+  float fw = pbrSchlickWeight(vh);
+  vec3 base = clamp(m.baseColor, vec3(0.0f), vec3(1.0f));
+  vec3 fMetal = base + (vec3(1.0f) - base) * fw;
+  vec3 f0 = pbrDielectricF0(m);
+  vec3 fDielectric = f0 + (vec3(1.0f) - f0) * fw;
+  float w = saturate01(m.specularWeight);
+  float fMax = max(fDielectric.x, max(fDielectric.y, fDielectric.z));
+  vec3 diffuse = base * ((1.0f - saturate01(m.transmission)) / SHADING_PI);
+  vec3 dielectric = (1.0f - w * fMax) * diffuse + w * fDielectric * specular;
+  vec3 f = mix(dielectric, fMetal * specular, saturate01(m.metallic));
+  return min(f * (SHADING_PI * nl), vec3(SHADING_FLT_MAX));
+}
+
+// Directional albedo of the GGX lobe with Schlick Fresnel, E(n.v) = f0 A + B: the analytic fit
+// of the split-sum table by Lazarov (2013) as given by Karis, "Physically Based Shading on
+// Mobile" (2014). Returns (A, B).
+SHADING_FN vec2 pbrEnvironmentBrdf(float nv, float roughness) {
+  float r = saturate01(roughness);
+  float rx = 1.0f - r;
+  float ry = 0.0425f - 0.0275f * r;
+  float a004 = min(rx * rx, exp2(-9.28f * saturate01(nv))) * rx + ry;
+  return vec2(1.04f - 1.04f * a004 - 0.572f * r, 1.04f * a004 - 0.04f + 0.022f * r);
+}
+
+// Factors of the reflection signal (radiance along the mirror direction of v) and of the
+// transmission signal (along the refracted direction):
+//   reflection   = (1 - roughness) mix(w E(f0_d), E(base), metallic), E from pbrEnvironmentBrdf:
+//                  the Fresnel-weighted albedo of the specular lobe, fading out with roughness
+//                  as the lecture mapping's k_ps does (a mirror ray stands for a sharp lobe
+//                  only; a rough lobe's environment light is left out, not smeared);
+//   transmission = (1 - metallic) transmission (1 - w max(F_d(n.v))) base: what the dielectric's
+//                  Fresnel layer lets through, tinted by the base colour (KHR_materials_transmission).
+SHADING_FN SecondaryWeights pbrSecondaryWeights(ShadingMaterial m, vec3 n, vec3 v) {
+  float nv = clamp(dot(safeNormalize(n), safeNormalize(v)), 1.0e-4f, 1.0f);
+  vec2 ab = pbrEnvironmentBrdf(nv, m.roughness);
+  vec3 base = clamp(m.baseColor, vec3(0.0f), vec3(1.0f));
+  vec3 f0 = pbrDielectricF0(m);
+  float w = saturate01(m.specularWeight);
+  float metallic = saturate01(m.metallic);
+  vec3 albedo = mix(w * (f0 * ab.x + vec3(ab.y)), base * ab.x + vec3(ab.y), metallic);
+  vec3 reflection = (1.0f - saturate01(m.roughness)) * clamp(albedo, vec3(0.0f), vec3(1.0f));
+  vec3 fd = f0 + (vec3(1.0f) - f0) * pbrSchlickWeight(nv);
+  float fMax = max(fd.x, max(fd.y, fd.z));
+  vec3 transmission = ((1.0f - metallic) * saturate01(m.transmission) * (1.0f - w * fMax)) * base;
+  return SecondaryWeights(reflection, transmission);
+}
+
+#endif  // DIPTYCH_PBR_GLSL

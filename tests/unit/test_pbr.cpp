@@ -1,0 +1,188 @@
+// The glTF 2.0 metallic-roughness model (shaders/common/pbr.glsl) compiled as C++: closed-form
+// cases, reciprocity, energy bounds by quadrature, the dispatch by ShadingMaterial::model, and
+// the scene side (loader defaults, the JSON keys, --shading's forceShadingModel).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "engine/core/error.h"
+#include "engine/scene/gltf_pbr.h"
+#include "engine/scene/load.h"
+#include "engine/shading/shading.h"
+#include "tests/support/test_paths.h"
+
+namespace diptych {
+namespace {
+
+using namespace shading;
+constexpr float kPi = 3.14159265358979f;
+
+ShadingMaterial pbr(vec3 base, float metallic, float roughness, float transmission = 0.f,
+                    float specular = 1.f) {
+  ShadingMaterial m{};
+  m.model = SHADING_MODEL_GLTF;
+  m.ior = 1.5f;
+  m.alpha = 1.f;
+  m.baseColor = base;
+  m.metallic = metallic;
+  m.roughness = roughness;
+  m.transmission = transmission;
+  m.specularWeight = specular;
+  m.specularTint = vec3(1.f);
+  return m;
+}
+
+vec3 dirAt(float theta, float phi = 0.f) {
+  return vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+}
+
+// Directional albedo: the integral over the hemisphere of f cos = pbrDirect / pi, by a midpoint
+// rule in (cos theta, phi) (dw = dcos dphi), fine enough for roughness >= 0.2.
+vec3 albedo(const ShadingMaterial& m, const vec3& v, int n = 400) {
+  vec3 sum(0.f);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < 2 * n; ++j) {
+      const float c = (float(i) + 0.5f) / float(n);
+      const float phi = 2.f * kPi * (float(j) + 0.5f) / float(2 * n);
+      const vec3 l = dirAt(std::acos(c), phi);
+      sum += pbrDirect(m, vec3(0, 0, 1), v, l) / kPi;
+    }
+  return sum * (2.f * kPi / (float(n) * float(2 * n)));
+}
+
+TEST(Pbr, WhiteDiffuseDielectricWithoutSpecularIsTheLecturesLambert) {
+  // specular 0 (KHR_materials_specular) leaves c_diff / pi: pi f n.l = n.l, the lecture's
+  // k_d C (n.l) for k_d C = 1, so the two models agree on a white matte surface.
+  const ShadingMaterial m = pbr(vec3(1.f), 0.f, 0.7f, 0.f, 0.f);
+  for (float t : {0.f, 0.5f, 1.2f})
+    EXPECT_NEAR(pbrDirect(m, vec3(0, 0, 1), dirAt(0.3f), dirAt(t, 2.f)).x, std::cos(t), 1e-6f);
+  EXPECT_EQ(pbrDirect(m, vec3(0, 0, 1), dirAt(0.3f), dirAt(1.7f)), vec3(0.f));  // below
+}
+
+TEST(Pbr, MetalAtNormalIncidenceIsBaseColourTimesDV) {
+  // l = v = n: h = n, F = base, D = 1 / (pi a^2), V = 1 / 4 (n.l = n.v = 1):
+  // pi f n.l = base / (4 a^2).
+  const float r = 0.5f, a = r * r;
+  const vec3 got = pbrDirect(pbr(vec3(0.9f, 0.6f, 0.3f), 1.f, r), vec3(0, 0, 1), vec3(0, 0, 1),
+                             vec3(0, 0, 1));
+  const vec3 want = vec3(0.9f, 0.6f, 0.3f) / (4.f * a * a);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-5f * want[c]);
+}
+
+TEST(Pbr, BrdfIsReciprocal) {
+  // f(l, v) = f(v, l): pbrDirect / n.l is symmetric in l and v (every factor is).
+  for (float metallic : {0.f, 0.5f, 1.f})
+    for (float r : {0.1f, 0.5f, 1.f}) {
+      const ShadingMaterial m = pbr(vec3(0.8f, 0.5f, 0.2f), metallic, r);
+      const vec3 a = dirAt(0.4f, 0.3f), b = dirAt(1.1f, 2.5f), n(0, 0, 1);
+      const vec3 fab = pbrDirect(m, n, a, b) / b.z, fba = pbrDirect(m, n, b, a) / a.z;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(fab[c], fba[c], 1e-5f * fab[c]) << metallic << r;
+    }
+}
+
+TEST(Pbr, NoViewDirectionReflectsMoreThanArrives) {
+  // White furnace by quadrature: the directional albedo of a white material is at most 1 for
+  // every view angle and roughness (the path-traced furnace is in test_pbr_furnace.cpp).
+  for (float metallic : {0.f, 1.f})
+    for (float r : {0.2f, 0.5f, 1.f})
+      for (float t : {0.f, 0.8f, 1.4f}) {
+        const vec3 e = albedo(pbr(vec3(1.f), metallic, r), dirAt(t));
+        EXPECT_LE(e.x, 1.f + 2e-3f) << "metallic " << metallic << " roughness " << r << " theta "
+                                    << t;
+        if (metallic == 1.f && r == 1.f && t == 0.f)
+          std::printf("[ measured ] white metal, roughness 1, normal view: albedo %.4f\n", e.x);
+      }
+}
+
+TEST(Pbr, SecondaryWeightsAreFresnelWeightedAndFadeWithRoughness) {
+  const vec3 n(0, 0, 1);
+  // A smooth white metal reflects nearly everything; the Karis fit gives 0.994 + 0.006 at
+  // normal incidence.
+  EXPECT_NEAR(secondaryWeights(pbr(vec3(1.f), 1.f, 0.f), n, n).reflection.x, 1.f, 1e-2f);
+  // A smooth dielectric reflects F0 = 0.04 head-on and more at grazing (Schlick).
+  const float head = secondaryWeights(pbr(vec3(0.5f), 0.f, 0.f), n, n).reflection.x;
+  const float grazing = secondaryWeights(pbr(vec3(0.5f), 0.f, 0.f), n, dirAt(1.5f)).reflection.x;
+  EXPECT_NEAR(head, 0.04f, 5e-3f);
+  EXPECT_GT(grazing, 0.3f);
+  // Fully rough: no mirror signal (the lobe is left to the lights and the path tracer).
+  EXPECT_EQ(secondaryWeights(pbr(vec3(1.f), 1.f, 1.f), n, n).reflection, vec3(0.f));
+  // Transmission: what the Fresnel layer lets through, tinted; none for metals.
+  const SecondaryWeights glass = secondaryWeights(pbr(vec3(1.f, 0.5f, 1.f), 0.f, 0.f, 1.f), n, n);
+  EXPECT_NEAR(glass.transmission.x, 0.96f, 1e-4f);
+  EXPECT_NEAR(glass.transmission.y, 0.48f, 1e-4f);
+  EXPECT_EQ(secondaryWeights(pbr(vec3(1.f), 1.f, 0.f, 1.f), n, n).transmission, vec3(0.f));
+  // secondaryTerms is the weighted sum.
+  const ShadingMaterial m = pbr(vec3(0.7f), 0.3f, 0.2f, 0.5f);
+  const SecondaryWeights w = secondaryWeights(m, n, dirAt(0.6f));
+  const vec3 t = secondaryTerms(m, n, dirAt(0.6f), vec3(2.f), vec3(3.f));
+  EXPECT_NEAR(t.y, 2.f * w.reflection.y + 3.f * w.transmission.y, 1e-6f);
+}
+
+TEST(Pbr, TheLectureModelIsUnchangedByTheDispatch) {
+  ShadingMaterial m{};
+  m.color = vec3(0.5f);
+  m.kd = 1.f;
+  m.kps = 0.25f;
+  m.mirrorColor = vec3(1.f);
+  m.kt = 0.5f;
+  m.transmitColor = vec3(1.f, 0.f, 0.f);
+  const vec3 n(0, 0, 1), v = dirAt(0.7f), l = dirAt(0.3f, 1.f);
+  EXPECT_EQ(directResponse(m, n, v, l), directTerm(m, n, v, l));
+  EXPECT_EQ(secondaryTerms(m, n, v, vec3(4.f), vec3(2.f)), vec3(2.f, 1.f, 1.f));
+}
+
+std::filesystem::path writeScene(const std::string& name, const std::string& text) {
+  const auto dir = ::diptych::testing::scratchDir("diptych_pbr");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+TEST(Pbr, JsonMaterialsChooseTheirModelAndForceShadingOverridesIt) {
+  const Scene scene = loadScene(writeScene("models.json", R"({
+    "materials": {
+      "matte": {"color": [0.2, 0.4, 0.6], "kd": 1},
+      "gold": {"model": "gltf", "base_color": [1, 0.8, 0.3], "metallic": 1, "roughness": 0.3}},
+    "objects": [{"type": "sphere", "material": "matte"},
+                {"type": "sphere", "material": "gold", "transform": {"translate": [3, 0, 0]}}]
+  })"));
+  EXPECT_EQ(scene.materials[0].model, ShadingModel::Lecture);
+  EXPECT_EQ(scene.materials[1].model, ShadingModel::Gltf);
+  EXPECT_EQ(shading::toShadingMaterial(scene.materials[1]).metallic, 1.f);
+  Scene forced = scene;
+  forceShadingModel(forced, ShadingModel::Gltf);
+  // The lecture's Lambertian maps to a rough white-specular dielectric of the same colour.
+  EXPECT_EQ(forced.materials[0].model, ShadingModel::Gltf);
+  EXPECT_EQ(vec3(forced.materials[0].baseColorFactor), vec3(0.2f, 0.4f, 0.6f));
+  EXPECT_EQ(forced.materials[0].metallicFactor, 0.f);
+  EXPECT_EQ(forced.materials[0].roughnessFactor, 1.f);
+  forceShadingModel(forced, ShadingModel::Lecture);
+  EXPECT_EQ(forced.materials[1].model, ShadingModel::Lecture);
+  EXPECT_FALSE(parseShadingModel("phong"));
+}
+
+TEST(Pbr, BadModelKeyNamesTheFileAndPlace) {
+  const auto file = writeScene("bad-model.json", R"({
+    "materials": {"m": {"model": "phong"}},
+    "objects": [{"type": "sphere", "material": "m"}]})");
+  try {
+    loadScene(file);
+    FAIL() << "accepted model 'phong'";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad-model.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("materials.m.model"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Pbr, GltfMaterialsUseTheGltfModelByDefault) {
+  const Scene scene = loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) /
+                                "scenes/blender-point-light.gltf");
+  ASSERT_FALSE(scene.materials.empty());
+  for (const Material& m : scene.materials) EXPECT_EQ(m.model, ShadingModel::Gltf) << m.name;
+}
+
+}  // namespace
+}  // namespace diptych

@@ -1,0 +1,195 @@
+// GLSL vs C++ parity of the glTF model (shaders/common/pbr.glsl): compiled as GLSL (a compute
+// shader on OSMesa/llvmpipe) and as C++ (engine/shading/shading.h), evaluated through the shared
+// dispatch points directResponse and secondaryWeights on random inputs, a share of them extreme:
+// roughness exactly 0 and 1, metallic 0 and 1, grazing v and l (within 1e-3 rad of the tangent
+// plane, either side), l at the mirror direction of v (the GGX peak), zero and huge vectors.
+//
+// Norm, per output vector g (GPU) and c (CPU): |g - c|_inf <= bound * max(|c|_inf, 1e-3).
+// bound = 2e-5, plus the GGX peak's conditioning: D = a^2 / (pi d^2) with
+// d = (n.h)^2 (a^2 - 1) + 1, and a few-ULP difference in n.h (GLSL allows 2.5 ULP per operation)
+// moves d by ~4 eps, so D's relative error is ~8 eps / d; at roughness 0 (a = 1e-3, d >= 1e-6)
+// that is up to ~1. The bound adds 64 eps / d for the direct term.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include "engine/gl/debug.h"
+#include "engine/gl/shader.h"
+#include "engine/shading/shading.h"
+#include "gl_test_context.h"
+#include "tests/support/test_paths.h"
+
+namespace diptych {
+namespace {
+
+using namespace shading;
+constexpr int kInStride = 32, kOutStride = 12;
+
+struct Case {
+  ShadingMaterial m{};
+  vec3 n{0.f}, v{0.f}, l{0.f};
+
+  void write(float* r) const {
+    auto put3 = [&](int i, vec3 x) { r[i] = x.x, r[i + 1] = x.y, r[i + 2] = x.z; };
+    r[0] = m.ior;
+    put3(1, m.baseColor);
+    r[4] = m.metallic, r[5] = m.roughness, r[6] = m.transmission, r[7] = m.specularWeight;
+    put3(8, m.specularTint);
+    put3(11, n);
+    put3(14, v);
+    put3(17, l);
+  }
+
+  std::array<float, kOutStride> evaluate() const {
+    const vec3 d = directResponse(m, n, v, l);
+    const SecondaryWeights w = secondaryWeights(m, n, v);
+    const vec2 ab = pbrEnvironmentBrdf(dot(safeNormalize(n), safeNormalize(v)), m.roughness);
+    return {d.x,
+            d.y,
+            d.z,
+            w.reflection.x,
+            w.reflection.y,
+            w.reflection.z,
+            w.transmission.x,
+            w.transmission.y,
+            w.transmission.z,
+            ab.x,
+            ab.y,
+            0.f};
+  }
+
+  // The GGX denominator d at this case's half vector (see the header).
+  float ggxDenominator() const {
+    const vec3 N = safeNormalize(n), H = safeNormalize(safeNormalize(l) + safeNormalize(v));
+    const float a = pbrAlpha(m.roughness), c = saturate01(dot(N, H));
+    return c * c * (a * a - 1.f) + 1.f;
+  }
+};
+
+class CaseGenerator {
+ public:
+  explicit CaseGenerator(unsigned seed) : rng_(seed) {}
+
+  Case next() {
+    Case c;
+    ShadingMaterial& m = c.m;
+    m.model = SHADING_MODEL_GLTF;
+    m.alpha = 1.f;
+    m.ior = pick({1.f, 3.f}, uniform(1.f, 2.5f));
+    m.baseColor = vec3(uniform(0, 1), uniform(0, 1), uniform(0, 1));
+    m.metallic = pick({0.f, 1.f}, uniform(0, 1));
+    m.roughness = chance(0.3f) ? (chance(0.5f) ? 0.f : 1.f) : uniform(0, 1);
+    m.transmission = pick({0.f, 1.f}, uniform(0, 1));
+    m.specularWeight = pick({0.f, 1.f}, uniform(0, 1));
+    m.specularTint = chance(0.7f) ? vec3(1.f) : vec3(uniform(0, 2), uniform(0, 2), uniform(0, 2));
+    c.n = vector();
+    c.v = chance(0.2f) ? grazing(c.n) : vector();
+    if (chance(0.2f)) {  // the mirror direction of v: the GGX peak
+      const vec3 un = safeNormalize(c.n), uv = safeNormalize(c.v);
+      c.l = 2.f * dot(un, uv) * un - uv;
+    } else {
+      c.l = chance(0.2f) ? grazing(c.n) : vector();
+    }
+    return c;
+  }
+
+ private:
+  float uniform(float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng_); }
+  bool chance(float p) { return uniform(0, 1) < p; }
+  float pick(std::initializer_list<float> extremes, float usual) {
+    if (!chance(0.15f)) return usual;
+    return *(extremes.begin() + int(uniform(0, float(extremes.size()))) % extremes.size());
+  }
+  vec3 unit() {
+    std::normal_distribution<float> g;
+    vec3 x(g(rng_), g(rng_), g(rng_));
+    return glm::length(x) > 0.f ? glm::normalize(x) : vec3(0.f, 1.f, 0.f);
+  }
+  vec3 vector() { return unit() * (chance(0.05f) ? (chance(0.5f) ? 0.f : 1e30f) : uniform(0.1f, 3.f)); }
+  vec3 grazing(vec3 n) {
+    const vec3 un = safeNormalize(n), t = safeNormalize(glm::cross(un, unit()));
+    if (glm::length(t) == 0.f || glm::length(un) == 0.f) return unit();
+    return glm::normalize(t + uniform(-1e-3f, 1e-3f) * un);
+  }
+  std::mt19937 rng_;
+};
+
+struct Group {
+  const char* name;
+  int first, count;
+};
+constexpr Group kGroups[] = {{"directResponse (pi f n.l)", 0, 3},
+                             {"secondaryWeights.reflection", 3, 3},
+                             {"secondaryWeights.transmission", 6, 3},
+                             {"pbrEnvironmentBrdf", 9, 2}};
+
+TEST(PbrParity, GlslAndCppAgreeOnRandomGrazingAndExtremeRoughness) {
+  gl::testing::osmesaContext();
+  const int errorsBefore = gl::glDebugErrorCount();
+  constexpr int kCases = 20000;
+  CaseGenerator gen(20261128u);
+  std::vector<Case> cases;
+  std::vector<float> in(std::size_t(kCases) * kInStride, 0.f);
+  for (int i = 0; i < kCases; ++i) {
+    cases.push_back(gen.next());
+    cases.back().write(&in[std::size_t(i) * kInStride]);
+  }
+  const gl::Buffer inputs = gl::Buffer::create(in.size() * 4, in.data());
+  const gl::Buffer outputs = gl::Buffer::create(std::size_t(kCases) * kOutStride * 4);
+  const gl::Program program = gl::loadProgram(
+      {std::filesystem::path(DIPTYCH_TESTS_DIR) / "unit/shaders/pbr_parity.comp"}, {});
+  program.use();
+  program.set("uCount", kCases);
+  inputs.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  outputs.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  gl::glDispatchCompute(GLuint((kCases + 63) / 64), 1, 1);
+  gl::glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> gpu(std::size_t(kCases) * kOutStride);
+  outputs.download(0, gpu.size() * 4, gpu.data());
+  EXPECT_EQ(gl::glDebugErrorCount(), errorsBefore);
+
+  std::map<std::string, double> worst;
+  std::map<std::string, int> failures;
+  int roughness0 = 0, roughness1 = 0, peaks = 0;
+  for (int i = 0; i < kCases; ++i) {
+    const Case& c = cases[i];
+    roughness0 += c.m.roughness == 0.f;
+    roughness1 += c.m.roughness == 1.f;
+    const auto cpu = c.evaluate();
+    const float* g = &gpu[std::size_t(i) * kOutStride];
+    const float d = c.ggxDenominator();
+    peaks += d < 1e-3f;
+    for (const Group& grp : kGroups) {
+      float diff = 0.f, scale = 1e-3f;
+      for (int k = grp.first; k < grp.first + grp.count; ++k) {
+        ASSERT_TRUE(std::isfinite(g[k])) << grp.name << " case " << i;
+        ASSERT_TRUE(std::isfinite(cpu[k])) << grp.name << " case " << i;
+        ASSERT_GE(cpu[k], 0.f) << grp.name << " case " << i;
+        diff = std::max(diff, std::abs(g[k] - cpu[k]));
+        scale = std::max(scale, std::abs(cpu[k]));
+      }
+      const double rel = diff / scale;
+      const double bound = 2e-5 + (grp.first == 0 ? 64.0 * FLT_EPSILON / std::max(d, 1e-12f) : 0);
+      worst[grp.name] = std::max(worst[grp.name], rel);
+      if (rel > bound && ++failures[grp.name] <= 3)
+        ADD_FAILURE() << grp.name << " case " << i << ": relative difference " << rel
+                      << " bound " << bound << " (roughness " << c.m.roughness << ", d " << d
+                      << ")";
+    }
+  }
+  std::cout << "[ measured ] cases: " << kCases << ", roughness 0: " << roughness0
+            << ", roughness 1: " << roughness1 << ", at the GGX peak (d < 1e-3): " << peaks
+            << "\n";
+  for (const Group& grp : kGroups)
+    std::cout << "[ measured ] " << grp.name << ": worst relative difference " << worst[grp.name]
+              << ", over the bound: " << failures[grp.name] << "\n";
+  EXPECT_GT(roughness0, 1000);
+  EXPECT_GT(roughness1, 1000);
+  EXPECT_GT(peaks, 100);
+}
+
+}  // namespace
+}  // namespace diptych
