@@ -92,7 +92,8 @@ TEST(Shading, AmbientIsScaledByTheLightAndEmissionAndGlobalAmbientAreAdded) {
   m.mirrorColor = vec3(1.f, 0.f, 0.f);
   m.kt = 0.25f;
   m.transmitColor = vec3(0.f, 0.f, 1.f);
-  EXPECT_EQ(secondaryTerms(m, vec3(2.f), vec3(4.f)), vec3(1.f, 0.f, 1.f));
+  EXPECT_EQ(secondaryTerms(m, vec3(0, 0, 1), vec3(0, 0, 1), vec3(2.f), vec3(4.f)),
+            vec3(1.f, 0.f, 1.f));
 }
 
 TEST(Shading, LightUnitsAndSpotCone) {
