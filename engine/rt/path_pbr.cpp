@@ -75,10 +75,14 @@ PbrScatter samplePbr(const shading::ShadingMaterial& m, const vec3& n, const vec
   }
   const float nl = glm::dot(n, s.direction);
   if (!(nl > 0.f)) return s;  // below the shading hemisphere: no light arrives from there
-  const vec3 h = glm::normalize(s.direction + v);
-  const float vh = glm::dot(v, h);
-  const float pdfGgx = vh > 0.f ? shading::pbrD(glm::dot(n, h), a) * glm::dot(n, h) / (4.f * vh)
-                                : 0.f;
+  // The half vector and D exactly as pbrDirect forms them: near a sharp peak (a = 1e-3) D is
+  // ill-conditioned (a last-bit change of n.h moves it by ~10 %), and the estimator f / pdf is
+  // only unbiased if numerator and pdf see the same rounded D.
+  const vec3 N = shading::safeNormalize(n), V = shading::safeNormalize(v);
+  const vec3 H = shading::safeNormalize(shading::safeNormalize(s.direction) + V);
+  const float nh = glm::dot(N, H), vh = glm::dot(V, H);
+  const float pdfGgx =
+      vh > 0.f ? shading::pbrD(nh, a) * shading::saturate01(nh) / (4.f * vh) : 0.f;
   const float pdf = pGgx * pdfGgx + (1.f - pGgx) * nl / kPi;
   if (!(pdf > 0.f)) return s;
   // pbrDirect is pi f n.l (the shading's light units), so f n.l = pbrDirect / pi.
