@@ -19,10 +19,10 @@ oiiotool "$TMP/spheres-lecture.png" "$TMP/spheres-gltf.png" "$TMP/helmet-lecture
 # The lecture's bump mapping: a plane with the procedural sinusoid, flat beside it.
 cat >"$TMP/bump.json" <<'JSON'
 {"camera": {"position": [0, 2.2, 2.6], "target": [0, 0, 0], "fov": 45},
- "lights": [{"type": "directional", "direction": [-0.6, -1, -0.4], "intensity": 2.5}],
+ "lights": [{"type": "directional", "direction": [-1, -0.6, -0.3], "intensity": 1.2}],
  "materials": {
-   "flat": {"color": [0.8, 0.8, 0.8]},
-   "bumpy": {"color": [0.8, 0.8, 0.8], "ks": 0.3, "exponent": 40,
+   "flat": {"color": [0.6, 0.6, 0.6]},
+   "bumpy": {"color": [0.6, 0.6, 0.6], "ks": 0.3, "exponent": 40,
              "bump": {"amplitude": 0.02, "frequency": [6, 6], "k": 1, "delta": 0.001}}},
  "objects": [
    {"type": "plane", "size": [1.6, 1.6], "material": "flat", "transform": {"translate": [-0.85, 0, 0]}},

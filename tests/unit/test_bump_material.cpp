@@ -71,8 +71,9 @@ double worstAngle(const Scene& scene, int count, float edgeMargin) {
     const SurfacePoint p = makeSurfacePoint(
         scene, world.geometry(), {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
         ray.direction);
-    const double c = glm::dot(glm::normalize(p.shadingNormal), exactNormal(p.uv.x, p.uv.y));
-    worst = std::max(worst, std::acos(std::clamp(c, -1.0, 1.0)));
+    // atan2(|a x b|, a.b) in double: acos of a float dot cannot resolve angles below ~3e-4.
+    const glm::dvec3 a(glm::normalize(p.shadingNormal)), b(exactNormal(p.uv.x, p.uv.y));
+    worst = std::max(worst, std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)));
     ++tested;
   }
   return worst;
