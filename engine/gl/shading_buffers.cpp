@@ -87,7 +87,7 @@ void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& 
                             m.alphaCutoff};
   out.insert(out.end(), std::begin(values), std::end(values));
   out.insert(out.end(), {lane.layer, lane.width, lane.height, lane.flags});
-  out.insert(out.end(), {s.baseColor.x, s.baseColor.y, s.baseColor.z, s.metallic,          //
+  out.insert(out.end(), {s.baseColor.x, s.baseColor.y, s.baseColor.z, s.metallic,            //
                          s.specularTint.x, s.specularTint.y, s.specularTint.z, s.roughness,  //
                          float(s.model), s.transmission, s.specularWeight, 0.f});
 }

@@ -49,8 +49,8 @@ PbrScatter samplePbr(const shading::ShadingMaterial& m, const vec3& n, const vec
   const float metallic = std::clamp(m.metallic, 0.f, 1.f);
   const vec3 f0 = glm::mix(shading::pbrDielectricF0(m) * m.specularWeight, base, metallic);
   const float spec = luminance(f0 * ab.x + vec3(ab.y));
-  const float diff = (1.f - metallic) * (1.f - std::clamp(m.transmission, 0.f, 1.f)) *
-                     luminance(base);
+  const float diff =
+      (1.f - metallic) * (1.f - std::clamp(m.transmission, 0.f, 1.f)) * luminance(base);
   const float trans = luminance(sw.transmission);
   const float total = spec + diff + trans;
   if (!(total > 0.f)) return s;
@@ -81,8 +81,7 @@ PbrScatter samplePbr(const shading::ShadingMaterial& m, const vec3& n, const vec
   const vec3 N = shading::safeNormalize(n), V = shading::safeNormalize(v);
   const vec3 H = shading::safeNormalize(shading::safeNormalize(s.direction) + V);
   const float nh = glm::dot(N, H), vh = glm::dot(V, H);
-  const float pdfGgx =
-      vh > 0.f ? shading::pbrD(nh, a) * shading::saturate01(nh) / (4.f * vh) : 0.f;
+  const float pdfGgx = vh > 0.f ? shading::pbrD(nh, a) * shading::saturate01(nh) / (4.f * vh) : 0.f;
   const float pdf = pGgx * pdfGgx + (1.f - pGgx) * nl / kPi;
   if (!(pdf > 0.f)) return s;
   // pbrDirect is pi f n.l (the shading's light units), so f n.l = pbrDirect / pi.

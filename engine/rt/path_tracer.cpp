@@ -198,8 +198,8 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
     if (m.model == shading::SHADING_MODEL_GLTF) {  // the glTF model's own sampling (path_pbr.h)
       const float ior = scene_.material(p.material).ior;
       const float uLobe = rng.next();
-      const PbrScatter s = samplePbr(m, p.shadingNormal, v, p.frontFacing ? 1.f / ior : ior,
-                                     uLobe, rng.next2());
+      const PbrScatter s =
+          samplePbr(m, p.shadingNormal, v, p.frontFacing ? 1.f / ior : ior, uLobe, rng.next2());
       if (!s.valid) break;
       direction = s.direction;
       weight = s.weight;

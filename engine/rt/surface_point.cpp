@@ -167,9 +167,9 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, co
     n = normalMapped(scene.textures[material.normalTexture], material.normalScale, n,
                      interpolateTangent(mesh, hit.primitive, hit.u, hit.v), s.uv);
   if (material.bump && !mesh.uvs.empty()) {  // the lecture's bump mapping (engine/shading/bump.h)
-    const SurfaceTangents t = triangleTangents(
-        mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]], mesh.uvs[tri[0]],
-        mesh.uvs[tri[1]], mesh.uvs[tri[2]]);
+    const SurfaceTangents t =
+        triangleTangents(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]],
+                         mesh.uvs[tri[0]], mesh.uvs[tri[1]], mesh.uvs[tri[2]]);
     n = bumpMapNormal(scene, *material.bump, s.uv, t.tu, t.tv, n);
   }
   s.shadingNormal = s.frontFacing ? n : -n;  // mapped first: the back sees the same surface

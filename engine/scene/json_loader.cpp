@@ -135,7 +135,8 @@ BumpMap readBump(JsonObject o, const Context& ctx, Scene& scene) {
     scene.textures.push_back(std::move(t));
   } else {
     b.amplitude = o.number("amplitude", b.amplitude);
-    if (const json* f = o.find("frequency")) b.frequency = toVector2(*f, o.pathOf("frequency"), ctx.file);
+    if (const json* f = o.find("frequency"))
+      b.frequency = toVector2(*f, o.pathOf("frequency"), ctx.file);
   }
   b.k = o.number("k", b.k);
   b.delta = positive(o, "delta", b.delta);
@@ -181,9 +182,8 @@ Material readMaterial(JsonObject o, const std::string& name, const Context& ctx,
     for (const char* key : {"color", "ka", "kd", "ks", "exponent", "specular_color", "kps",
                             "mirror_color", "kt", "transmit_color"})
       if (o.has(key)) o.fail(key, "is a lecture-model key; this material has \"model\": \"gltf\"");
-    const LectureCoefficients k =
-        gltfPbrToLecture(vec3(m.baseColorFactor), m.metallicFactor, m.roughnessFactor,
-                         m.transmissionFactor, m.ior);
+    const LectureCoefficients k = gltfPbrToLecture(vec3(m.baseColorFactor), m.metallicFactor,
+                                                   m.roughnessFactor, m.transmissionFactor, m.ior);
     m.color = k.color, m.kd = k.kd, m.ks = k.ks, m.exponent = k.exponent;
     m.specularColor = k.specularColor, m.kps = k.kps, m.mirrorColor = k.mirrorColor;
     m.kt = k.kt, m.transmitColor = k.transmitColor;

@@ -128,8 +128,8 @@ struct Material {
   int normalTexture = -1;  // linear tangent-space normal map, (2 t - 1) * (scale, scale, 1)
   float normalScale = 1.f;
   std::optional<BumpMap> bump;  // JSON "bump" key; perturbs the shading normal (CPU side)
-  float specularWeight = 1.f;  // KHR_materials_specular specularFactor
-  vec3 specularTint{1.f};      // KHR_materials_specular specularColorFactor
+  float specularWeight = 1.f;   // KHR_materials_specular specularFactor
+  vec3 specularTint{1.f};       // KHR_materials_specular specularColorFactor
   bool castsShadows = true;
 };
 

@@ -22,12 +22,12 @@ float bumpSinusoid(const BumpMap& bump, vec2 uv) {
          std::cos(kTwoPi * bump.frequency.y * uv.y);
 }
 
-vec3 bumpMapNormal(const Scene& scene, const BumpMap& bump, vec2 uv, const vec3& tu,
-                   const vec3& tv, const vec3& n) {
+vec3 bumpMapNormal(const Scene& scene, const BumpMap& bump, vec2 uv, const vec3& tu, const vec3& tv,
+                   const vec3& n) {
   if (bump.texture >= 0) {
     if (bump.texture >= int(scene.textures.size())) return shading::safeNormalize(n);
-    return bumpNormalFromTexture(scene.textures[std::size_t(bump.texture)], uv, bump.k,
-                                 bump.delta, tu, tv, n);
+    return bumpNormalFromTexture(scene.textures[std::size_t(bump.texture)], uv, bump.k, bump.delta,
+                                 tu, tv, n);
   }
   const float d = bump.delta;
   const float du = shading::bumpSlope(bumpSinusoid(bump, uv + vec2(d, 0.f)),

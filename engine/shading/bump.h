@@ -25,8 +25,8 @@ float bumpSinusoid(const BumpMap& bump, vec2 uv);
 // n' of a material's BumpMap at uv: the lecture's central differences (step bump.delta, scale
 // bump.k) on its height texture (bumpNormalFromTexture) or on the procedural sinusoid, then
 // shading::bumpNormal. A texture index out of range returns the unit n.
-vec3 bumpMapNormal(const Scene& scene, const BumpMap& bump, vec2 uv, const vec3& tu,
-                   const vec3& tv, const vec3& n);
+vec3 bumpMapNormal(const Scene& scene, const BumpMap& bump, vec2 uv, const vec3& tu, const vec3& tv,
+                   const vec3& n);
 
 // dP/du and dP/dv of a triangle from its positions and uvs (constant over the triangle, the
 // lecture's "constantes en cada polígono"); zero vectors when the uv triangle is degenerate.

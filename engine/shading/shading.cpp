@@ -28,9 +28,8 @@ ShadingLight toShadingLight(const Light& light) {
 ShadingMaterial toShadingMaterial(const Material& m) {
   return ShadingMaterial(m.color, m.ka, m.kd, m.ks, m.exponent, m.specularColor, m.kps,
                          m.mirrorColor, m.kt, m.transmitColor, m.emission, m.ior, m.alpha,
-                         int(m.model), vec3(m.baseColorFactor), m.metallicFactor,
-                         m.roughnessFactor, m.transmissionFactor, m.specularWeight,
-                         m.specularTint);
+                         int(m.model), vec3(m.baseColorFactor), m.metallicFactor, m.roughnessFactor,
+                         m.transmissionFactor, m.specularWeight, m.specularTint);
 }
 
 }  // namespace diptych::shading

@@ -54,9 +54,8 @@ void ShadePass::execute(PassContext& c) {
           const shading::LightSample s = shading::sampleLight(lights[i], sp.position);
           radiance += shading::lightContribution(sp.resolved, sp.shadingNormal, v, s, vis);
         }
-        radiance +=
-            shading::secondaryTerms(sp.resolved, sp.shadingNormal, v, rgb(reflection, x, y),
-                                    rgb(transmission, x, y));
+        radiance += shading::secondaryTerms(sp.resolved, sp.shadingNormal, v, rgb(reflection, x, y),
+                                            rgb(transmission, x, y));
       }
       for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, radiance[ch]);
       out.setF(x, y, 3, 1.f);

@@ -95,23 +95,21 @@ TEST(BumpMaterial, HeightTextureGivesTheClosedFormNormalWithin1e3Rad) {
     for (int i = 0; i < kN; ++i)
       img.at(i, j, 0) = height((float(i) + 0.5f) / kN, (float(j) + 0.5f) / kN);
   writeImage(scratch() / "height.exr", img);
-  const Scene scene =
-      planeWithBump(R"({"texture": "height.exr", "k": 1.5, "delta": 0.00390625})");
+  const Scene scene = planeWithBump(R"({"texture": "height.exr", "k": 1.5, "delta": 0.00390625})");
   const double worst = worstAngle(scene, 2000, 0.1f);
   std::printf("[ measured ] texture bump: worst angle %.3g rad over 2000 points\n", worst);
   EXPECT_LT(worst, 1e-3);
 }
 
 TEST(BumpMaterial, BadBumpKeysNameTheirPlace) {
-  for (const char* bad : {R"({"texture": "missing.exr"})", R"({"amplitude": 1, "delta": 0})",
-                          R"({"amplitude": 1, "shape": "saw"})",
-                          R"({"texture": "height.exr", "amplitude": 1})"}) {
+  for (const char* bad :
+       {R"({"texture": "missing.exr"})", R"({"amplitude": 1, "delta": 0})",
+        R"({"amplitude": 1, "shape": "saw"})", R"({"texture": "height.exr", "amplitude": 1})"}) {
     try {
       planeWithBump(bad);
       ADD_FAILURE() << "accepted " << bad;
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("materials.bumpy.bump"), std::string::npos)
-          << e.what();
+      EXPECT_NE(std::string(e.what()).find("materials.bumpy.bump"), std::string::npos) << e.what();
     }
   }
 }

@@ -66,8 +66,8 @@ TEST(Pbr, MetalAtNormalIncidenceIsBaseColourTimesDV) {
   // l = v = n: h = n, F = base, D = 1 / (pi a^2), V = 1 / 4 (n.l = n.v = 1):
   // pi f n.l = base / (4 a^2).
   const float r = 0.5f, a = r * r;
-  const vec3 got = pbrDirect(pbr(vec3(0.9f, 0.6f, 0.3f), 1.f, r), vec3(0, 0, 1), vec3(0, 0, 1),
-                             vec3(0, 0, 1));
+  const vec3 got =
+      pbrDirect(pbr(vec3(0.9f, 0.6f, 0.3f), 1.f, r), vec3(0, 0, 1), vec3(0, 0, 1), vec3(0, 0, 1));
   const vec3 want = vec3(0.9f, 0.6f, 0.3f) / (4.f * a * a);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-5f * want[c]);
 }
@@ -108,9 +108,10 @@ TEST(Pbr, WhiteDielectricGainsEnergyAtGrazingViewsAsTheSpecifiedLayeringDoes) {
   for (float r : {0.2f, 0.5f, 1.f}) {
     const float head = albedo(pbr(vec3(1.f), 0.f, r), vec3(0, 0, 1)).x;
     const float grazing = albedo(pbr(vec3(1.f), 0.f, r), dirAt(1.4f)).x;
-    std::printf("[ measured ] white dielectric, roughness %.1f: albedo %.4f at normal view, "
-                "%.4f at 80 deg\n",
-                r, head, grazing);
+    std::printf(
+        "[ measured ] white dielectric, roughness %.1f: albedo %.4f at normal view, "
+        "%.4f at 80 deg\n",
+        r, head, grazing);
     EXPECT_LE(head, 1.f + 2e-3f) << r;
     EXPECT_LT(grazing, 1.4f) << r;
   }
@@ -203,8 +204,8 @@ TEST(Pbr, BadModelKeyNamesTheFileAndPlace) {
 }
 
 TEST(Pbr, GltfMaterialsUseTheGltfModelByDefault) {
-  const Scene scene = loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) /
-                                "scenes/blender-point-light.gltf");
+  const Scene scene =
+      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/blender-point-light.gltf");
   ASSERT_FALSE(scene.materials.empty());
   for (const Material& m : scene.materials) EXPECT_EQ(m.model, ShadingModel::Gltf) << m.name;
 }

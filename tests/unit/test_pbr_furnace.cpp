@@ -86,9 +86,10 @@ TEST(PbrFurnace, PathTracedWhiteSphereReflectsAtMostWhatArrives) {
     for (float roughness : {0.f, 0.5f, 1.f}) {
       const Scene scene = furnace(metallic, roughness);
       const Estimate all = render(scene, 24, 64, false);
-      std::printf("[ measured ] furnace metallic %.0f roughness %.1f: mean %.4f +- %.4f, loss "
-                  "%.1f%%\n",
-                  metallic, roughness, all.mean, all.sigma, 100 * (1 - all.mean));
+      std::printf(
+          "[ measured ] furnace metallic %.0f roughness %.1f: mean %.4f +- %.4f, loss "
+          "%.1f%%\n",
+          metallic, roughness, all.mean, all.sigma, 100 * (1 - all.mean));
       if (metallic == 1.f) {  // energy is never created by the metal
         EXPECT_LE(all.mean, 1.0 + 4 * all.sigma) << roughness;
       } else {  // the specified dielectric layering gains at grazing views (test_pbr.cpp)

@@ -109,7 +109,9 @@ class CaseGenerator {
     vec3 x(g(rng_), g(rng_), g(rng_));
     return glm::length(x) > 0.f ? glm::normalize(x) : vec3(0.f, 1.f, 0.f);
   }
-  vec3 vector() { return unit() * (chance(0.05f) ? (chance(0.5f) ? 0.f : 1e30f) : uniform(0.1f, 3.f)); }
+  vec3 vector() {
+    return unit() * (chance(0.05f) ? (chance(0.5f) ? 0.f : 1e30f) : uniform(0.1f, 3.f));
+  }
   vec3 grazing(vec3 n) {
     const vec3 un = safeNormalize(n), t = safeNormalize(glm::cross(un, unit()));
     if (glm::length(t) == 0.f || glm::length(un) == 0.f) return unit();
@@ -188,15 +190,14 @@ TEST(PbrParity, GlslAndCppAgreeOnRandomGrazingAndExtremeRoughness) {
       if (d > 0.1f && nl > 0.1f && nv > 0.1f)  // well conditioned: no peak, nothing grazing
         worstConditioned[grp.name] = std::max(worstConditioned[grp.name], rel);
       if (rel > bound && ++failures[grp.name] <= 3)
-        ADD_FAILURE() << grp.name << " case " << i << ": relative difference " << rel
-                      << " bound " << bound << " (roughness " << c.m.roughness << ", d " << d
-                      << ", n.l " << dot(N, safeNormalize(c.l)) << ", n.v "
-                      << dot(N, safeNormalize(c.v)) << ")";
+        ADD_FAILURE() << grp.name << " case " << i << ": relative difference " << rel << " bound "
+                      << bound << " (roughness " << c.m.roughness << ", d " << d << ", n.l "
+                      << dot(N, safeNormalize(c.l)) << ", n.v " << dot(N, safeNormalize(c.v))
+                      << ")";
     }
   }
   std::cout << "[ measured ] cases: " << kCases << ", roughness 0: " << roughness0
-            << ", roughness 1: " << roughness1 << ", at the GGX peak (d < 1e-3): " << peaks
-            << "\n";
+            << ", roughness 1: " << roughness1 << ", at the GGX peak (d < 1e-3): " << peaks << "\n";
   for (const Group& grp : kGroups)
     std::cout << "[ measured ] " << grp.name << ": worst relative difference " << worst[grp.name]
               << " (" << worstConditioned[grp.name]
