@@ -13,7 +13,7 @@ namespace {
 
 // GL state of the shade pass, one per RenderWorld (render_world.h: never in the pass).
 struct GlShadeState {
-  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "shade.frag"})};
+  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "gl_shade.frag"})};
   std::unique_ptr<GlEnvironment> environment;  // uploaded on the first frame
 };
 

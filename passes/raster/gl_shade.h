@@ -1,6 +1,6 @@
 #pragma once
 // The GL side of the `shade` pass (passes/cpu/shade.h): when the compiler places shade in the
-// GL domain (docs/frame-graph.md, "Placement"), it runs shaders/shade.frag as one full-screen
+// GL domain (docs/frame-graph.md, "Placement"), it runs shaders/gl_shade.frag as one full-screen
 // pass over the G-buffer, with the shading code the CPU side runs (shaders/common/shading.glsl
 // through shaders/gl/scene_shading.glsl), and writes the same `color` signal. The background
 // is the exact environment lookup of shaders/gl/scene_environment.glsl.

@@ -125,6 +125,32 @@ TEST(GlShade, ParityMeasureSeesAMissingInput) {
   EXPECT_GT(measure(*f).relativeRmse, 100 * kParityBound);
 }
 
+// The samples have one light each; with three (a second point light of another colour beside
+// the first, and a directional one) light_visibility is a 2D array, one layer per light, which
+// GL reads through its layered image binding. A wrong layer would light or darken whole regions.
+TEST(GlShade, ReadsOneVisibilityLayerPerLight) {
+  Scene scene = loadScene(fs::path(DIPTYCH_SAMPLES_DIR) / "scenes/cornell-point.json");
+  ASSERT_EQ(scene.lights.size(), 1u);
+  Light second = scene.lights[0];
+  second.position += vec3(-150.f, -100.f, 0.f);
+  second.color = vec3(0.2f, 0.4f, 1.f);
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(vec3(0.3f, -1.f, -0.4f));
+  sun.intensity = 0.5f;
+  scene.lights.push_back(second);
+  scene.lights.push_back(sun);
+  for (const char* recipeName : {"raster", "hybrid"}) {
+    SCOPED_TRACE(recipeName);
+    auto f = testing::renderHybridFrame(scene, 160, 120, {},
+                                        withShadeInBothDomains(recipeFile(recipeName)));
+    EXPECT_EQ(f->graph.resources[*f->graph.findResource("shadows.visibility")].desc.layers, 3);
+    const Parity p = measure(*f);
+    std::printf("three lights, %s: relative RMSE %.3g\n", recipeName, p.relativeRmse);
+    EXPECT_LE(p.relativeRmse, kParityBound);
+  }
+}
+
 // The background on GL repeats sampleEnvironment() (shaders/gl/scene_environment.glsl): checked
 // on a random lat-long image and random cube faces of odd sizes (every texel differs, so a
 // wrong (u, v), face, row flip or filter weight shows), over the background pixels of whitted.
@@ -197,7 +223,9 @@ TEST(GlShadePlacement, AllRasterFrameReadsBackOnlyTheFinalImage) {
     EXPECT_EQ(transfers(g), std::vector<std::string>{"readback:shade.color"});
     EXPECT_EQ(g.nodes.back().name, "readback:shade.color");
     for (const GraphNode& n : g.nodes) {
-      if (n.kind != NodeKind::Readback) EXPECT_EQ(n.domain, Domain::Gl) << n.name;
+      if (n.kind != NodeKind::Readback) {
+        EXPECT_EQ(n.domain, Domain::Gl) << n.name;
+      }
     }
   }
 }
