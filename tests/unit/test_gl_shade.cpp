@@ -151,6 +151,33 @@ TEST(GlShade, ReadsOneVisibilityLayerPerLight) {
   }
 }
 
+// The albedo input (the texture-filtering slot's signal) replaces C on both sides alike. No
+// producer of that slot exists on this branch, so an RGBA32F signal of the right size stands in
+// for it: the reflection slot's, which on cornell (no mirror: env_cube is culled) is its
+// fallback 0, i.e. C = 0 everywhere. A third shade without albedo shows that the input changes
+// the frame (the diffuse and ambient terms vanish).
+TEST(GlShade, AlbedoInputReplacesTheBaseColourOnBothSides) {
+  Recipe recipe = withShadeInBothDomains(recipeFile("raster"));
+  RecipePass plain;
+  for (RecipePass& p : recipe.passes)
+    if (p.name == "shade_gl") plain = p;
+  for (RecipePass& p : recipe.passes)
+    if (p.name.starts_with("shade_")) p.inputs["albedo"] = "reflection.reflection";
+  plain.name = "shade_plain";
+  recipe.passes.push_back(plain);
+  recipe.outputs.push_back("shade_plain.color");
+  auto f = testing::renderHybridFrame(fs::path(DIPTYCH_SAMPLES_DIR) / "scenes/cornell.json", 160,
+                                      120, {}, recipe);
+  EXPECT_LE(measure(*f).relativeRmse, kParityBound);
+  const CpuImage& with = f->output("shade_gl.color");
+  const CpuImage& without = f->output("shade_plain.color");
+  long changed = 0;
+  for (int y = 0; y < with.desc.height; ++y)
+    for (int x = 0; x < with.desc.width; ++x)
+      changed += std::abs(with.f(x, y, 0) - without.f(x, y, 0)) > 1e-3f;
+  EXPECT_GT(changed, 1000);
+}
+
 // The background on GL repeats sampleEnvironment() (shaders/gl/scene_environment.glsl): checked
 // on a random lat-long image and random cube faces of odd sizes (every texel differs, so a
 // wrong (u, v), face, row flip or filter weight shows), over the background pixels of whitted.
