@@ -54,6 +54,7 @@ void main() {
     // The texture-filtering slot's signal replaces the resolved base colour and coverage.
     vec4 albedo = imageLoad(uAlbedo, p);
     m.color = albedo.rgb;
+    m.baseColor = albedo.rgb;  // the glTF model's C
     m.alpha = albedo.a;
   }
   // makeSurfacePoint(): the shading normal on the side the eye ray arrives from.
@@ -66,6 +67,6 @@ void main() {
   }
   vec3 reflected = uHasReflection ? imageLoad(uReflection, p).rgb : vec3(0.0);
   vec3 transmitted = uHasTransmission ? imageLoad(uTransmission, p).rgb : vec3(0.0);
-  radiance += secondaryTerms(m, reflected, transmitted);
+  radiance += secondaryTerms(m, n, v, reflected, transmitted);
   outColor = vec4(radiance, 1.0);
 }

@@ -62,6 +62,7 @@ void ShadePass::execute(PassContext& c) {
         SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
         if (albedo) {  // the texture-filtering slot's C and alpha replace the material's
           sp.resolved.color = rgb(albedo, x, y);
+          sp.resolved.baseColor = sp.resolved.color;  // the glTF model's C
           sp.resolved.alpha = albedo->f(x, y, 3);
         }
         const vec3 v = -eye.direction;
