@@ -71,7 +71,7 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
     const PacketRay r = readRay(args->ray, n, i);
-    if (intersectAnalyticPart(a, int(args->primID), r.origin, r.direction, r.tnear, r.tfar))
+    if (analyticPartOccludes(a, int(args->primID), r.origin, r.direction, r.tnear, r.tfar))
       RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();  // Embree: hit
   }
 }

@@ -152,8 +152,8 @@ void partBounds(const AnalyticShape& s, int part, dvec3& lo, dvec3& hi) {
   }
 }
 
-std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dvec3& o,
-                                      const dvec3& d, double tmin, double tmax) {
+std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, const dvec3& o,
+                                            const dvec3& d, double tmin, double tmax) {
   const double r = s.radius, h = s.height;
   std::optional<double> t;
   switch (s.type) {
@@ -172,6 +172,12 @@ std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dv
       t = part == 0 ? coneHit(r, h, o, d, tmin, tmax) : planeHit(-0.5 * h, r, o, d, tmin, tmax);
       break;
   }
+  return t;
+}
+
+std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dvec3& o,
+                                      const dvec3& d, double tmin, double tmax) {
+  const std::optional<double> t = intersectPartDistance(s, part, o, d, tmin, tmax);
   if (!t) return std::nullopt;
   return ShapeHit{*t, part, shapeUv(s, part, o + *t * d)};
 }

@@ -150,6 +150,16 @@ std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int par
   return hit;
 }
 
+bool analyticPartOccludes(const AnalyticInstance& a, int part, const vec3& o, const vec3& d,
+                          float tmin, float tmax) {
+  if (a.sdf) return intersectAnalyticPart(a, part, o, d, tmin, tmax).has_value();
+  // The same arithmetic as intersectAnalyticPart, so both agree on every ray.
+  const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
+  const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
+  const auto t = intersectPartDistance(a.shape, part, oo, od, double(tmin), double(tmax));
+  return t && float(*t) >= tmin && float(*t) <= tmax;
+}
+
 std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3& o, const vec3& d,
                                           float tmin, float tmax) {
   return intersectAnalyticPart(a, -1, o, d, tmin, tmax);

@@ -51,6 +51,10 @@ std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3&
 // The one-part variant (an Embree user primitive is one part).
 std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
                                               const vec3& d, float tmin, float tmax);
+// Whether intersectAnalyticPart finds a hit, without computing it (occlusion queries skip
+// the surface parameters of quadrics).
+bool analyticPartOccludes(const AnalyticInstance& a, int part, const vec3& o, const vec3& d,
+                          float tmin, float tmax);
 // World point and unit outward normal ((M^-1)^T n, right for mirrors too) at a part's uv.
 vec3 analyticPosition(const AnalyticInstance& a, int part, vec2 uv);
 vec3 analyticNormal(const AnalyticInstance& a, int part, vec2 uv);
