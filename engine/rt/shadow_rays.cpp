@@ -88,9 +88,14 @@ ShadowReceiver shadowReceiver(const WorldGeometry& world, const SurfaceHit& hit)
       const dvec3 p(hit.u, hit.v, std::bit_cast<float>(hit.primitive));
       return {sdfPosition(a, p), sdfNormal(a, p), a.magnitude};
     }
-    const vec2 uv(hit.u, hit.v);
-    return {analyticPosition(a, int(hit.primitive), uv), analyticNormal(a, int(hit.primitive), uv),
-            a.magnitude};
+    if (int(hit.primitive) >= partCount(a.shape))
+      throw Error("shadowReceiver: instance " + std::to_string(hit.instance) +
+                  " has no analytic part " + std::to_string(hit.primitive));
+    ShadowReceiver r;
+    analyticPositionAndNormal(a, int(hit.primitive), vec2(hit.u, hit.v), r.position,
+                              r.geometricNormal);
+    r.magnitude = a.magnitude;
+    return r;
   }
   if (hit.analytic || std::size_t(hit.primitive) >= mesh.indices.size() / 3)
     throw Error("shadowReceiver: primitive " + std::to_string(hit.primitive) +

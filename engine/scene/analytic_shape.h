@@ -63,6 +63,8 @@ std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, co
 // the gradient vanishes, its limit along the meridian u).
 dvec3 shapePoint(const AnalyticShape& s, int part, vec2 uv);
 dvec3 shapeNormal(const AnalyticShape& s, int part, vec2 uv);
+// Both at once, their trigonometry evaluated once (the two functions above call this).
+void shapePointAndNormal(const AnalyticShape& s, int part, vec2 uv, dvec3& point, dvec3& normal);
 // dp/du, the direction of increasing u, unit (the glTF tangent convention: w = +1 with the
 // bitangent cross(n, t)); caps and disc: +x, as the tessellation's planar uv map.
 dvec3 shapeTangent(const AnalyticShape& s, int part, vec2 uv);

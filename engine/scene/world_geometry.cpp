@@ -165,13 +165,29 @@ std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3&
   return intersectAnalyticPart(a, -1, o, d, tmin, tmax);
 }
 
+namespace {
+vec3 toWorldPoint(const AnalyticInstance& a, const dvec3& p) {
+  return vec3(dvec3(a.toWorld * glm::dvec4(p, 1.0)));
+}
+vec3 toWorldNormal(const AnalyticInstance& a, const dvec3& n) {
+  return vec3(glm::normalize(glm::transpose(glm::dmat3(a.toObject)) * n));
+}
+}  // namespace
+
 vec3 analyticPosition(const AnalyticInstance& a, int part, vec2 uv) {
-  return vec3(dvec3(a.toWorld * glm::dvec4(shapePoint(a.shape, part, uv), 1.0)));
+  return toWorldPoint(a, shapePoint(a.shape, part, uv));
 }
 
 vec3 analyticNormal(const AnalyticInstance& a, int part, vec2 uv) {
-  const dvec3 n = glm::transpose(glm::dmat3(a.toObject)) * shapeNormal(a.shape, part, uv);
-  return vec3(glm::normalize(n));
+  return toWorldNormal(a, shapeNormal(a.shape, part, uv));
+}
+
+void analyticPositionAndNormal(const AnalyticInstance& a, int part, vec2 uv, vec3& position,
+                               vec3& normal) {
+  dvec3 p, n;
+  shapePointAndNormal(a.shape, part, uv, p, n);
+  position = toWorldPoint(a, p);
+  normal = toWorldNormal(a, n);
 }
 
 std::size_t WorldGeometry::triangleCount() const {
