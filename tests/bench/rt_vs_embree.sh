@@ -71,9 +71,13 @@ for ((r = 1; r <= runs; ++r)); do
 done
 echo "load average after the ray runs: $(cut -d' ' -f1-3 /proc/loadavg)"
 
+# Ratios are taken per run (Diptych's pass and the tutorial of the same iteration, seconds
+# apart) and then the median over runs is printed with the range: on a loaded machine the
+# absolute rates of one program move by several times between runs, the ratios much less.
 python3 - "$out" "$runs" <<'PY'
 import json, re, statistics, sys
 out, runs = sys.argv[1], int(sys.argv[2])
+R = range(1, runs + 1)
 med = statistics.median
 
 def node(name, node_name, r):  # (ms, rays) of a node in run r
@@ -83,45 +87,50 @@ def node(name, node_name, r):  # (ms, rays) of a node in run r
             return t["cpu_ms"]["median"], t.get("counters", {}).get("rays", 0.0)
     raise SystemExit(f"{name}-{r}.json has no node {node_name}")
 
-def mrays(name, node_name):
-    return med([node(name, node_name, r)[1] / node(name, node_name, r)[0] / 1e3
-                for r in range(1, runs + 1)])
+def mrays(name, node_name, r):
+    ms, rays = node(name, node_name, r)
+    return rays / ms / 1e3
 
-def tutorial(prefix):
-    vals = []
-    for r in range(1, runs + 1):
-        m = re.search(r"^BENCHMARK_RENDER_MRAYPS_AVG ([0-9.e+-]+)", open(f"{out}/{prefix}-{r}.log").read(), re.M)
-        if m: vals.append(float(m.group(1)))
-    return med(vals) if vals else float("nan")
+def tutorial(prefix, r):
+    m = re.search(r"^BENCHMARK_RENDER_MRAYPS_AVG ([0-9.e+-]+)",
+                  open(f"{out}/{prefix}-{r}.log").read(), re.M)
+    return float(m.group(1)) if m else float("nan")
 
-tg, pt1, pt5 = tutorial("tg"), tutorial("pt1"), tutorial("pt5")
-print(f"\nEmbree tutorials (median of {runs}): triangle_geometry {tg:.2f} Mrays/s; pathtracer on "
-      f"whitted.obj, depth 1 {pt1:.2f}, depth 5 {pt5:.2f} Mrays/s")
+def pov_ms(r):
+    m = re.search(r"Trace Time:.*\(([0-9.]+) seconds\)", open(f"{out}/pov-{r}.log").read())
+    return float(m.group(1)) * 1e3 if m else float("nan")
+
+def fmt(values):
+    return f"{med(values):.2f}" + (f" ({min(values):.2f}-{max(values):.2f})" if len(values) > 1 else "")
+
+peers = {"triangle_geometry": "tg", "pathtracer depth 1": "pt1", "pathtracer depth 5": "pt5"}
+print(f"\nper run: " + "; ".join(
+    f"run {r}: " + ", ".join(f"{p} {tutorial(f, r):.2f}" for p, f in peers.items()) + " Mrays/s"
+    for r in R))
 rows = [("rt_shadows", "whitted", "hybrid", "shadows", "coherent"),
-        ("rt_shadows", "cornell", "cornell", "shadows", "coherent"),
+        ("rt_shadows (16 area samples)", "cornell", "cornell", "shadows", "coherent"),
         ("rt_reflection", "whitted", "hybrid", "reflection", "incoherent"),
         ("rt_transmission", "whitted", "hybrid", "transmission", "incoherent"),
         ("rt_whitted (reference)", "whitted", "whitted", "reference", "incoherent"),
         ("rt_distributed (4 spp)", "whitted", "distributed", "distributed", "incoherent"),
         ("rt_path (4 spp)", "whitted", "path", "path", "incoherent")]
+print(f"\nMedian over {runs} runs (range); ratio = Diptych / peer of the same run, then median.")
 print("\n| pass | scene | Diptych Mrays/s | peer | peer Mrays/s | ratio |")
 print("|---|---|---:|---|---:|---:|")
 for pass_name, scene, run_name, node_name, kind in rows:
-    d = mrays(run_name, node_name)
-    peers = ([("triangle_geometry", tg), ("pathtracer depth 1", pt1)] if kind == "coherent"
-             else [("pathtracer depth 5", pt5)])
-    for peer, p in peers:
-        print(f"| {pass_name} | {scene} | {d:.2f} | {peer} | {p:.2f} | {d / p:.2f}x |")
+    d = [mrays(run_name, node_name, r) for r in R]
+    names = (["triangle_geometry", "pathtracer depth 1"] if kind == "coherent"
+             else ["pathtracer depth 5"])
+    for peer in names:
+        p = [tutorial(peers[peer], r) for r in R]
+        ratio = [d[i] / p[i] for i in range(runs)]
+        print(f"| {pass_name} | {scene} | {fmt(d)} | {peer} | {fmt(p)} | {fmt(ratio)}x |")
 
-ref = med([node("whitted", "reference", r)[0] for r in range(1, runs + 1)])
-pov = []
-for r in range(1, runs + 1):
-    m = re.search(r"Trace Time:.*\(([0-9.]+) seconds\)", open(f"{out}/pov-{r}.log").read())
-    if m: pov.append(float(m.group(1)) * 1e3)
-pov_ms = med(pov) if pov else float("nan")
-print(f"\nWhitted reference vs POV-Ray 3.7, 640x480, depth 5, no AA (median of {runs}): "
-      f"diptych reference {ref:.1f} ms, povray Trace Time {pov_ms:.1f} ms, "
-      f"ratio diptych/povray {ref / pov_ms:.2f}")
+ref = [node("whitted", "reference", r)[0] for r in R]
+pov = [pov_ms(r) for r in R]
+ratio = [ref[i] / pov[i] for i in range(runs)]
+print(f"\nWhitted reference vs POV-Ray 3.7, 640x480, depth 5, no AA: diptych reference "
+      f"{fmt(ref)} ms, povray Trace Time {fmt(pov)} ms, ratio diptych/povray {fmt(ratio)}")
 PY
 
 echo

@@ -51,6 +51,8 @@ TEST(ShadowStreams, BatchEqualsSingleRayVisibilityForPointAreaAndNonCastingLight
       }
     }
     EXPECT_GT(shadowed, 50);  // the comparison covers occluded rays, not only lit ones
-    if (samples > 1) EXPECT_GT(partial, 20);
+    if (samples > 1) {
+      EXPECT_GT(partial, 20);
+    }
   }
 }
