@@ -5,6 +5,7 @@
 #include <embree3/rtcore.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "engine/rt/ray_counter.h"
 #include "engine/rt/rt_device.h"
 #include "engine/scene/camera_math.h"
+#include "engine/scene/sdf.h"
 #include "engine/scene/world_geometry.h"
 
 namespace diptych {
@@ -116,6 +118,7 @@ class RtScene {
     const Texture* alphaTexture = nullptr;  // whose .w multiplies alpha; null: none
     bool instanced = false;   // an instance of a shared prototype (Embree hits in object space)
     mat3 normalToWorld{1.f};  // instanced: the cofactor of the transform, for Hit::Ng
+    std::unique_ptr<SdfStats> sdfStats;  // this scene's step counters of an SDF object
     // Coverage of triangle `primitive` at Embree barycentrics (u, v); read-only, thread-safe.
     float coverage(std::uint32_t primitive, float u, float v) const;
   };
