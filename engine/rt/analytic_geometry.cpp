@@ -77,8 +77,8 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
     const PacketRay r = readRay(args->ray, n, i);
-    if (intersectAnalyticPart(a, int(args->primID), r.origin, r.direction, r.tnear, r.tfar,
-                              data.sdfStats.get()))
+    if (analyticPartOccludes(a, int(args->primID), r.origin, r.direction, r.tnear, r.tfar,
+                             data.sdfStats.get()))
       RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();  // Embree: hit
   }
 }

@@ -4,12 +4,12 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cstring>
 #include <string>
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/rt/analytic_geometry.h"
+#include "engine/rt/rt_scene_instancing.h"
 #include "engine/scene/sdf.h"
 #include "engine/shading/texture_sampling.h"
 
@@ -19,22 +19,6 @@ namespace {
 // Rays per stream call. Large enough for Embree to amortise its stream setup, small enough
 // that a tile's RTCRay array (48 bytes each) stays on the stack and TBB can balance tiles.
 constexpr std::size_t kTileRays = 256;
-
-RTCRay makeRay(const vec3& origin, const vec3& direction, float tnear, float tfar) {
-  RTCRay r{};
-  r.org_x = origin.x;
-  r.org_y = origin.y;
-  r.org_z = origin.z;
-  r.dir_x = direction.x;
-  r.dir_y = direction.y;
-  r.dir_z = direction.z;
-  r.tnear = tnear;
-  r.tfar = tfar;
-  r.time = 0.f;
-  r.mask = ~0u;  // ray masks are compiled out of Debian's Embree; set as the docs ask anyway
-  r.flags = 0;
-  return r;
-}
 
 // Embree filter function (intersection and occlusion alike): valid[i] == -1 marks a live hit;
 // setting it to 0 makes Embree ignore that hit and continue traversal, so the closest hit
@@ -75,9 +59,24 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
   scene_ = rtcNewScene(dev);
   device.check("rtcNewScene");
   rtcSetSceneBuildQuality(scene_, options.quality);
-  rtcSetSceneFlags(scene_, options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
+  const RTCSceneFlags flags = options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE;
+  rtcSetSceneFlags(scene_, flags);
 
   geometry_.resize(world.meshes.size());
+  // Repeated opaque triangle meshes: built once, instanced (rt_scene_instancing.h).
+  std::vector<std::vector<std::size_t>> groups;
+  std::vector<int> shared(world.meshes.size(), -1);  // group of each mesh, -1: none
+  if (scene && options.instancing) {
+    std::vector<bool> eligible(world.meshes.size());
+    for (std::size_t id = 0; id < world.meshes.size(); ++id) {
+      const WorldMesh& m = world.meshes[id];
+      eligible[id] = !(m.analytic && options.analytic) &&
+                     scene->material(m.material).alphaMode != AlphaMode::Mask;
+    }
+    groups = rt_detail::sharedMeshGroups(*scene, world, eligible);
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      for (const std::size_t id : groups[g]) shared[id] = int(g);
+  }
   bool warnedNoFilters = false;
   for (std::size_t id = 0; id < world.meshes.size(); ++id) {
     const WorldMesh& mesh = world.meshes[id];
@@ -106,23 +105,9 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
     }
     const std::size_t triangles = mesh.indices.size() / 3;
     if (triangles == 0 || mesh.positions.empty()) continue;
-    RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-    rtcSetGeometryBuildQuality(geom, options.quality);
-    // Copied, not shared: Embree requires shared vertex buffers to stay readable 16 bytes past
-    // the last element (an SSE load of the final vec3), which std::vector<vec3> does not
-    // promise. Embree-allocated buffers are padded. The values are bit-identical copies.
-    auto* vertices = static_cast<float*>(
-        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                sizeof(float) * 3, mesh.positions.size()));
-    auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(std::uint32_t) * 3, triangles));
-    device.check("allocating buffers for instance " + std::to_string(id));
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-      vertices[3 * i + 0] = mesh.positions[i].x;
-      vertices[3 * i + 1] = mesh.positions[i].y;
-      vertices[3 * i + 2] = mesh.positions[i].z;
-    }
-    std::memcpy(indices, mesh.indices.data(), sizeof(std::uint32_t) * 3 * triangles);
+    if (shared[id] >= 0) continue;  // added below as an instance of its group's prototype
+    RTCGeometry geom = rt_detail::newTriangleGeometry(
+        device, mesh.positions, mesh.indices, options.quality, "instance " + std::to_string(id));
     rtcSetGeometryUserData(geom, &data);
     if (data.alphaMasked) {
       if (rtcGetDeviceProperty(dev, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED)) {
@@ -141,6 +126,21 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
     rtcReleaseGeometry(geom);  // the scene holds its own reference
     device.check("adding instance " + std::to_string(id) + " (" + std::to_string(triangles) +
                  " triangles)");
+  }
+  for (const auto& group : groups) {
+    RTCScene proto = rt_detail::newPrototypeScene(device, *scene, world.meshes[group.front()],
+                                                  options.quality, flags);
+    prototypes_.push_back(proto);
+    for (const std::size_t id : group) {
+      const mat4& transform = scene->instances[std::size_t(world.meshes[id].instance)].transform;
+      RTCGeometry geom = rt_detail::newInstanceGeometry(device, proto, transform);
+      rtcAttachGeometryByID(scene_, geom, unsigned(id));
+      rtcReleaseGeometry(geom);
+      const mat3 linear(transform);
+      geometry_[id].instanced = true;
+      geometry_[id].normalToWorld = glm::determinant(linear) * glm::transpose(glm::inverse(linear));
+      ++instanced_;
+    }
   }
   rtcCommitScene(scene_);
   device.check("rtcCommitScene");
@@ -166,26 +166,31 @@ void RtScene::resetSdfStepStats() const {
 
 RtScene::~RtScene() {
   if (scene_) rtcReleaseScene(scene_);
+  for (RTCScene proto : prototypes_) rtcReleaseScene(proto);
 }
 
 std::optional<Hit> RtScene::intersect(const Ray& ray, float tnear, float tfar) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
-  rh.ray = makeRay(ray.origin, ray.direction, tnear, tfar);
+  rh.ray = toEmbreeRay({ray.origin, ray.direction, tnear, tfar});
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rh);
-  raysTraced_.fetch_add(1, std::memory_order_relaxed);
+  raysTraced_.add(1);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  // A hit inside a prototype names its instance in instID[0] and has an object-space Ng.
+  const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
+  const unsigned id = instanced ? rh.hit.instID[0] : rh.hit.geomID;
   Hit hit;
-  hit.instance = int(rh.hit.geomID);
+  hit.instance = int(id);
   hit.primitive = rh.hit.primID;
   hit.u = rh.hit.u;
   hit.v = rh.hit.v;
   hit.t = rh.ray.tfar;
   hit.Ng = vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-  hit.analytic = geometry_[rh.hit.geomID].analytic != nullptr;
+  if (instanced) hit.Ng = geometry_[id].normalToWorld * hit.Ng;
+  hit.analytic = geometry_[id].analytic != nullptr;
   return hit;
 }
 
@@ -193,42 +198,41 @@ bool RtScene::occluded(const vec3& origin, const vec3& direction, float tnear, f
   if (!(tnear <= tfar)) return false;  // inactive, as in the batch API
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay ray = makeRay(origin, direction, tnear, tfar);
+  RTCRay ray = toEmbreeRay({origin, direction, tnear, tfar});
   rtcOccluded1(scene_, &context, &ray);
-  raysTraced_.fetch_add(1, std::memory_order_relaxed);
+  raysTraced_.add(1);
   // Embree sets tfar to -inf on a hit (rtcOccluded1 docs).
   return ray.tfar < 0.f;
+}
+
+void RtScene::occludedTile(std::span<RTCRay> rays, bool coherent) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags =
+      coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  std::uint64_t active = 0;
+  for (const RTCRay& r : rays) active += r.tnear <= r.tfar ? 1 : 0;
+  rtcOccluded1M(scene_, &context, rays.data(), unsigned(rays.size()), sizeof(RTCRay));
+  raysTraced_.add(active);
 }
 
 void RtScene::occludedBatch(std::span<const OcclusionRay> rays, std::span<std::uint8_t> out,
                             bool coherent) const {
   if (out.size() < rays.size()) throw Error("RtScene::occludedBatch: output span too small");
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rays.size(), kTileRays),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      RTCIntersectContext context;
-                      rtcInitIntersectContext(&context);
-                      context.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                               : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-                      RTCRay tile[kTileRays];  // RTCRay is RTC_ALIGN(16), as rtcOccluded1M requires
-                      std::uint64_t active = 0;
-                      for (std::size_t begin = range.begin(); begin < range.end();
-                           begin += kTileRays) {
-                        const std::size_t count = std::min(kTileRays, range.end() - begin);
-                        for (std::size_t i = 0; i < count; ++i) {
-                          const OcclusionRay& r = rays[begin + i];
-                          tile[i] = makeRay(r.origin, r.direction, r.tnear, r.tfar);
-                          active += r.tnear <= r.tfar ? 1 : 0;
-                        }
-                        rtcOccluded1M(scene_, &context, tile, unsigned(count), sizeof(RTCRay));
-                        for (std::size_t i = 0; i < count; ++i) {
-                          const OcclusionRay& r = rays[begin + i];
-                          // An inactive ray (tnear > tfar) is untouched by Embree; it reports "not
-                          // occluded".
-                          out[begin + i] = (r.tnear <= r.tfar && tile[i].tfar < 0.f) ? 1 : 0;
-                        }
-                      }
-                      raysTraced_.fetch_add(active, std::memory_order_relaxed);
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, rays.size(), kTileRays),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        RTCRay tile[kTileRays];  // RTCRay is RTC_ALIGN(16), as rtcOccluded1M requires
+        for (std::size_t begin = range.begin(); begin < range.end(); begin += kTileRays) {
+          const std::size_t count = std::min(kTileRays, range.end() - begin);
+          for (std::size_t i = 0; i < count; ++i) tile[i] = toEmbreeRay(rays[begin + i]);
+          occludedTile({tile, count}, coherent);
+          // An inactive ray (tnear > tfar) is untouched by Embree; it reports "not
+          // occluded".
+          for (std::size_t i = 0; i < count; ++i)
+            out[begin + i] = rays[begin + i].tnear <= rays[begin + i].tfar && tile[i].tfar < 0.f;
+        }
+      });
 }
 
 }  // namespace diptych

@@ -4,13 +4,13 @@
 // hit (geomID, primID, u, v) reconstructs with interpolatePosition() to the point Embree tested.
 #include <embree3/rtcore.h>
 
-#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
 #include <vector>
 
+#include "engine/rt/ray_counter.h"
 #include "engine/rt/rt_device.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/sdf.h"
@@ -36,6 +36,21 @@ struct OcclusionRay {
   float tfar = 0.f;
 };
 
+// The Embree form of an occlusion ray (mask all ones, time 0, as the Embree 3 docs ask).
+inline RTCRay toEmbreeRay(const OcclusionRay& r) {
+  RTCRay e{};
+  e.org_x = r.origin.x;
+  e.org_y = r.origin.y;
+  e.org_z = r.origin.z;
+  e.tnear = r.tnear;
+  e.dir_x = r.direction.x;
+  e.dir_y = r.direction.y;
+  e.dir_z = r.direction.z;
+  e.tfar = r.tfar;
+  e.mask = ~0u;  // ray masks are compiled out of Debian's Embree; set as the docs ask anyway
+  return e;
+}
+
 struct RtSceneOptions {
   RTCBuildQuality quality = RTC_BUILD_QUALITY_MEDIUM;
   // RTC_SCENE_FLAG_ROBUST: watertight traversal, no missed hits on shared edges or at grazing
@@ -45,6 +60,10 @@ struct RtSceneOptions {
   // than as their tessellation. Off: every instance is its triangles (what the rasterizer
   // draws), e.g. to compare the G-buffer with Embree triangle for triangle.
   bool analytic = true;
+  // Meshes that a Scene places two or more times (same object-space triangles) are built once
+  // and instanced (engine/rt/rt_scene_instancing.h); needs the Scene constructor. Off: every
+  // instance is a world-space copy of its WorldMesh.
+  bool instancing = true;
 };
 
 class RtScene {
@@ -71,10 +90,16 @@ class RtScene {
   void occludedBatch(std::span<const OcclusionRay> rays, std::span<std::uint8_t> occludedOut,
                      bool coherent = false) const;
 
+  // One tile of Embree rays, built by the caller in its own per-thread buffer, traced as a
+  // stream (rtcOccluded1M) on the calling thread: rays[i].tfar becomes -inf where occluded.
+  // Inactive rays (tnear > tfar) are left alone by Embree and not counted. traceShadowRays
+  // generates its rays straight into such tiles, with no ray array for the whole frame.
+  void occludedTile(std::span<RTCRay> rays, bool coherent) const;
+
   // Rays traced by this scene since construction or the last reset (all entry points, all
   // threads): benchmarks divide by time for rays per second.
-  std::uint64_t raysTraced() const { return raysTraced_.load(std::memory_order_relaxed); }
-  void resetRayCount() { raysTraced_.store(0, std::memory_order_relaxed); }
+  std::uint64_t raysTraced() const { return raysTraced_.total(); }
+  void resetRayCount() { raysTraced_.reset(); }
 
   RTCScene handle() const { return scene_; }
 
@@ -91,7 +116,9 @@ class RtScene {
     float alpha = 1.f;                      // Material::alpha
     float alphaCutoff = 0.5f;               // Material::alphaCutoff
     const Texture* alphaTexture = nullptr;  // whose .w multiplies alpha; null: none
-    std::unique_ptr<SdfStats> sdfStats;     // this scene's step counters of an SDF object
+    bool instanced = false;   // an instance of a shared prototype (Embree hits in object space)
+    mat3 normalToWorld{1.f};  // instanced: the cofactor of the transform, for Hit::Ng
+    std::unique_ptr<SdfStats> sdfStats;  // this scene's step counters of an SDF object
     // Coverage of triangle `primitive` at Embree barycentrics (u, v); read-only, thread-safe.
     float coverage(std::uint32_t primitive, float u, float v) const;
   };
@@ -108,6 +135,9 @@ class RtScene {
   int analyticGeometries() const { return analytic_; }
   // Number of geometries with an alpha-mask filter installed.
   int alphaMaskedGeometries() const { return alphaMasked_; }
+  // Instances traced through a shared prototype, and the number of prototypes built.
+  int instancedGeometries() const { return instanced_; }
+  int prototypes() const { return int(prototypes_.size()); }
 
  private:
   RtScene(const RtDevice& device, const WorldGeometry& world, const Scene* scene,
@@ -116,8 +146,10 @@ class RtScene {
   std::vector<GeometryData> geometry_;  // one per WorldMesh; sized once, addresses are stable
   int alphaMasked_ = 0;
   int analytic_ = 0;
+  int instanced_ = 0;
   RTCScene scene_ = nullptr;
-  mutable std::atomic<std::uint64_t> raysTraced_{0};
+  std::vector<RTCScene> prototypes_;  // released after scene_
+  RayCounter raysTraced_;
 };
 
 }  // namespace diptych

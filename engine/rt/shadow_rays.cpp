@@ -1,13 +1,110 @@
 #include "engine/rt/shadow_rays.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
 #include <limits>
+#include <string>
 
+#include "engine/core/error.h"
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/ray_offset.h"
 
 namespace diptych {
+
+namespace {
+
+// The shadow rays of one receiver toward one light. A ray leaves from offsetRayOrigin() on the
+// side of the surface that faces its target; the origin depends only on that side, so it is
+// computed at most once per side here (an area light's samples share it) instead of once per
+// ray. Bit for bit the rays makeShadowRayTo() documents.
+class ReceiverRays {
+ public:
+  ReceiverRays(const Light& light, const ShadowReceiver& receiver)
+      : light_(light), receiver_(receiver) {}
+
+  OcclusionRay to(const vec3& target) {
+    OcclusionRay ray;
+    ray.tnear = 0.f;
+    ray.tfar = -1.f;  // inactive until proven otherwise
+    if (!light_.castsShadows) return ray;
+    const bool directional = light_.type == LightType::Directional;
+    const vec3 towardLight = directional ? -light_.direction : target - receiver_.position;
+    // Leave from the side of the surface that faces the light.
+    ray.origin = origin(glm::dot(receiver_.geometricNormal, towardLight) >= 0.f);
+    if (directional) {
+      const float len = glm::length(towardLight);
+      if (!(len > 0.f) || !std::isfinite(len)) return ray;
+      ray.direction = towardLight / len;
+      ray.tfar = std::numeric_limits<float>::infinity();
+      return ray;
+    }
+    const ShadowSegment segment = shadowSegmentTo(ray.origin, target);
+    ray.direction = segment.direction;
+    ray.tfar = segment.tfar;  // < 0 (inactive) when the origin is at the light
+    return ray;
+  }
+
+  // Ray `sample` of `count` (makeShadowSample).
+  OcclusionRay sample(int sample, int count, std::uint32_t seed) {
+    if (count <= 1) return to(light_.position);
+    const vec2 s = stratifiedSample(sample, count, seed);
+    return to(areaLightPoint(light_, s, receiver_.position));
+  }
+
+ private:
+  const vec3& origin(bool front) {
+    const int side = front ? 0 : 1;
+    if (!known_[side]) {
+      origin_[side] = offsetRayOrigin(
+          receiver_.position, front ? receiver_.geometricNormal : -receiver_.geometricNormal,
+          receiver_.magnitude);
+      known_[side] = true;
+    }
+    return origin_[side];
+  }
+  const Light& light_;
+  const ShadowReceiver& receiver_;
+  vec3 origin_[2];
+  bool known_[2] = {false, false};
+};
+
+// Rays per Embree stream call: Embree's own tutorials trace 8x8 tiles; 256 rays amortise the
+// stream setup and still fit a per-thread stack buffer (48 bytes each).
+constexpr std::size_t kTileRays = 256;
+
+}  // namespace
+
+ShadowReceiver shadowReceiver(const WorldGeometry& world, const SurfaceHit& hit) {
+  if (hit.instance < 0 || hit.instance >= int(world.meshes.size()))
+    throw Error("shadowReceiver: instance " + std::to_string(hit.instance) + " out of range");
+  const WorldMesh& mesh = world.meshes[std::size_t(hit.instance)];
+  if (hit.analytic && mesh.analytic) {
+    const AnalyticInstance& a = *mesh.analytic;
+    if (a.sdf) {  // SurfaceHit's SDF encoding: (u, v, bits of z) is the object-space point
+      const dvec3 p(hit.u, hit.v, std::bit_cast<float>(hit.primitive));
+      return {sdfPosition(a, p), sdfNormal(a, p), a.magnitude};
+    }
+    if (int(hit.primitive) >= partCount(a.shape))
+      throw Error("shadowReceiver: instance " + std::to_string(hit.instance) +
+                  " has no analytic part " + std::to_string(hit.primitive));
+    ShadowReceiver r;
+    analyticPositionAndNormal(a, int(hit.primitive), vec2(hit.u, hit.v), r.position,
+                              r.geometricNormal);
+    r.magnitude = a.magnitude;
+    return r;
+  }
+  if (hit.analytic || std::size_t(hit.primitive) >= mesh.indices.size() / 3)
+    throw Error("shadowReceiver: primitive " + std::to_string(hit.primitive) +
+                " out of range in instance " + std::to_string(hit.instance));
+  const std::uint32_t* tri = &mesh.indices[3 * std::size_t(hit.primitive)];
+  return {interpolatePosition(mesh, hit.primitive, hit.u, hit.v),
+          geometricNormal(mesh, hit.primitive),
+          vertexMagnitude(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]])};
+}
 
 OcclusionRay makeShadowRay(const Light& light, const ShadowReceiver& receiver) {
   return makeShadowRayTo(light, receiver, light.position);
@@ -15,28 +112,7 @@ OcclusionRay makeShadowRay(const Light& light, const ShadowReceiver& receiver) {
 
 OcclusionRay makeShadowRayTo(const Light& light, const ShadowReceiver& receiver,
                              const vec3& target) {
-  OcclusionRay ray;
-  ray.tnear = 0.f;
-  ray.tfar = -1.f;  // inactive until proven otherwise
-  if (!light.castsShadows) return ray;
-
-  const bool directional = light.type == LightType::Directional;
-  const vec3 towardLight = directional ? -light.direction : target - receiver.position;
-  // Leave from the side of the surface that faces the light.
-  const vec3 n = glm::dot(receiver.geometricNormal, towardLight) >= 0.f ? receiver.geometricNormal
-                                                                        : -receiver.geometricNormal;
-  ray.origin = offsetRayOrigin(receiver.position, n, receiver.magnitude);
-  if (directional) {
-    const float len = glm::length(towardLight);
-    if (!(len > 0.f) || !std::isfinite(len)) return ray;
-    ray.direction = towardLight / len;
-    ray.tfar = std::numeric_limits<float>::infinity();
-    return ray;
-  }
-  const ShadowSegment segment = shadowSegmentTo(ray.origin, target);
-  ray.direction = segment.direction;
-  ray.tfar = segment.tfar;  // < 0 (inactive) when the origin is at the light
-  return ray;
+  return ReceiverRays(light, receiver).to(target);
 }
 
 int shadowRaysPerReceiver(const Light& light, int areaSamples) {
@@ -45,17 +121,16 @@ int shadowRaysPerReceiver(const Light& light, int areaSamples) {
 
 OcclusionRay makeShadowSample(const Light& light, const ShadowReceiver& receiver, int sample,
                               int count, std::uint32_t seed) {
-  if (count <= 1) return makeShadowRay(light, receiver);
-  const vec2 s = stratifiedSample(sample, count, seed);
-  return makeShadowRayTo(light, receiver, areaLightPoint(light, s, receiver.position));
+  return ReceiverRays(light, receiver).sample(sample, count, seed);
 }
 
 float lightVisibility(const RtScene& rt, const Light& light, const ShadowReceiver& receiver,
                       int areaSamples, std::uint32_t seed) {
   const int count = shadowRaysPerReceiver(light, areaSamples);
   int visible = 0;
+  ReceiverRays rays(light, receiver);
   for (int s = 0; s < count; ++s) {
-    const OcclusionRay r = makeShadowSample(light, receiver, s, count, seed);
+    const OcclusionRay r = rays.sample(s, count, seed);
     visible += (r.tnear > r.tfar || !rt.occluded(r.origin, r.direction, r.tnear, r.tfar)) ? 1 : 0;
   }
   return float(visible) / float(count);
@@ -66,29 +141,43 @@ std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lig
                                    std::span<const std::uint32_t> seeds) {
   const std::size_t n = receivers.size();
   std::vector<float> visibility(lights.size() * n, 1.f);
-  // One light at a time, in chunks, so that many area samples do not need all rays at once.
-  constexpr std::size_t kChunkRays = std::size_t(1) << 20;
   for (std::size_t l = 0; l < lights.size(); ++l) {
-    const int count = shadowRaysPerReceiver(lights[l], areaSamples);
-    const std::size_t receiversPerChunk = std::max<std::size_t>(1, kChunkRays / std::size_t(count));
-    std::vector<OcclusionRay> rays;
-    std::vector<std::uint8_t> occluded;
-    for (std::size_t first = 0; first < n; first += receiversPerChunk) {
-      const std::size_t last = std::min(n, first + receiversPerChunk);
-      rays.resize((last - first) * std::size_t(count));
-      tbb::parallel_for(first, last, [&](std::size_t p) {
-        for (int s = 0; s < count; ++s)
-          rays[(p - first) * count + s] = makeShadowSample(
-              lights[l], receivers[p], s, count, seeds.empty() ? std::uint32_t(p) : seeds[p]);
-      });
-      occluded.assign(rays.size(), 0);
-      rt.occludedBatch(rays, occluded);
-      tbb::parallel_for(first, last, [&](std::size_t p) {
-        int visible = 0;
-        for (int s = 0; s < count; ++s) visible += occluded[(p - first) * count + s] ? 0 : 1;
-        visibility[l * n + p] = float(visible) / float(count);
-      });
-    }
+    const Light& light = lights[l];
+    if (!light.castsShadows) continue;  // every ray inactive: visible
+    const int count = shadowRaysPerReceiver(light, areaSamples);
+    float* out = visibility.data() + l * n;
+    // Each task generates its receivers' rays straight into a stack tile, traces the tile as a
+    // coherent stream (neighbouring receivers are neighbouring pixels, all aimed at one light)
+    // and counts the unoccluded ones: no per-frame ray or result arrays, no second pass.
+    const std::size_t grain = std::max<std::size_t>(1, kTileRays / std::size_t(count));
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        RTCRay tile[kTileRays];
+                        std::uint32_t owner[kTileRays];  // receiver of each ray in the tile
+                        bool active[kTileRays];
+                        std::size_t filled = 0;
+                        std::vector<int> visible(r.size(), 0);
+                        const auto flush = [&] {
+                          rt.occludedTile({tile, filled}, true);
+                          for (std::size_t i = 0; i < filled; ++i)
+                            visible[owner[i]] += active[i] && tile[i].tfar < 0.f ? 0 : 1;
+                          filled = 0;
+                        };
+                        for (std::size_t p = r.begin(); p < r.end(); ++p) {
+                          ReceiverRays rays(light, receivers[p]);
+                          const std::uint32_t seed = seeds.empty() ? std::uint32_t(p) : seeds[p];
+                          for (int s = 0; s < count; ++s) {
+                            const OcclusionRay ray = rays.sample(s, count, seed);
+                            tile[filled] = toEmbreeRay(ray);
+                            owner[filled] = std::uint32_t(p - r.begin());
+                            active[filled] = ray.tnear <= ray.tfar;
+                            if (++filled == kTileRays) flush();
+                          }
+                        }
+                        if (filled > 0) flush();
+                        for (std::size_t p = r.begin(); p < r.end(); ++p)
+                          out[p] = float(visible[p - r.begin()]) / float(count);
+                      });
   }
   return visibility;
 }

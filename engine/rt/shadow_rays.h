@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/rt/rt_scene.h"
+#include "engine/rt/surface_point.h"
 #include "engine/scene/scene.h"
 
 namespace diptych {
@@ -18,6 +19,11 @@ struct ShadowReceiver {
   vec3 geometricNormal{0.f};
   vec3 magnitude{0.f};
 };
+
+// The receiver at a surface hit: the position, face normal and offset magnitude that
+// makeSurfacePoint() computes, bit for bit, without resolving the material (a shadow ray needs
+// none). Throws Error for an instance or primitive out of range.
+ShadowReceiver shadowReceiver(const WorldGeometry& world, const SurfaceHit& hit);
 
 // The shadow ray for one receiver and one light, as traced by traceShadowRays():
 //  - origin: offsetRayOrigin() along the geometric normal, flipped to the light's side (so a

@@ -112,9 +112,8 @@ SurfacePoint makeAnalyticPoint(const Scene& scene, const WorldMesh& mesh, const 
   SurfacePoint s;
   s.hit = hit;
   s.uv = vec2(hit.u, hit.v);
-  s.position = analyticPosition(a, part, s.uv);
+  analyticPositionAndNormal(a, part, s.uv, s.position, s.faceNormal);
   s.positionMagnitude = a.magnitude;
-  s.faceNormal = analyticNormal(a, part, s.uv);
   s.frontFacing = glm::dot(s.faceNormal, incoming) <= 0.f;
   s.geometricNormal = s.frontFacing ? s.faceNormal : -s.faceNormal;
   s.shadingNormal = s.geometricNormal;  // exact: the gradient is the shading normal

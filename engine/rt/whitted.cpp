@@ -17,7 +17,7 @@ WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, con
 
 vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
-  rays_.fetch_add(1, std::memory_order_relaxed);
+  rays_.add(1);
   const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
   if (observer_) observer_({ray, depth, hit});
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
@@ -35,8 +35,7 @@ vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t s
     const shading::LightSample s = shading::sampleLight(lights_[i], p.position);
     if (s.radiance == vec3(0.f)) continue;  // no contribution: skip its shadow rays
     const float visibility = lightVisibility(rt_, light, receiver, settings_.areaSamples, seed);
-    rays_.fetch_add(std::uint64_t(shadowRaysPerReceiver(light, settings_.areaSamples)),
-                    std::memory_order_relaxed);
+    rays_.add(std::uint64_t(shadowRaysPerReceiver(light, settings_.areaSamples)));
     sum += shading::lightContribution(p.resolved, p.shadingNormal, v, s, visibility);
   }
   return sum;

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "engine/rt/ray_counter.h"
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
 #include "engine/scene/camera_math.h"
@@ -47,7 +48,7 @@ class WhittedTracer {
   vec3 reflected(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed) const;
   vec3 transmitted(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed) const;
 
-  std::uint64_t raysTraced() const { return rays_.load(std::memory_order_relaxed); }
+  std::uint64_t raysTraced() const { return rays_.total(); }
   // Called for every RAYTRACING call (not shadow rays), for inspecting or testing the ray tree.
   // Must be thread-safe if the tracer is used from several threads.
   void setRayObserver(std::function<void(const RayTreeEvent&)> observer) {
@@ -62,7 +63,7 @@ class WhittedTracer {
   const RtScene& rt_;
   WhittedSettings settings_;
   std::vector<shading::ShadingLight> lights_;  // scene_.lights converted once, not per hit
-  mutable std::atomic<std::uint64_t> rays_{0};
+  RayCounter rays_;
   std::function<void(const RayTreeEvent&)> observer_;
 };
 

@@ -152,8 +152,8 @@ void partBounds(const AnalyticShape& s, int part, dvec3& lo, dvec3& hi) {
   }
 }
 
-std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dvec3& o,
-                                      const dvec3& d, double tmin, double tmax) {
+std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, const dvec3& o,
+                                            const dvec3& d, double tmin, double tmax) {
   const double r = s.radius, h = s.height;
   std::optional<double> t;
   switch (s.type) {
@@ -172,6 +172,12 @@ std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dv
       t = part == 0 ? coneHit(r, h, o, d, tmin, tmax) : planeHit(-0.5 * h, r, o, d, tmin, tmax);
       break;
   }
+  return t;
+}
+
+std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dvec3& o,
+                                      const dvec3& d, double tmin, double tmax) {
+  const std::optional<double> t = intersectPartDistance(s, part, o, d, tmin, tmax);
   if (!t) return std::nullopt;
   return ShapeHit{*t, part, shapeUv(s, part, o + *t * d)};
 }
@@ -212,34 +218,43 @@ vec2 shapeUv(const AnalyticShape& s, int part, const dvec3& p) {
   return vec2(u < 1.f ? u : 0.f, float((p.y + 0.5 * h) / h));
 }
 
-dvec3 shapePoint(const AnalyticShape& s, int part, vec2 uv) {
+void shapePointAndNormal(const AnalyticShape& s, int part, vec2 uv, dvec3& point, dvec3& normal) {
   const double r = s.radius, h = s.height;
-  if (isPlanar(s, part))
-    return dvec3((double(uv.x) - 0.5) * 2.0 * r, planeY(s, part), (double(uv.y) - 0.5) * 2.0 * r);
-  const dvec3 dir = around(kTwoPi * double(uv.x));
-  if (s.type == ShapeType::Sphere) {
-    const double theta = std::numbers::pi * double(uv.y);
-    return r * (std::sin(theta) * dir + dvec3(0.0, std::cos(theta), 0.0));
-  }
-  const double y = (double(uv.y) - 0.5) * h;
-  const double rho = s.type == ShapeType::Cylinder ? r : r * (1.0 - double(uv.y));
-  return rho * dir + dvec3(0.0, y, 0.0);
-}
-
-dvec3 shapeNormal(const AnalyticShape& s, int part, vec2 uv) {
   if (isPlanar(s, part)) {
+    point = dvec3((double(uv.x) - 0.5) * 2.0 * r, planeY(s, part), (double(uv.y) - 0.5) * 2.0 * r);
     const bool up = s.type == ShapeType::Disc || (s.type == ShapeType::Cylinder && part == 1);
-    return dvec3(0.0, up ? 1.0 : -1.0, 0.0);
+    normal = dvec3(0.0, up ? 1.0 : -1.0, 0.0);
+    return;
   }
   const dvec3 dir = around(kTwoPi * double(uv.x));
   switch (s.type) {
-    case ShapeType::Sphere:  // grad(x^2+y^2+z^2-r^2) / 2 = p
-      return glm::normalize(shapePoint(s, part, uv));
+    case ShapeType::Sphere: {  // grad(x^2+y^2+z^2-r^2) / 2 = p
+      const double theta = std::numbers::pi * double(uv.y);
+      point = r * (std::sin(theta) * dir + dvec3(0.0, std::cos(theta), 0.0));
+      normal = glm::normalize(point);
+      return;
+    }
     case ShapeType::Cylinder:  // grad(x^2+z^2-r^2) / 2 = (x, 0, z)
-      return dir;
+      point = r * dir + dvec3(0.0, (double(uv.y) - 0.5) * h, 0.0);
+      normal = dir;
+      return;
     default:  // cone: grad / 2 = (x, k^2 s, z) = k s (cos phi, k, -sin phi) ~ (h cos, r, -h sin)
-      return glm::normalize(double(s.height) * dir + dvec3(0.0, double(s.radius), 0.0));
+      point = r * (1.0 - double(uv.y)) * dir + dvec3(0.0, (double(uv.y) - 0.5) * h, 0.0);
+      normal = glm::normalize(h * dir + dvec3(0.0, r, 0.0));
+      return;
   }
+}
+
+dvec3 shapePoint(const AnalyticShape& s, int part, vec2 uv) {
+  dvec3 point, normal;
+  shapePointAndNormal(s, part, uv, point, normal);
+  return point;
+}
+
+dvec3 shapeNormal(const AnalyticShape& s, int part, vec2 uv) {
+  dvec3 point, normal;
+  shapePointAndNormal(s, part, uv, point, normal);
+  return normal;
 }
 
 dvec3 shapeTangent(const AnalyticShape& s, int part, vec2 uv) {

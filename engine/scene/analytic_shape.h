@@ -52,12 +52,19 @@ std::optional<ShapeHit> intersectShape(const AnalyticShape& s, const dvec3& o, c
 std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dvec3& o,
                                       const dvec3& d, double tmin, double tmax);
 
+// intersectPart's distance alone, without the (trigonometric) surface parameters: what an
+// occlusion query needs.
+std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, const dvec3& o,
+                                            const dvec3& d, double tmin, double tmax);
+
 // The object-space point and unit outward normal of part at uv; the normal is the normalised
 // gradient of the part's implicit function (sphere x^2+y^2+z^2-r^2, cylinder x^2+z^2-r^2, cone
 // x^2+z^2-(r/h)^2 (h/2-y)^2; caps and disc: +-y), evaluated from uv (at the cone's apex, where
 // the gradient vanishes, its limit along the meridian u).
 dvec3 shapePoint(const AnalyticShape& s, int part, vec2 uv);
 dvec3 shapeNormal(const AnalyticShape& s, int part, vec2 uv);
+// Both at once, their trigonometry evaluated once (the two functions above call this).
+void shapePointAndNormal(const AnalyticShape& s, int part, vec2 uv, dvec3& point, dvec3& normal);
 // dp/du, the direction of increasing u, unit (the glTF tangent convention: w = +1 with the
 // bitangent cross(n, t)); caps and disc: +x, as the tessellation's planar uv map.
 dvec3 shapeTangent(const AnalyticShape& s, int part, vec2 uv);

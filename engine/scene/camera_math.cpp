@@ -19,16 +19,25 @@ mat4 reversedZProjection(const Camera& c, float aspect) {
   return p;
 }
 
+PinholeFrame::PinholeFrame(const Camera& c, int width, int height)
+    : position_(c.position),
+      forward_(glm::normalize(c.target - c.position)),
+      right_(glm::normalize(glm::cross(forward_, c.up))),
+      up_(glm::cross(right_, forward_)),
+      aspect_(float(width) / float(height)),
+      tanHalf_(std::tan(0.5f * c.verticalFov)),
+      width_(float(width)),
+      height_(float(height)) {}
+
+Ray PinholeFrame::ray(float x, float y) const {
+  const float ndcX = 2.f * x / width_ - 1.f;
+  const float ndcY = 1.f - 2.f * y / height_;
+  const vec3 d = forward_ + (ndcX * aspect_ * tanHalf_) * right_ + (ndcY * tanHalf_) * up_;
+  return {position_, glm::normalize(d)};
+}
+
 Ray primaryRay(const Camera& c, int width, int height, float x, float y) {
-  const float aspect = float(width) / float(height);
-  const float tanHalf = std::tan(0.5f * c.verticalFov);
-  const float ndcX = 2.f * x / float(width) - 1.f;
-  const float ndcY = 1.f - 2.f * y / float(height);
-  const vec3 forward = glm::normalize(c.target - c.position);
-  const vec3 right = glm::normalize(glm::cross(forward, c.up));
-  const vec3 up = glm::cross(right, forward);
-  const vec3 d = forward + (ndcX * aspect * tanHalf) * right + (ndcY * tanHalf) * up;
-  return {c.position, glm::normalize(d)};
+  return PinholeFrame(c, width, height).ray(x, y);
 }
 
 vec2 concentricDisk(vec2 s) {

@@ -18,6 +18,20 @@ struct Ray {
 // Ray through the point (x + sx, y + sy) of the image, sx, sy in [0,1); (0.5, 0.5) is the centre.
 Ray primaryRay(const Camera& camera, int width, int height, float x, float y);
 
+// primaryRay's camera frame (view axes, tan of the half angle, aspect), built once for a whole
+// image: primaryRay rebuilds it on every call (a tan, two normalisations, two cross products),
+// which per-pixel loops need not repeat. ray(x, y) == primaryRay(camera, width, height, x, y)
+// bit for bit: primaryRay is implemented with it.
+class PinholeFrame {
+ public:
+  PinholeFrame(const Camera& camera, int width, int height);
+  Ray ray(float x, float y) const;
+
+ private:
+  vec3 position_, forward_, right_, up_;
+  float aspect_, tanHalf_, width_, height_;
+};
+
 // Shirley & Chiu's concentric map from the unit square to the unit disc ("A Low Distortion Map
 // Between Disk and Square", JGT 2(3), 1997): strata of the square stay compact on the disc, so
 // stratified lens and disc-light samples stay stratified.

@@ -151,18 +151,44 @@ std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int par
   return hit;
 }
 
+bool analyticPartOccludes(const AnalyticInstance& a, int part, const vec3& o, const vec3& d,
+                          float tmin, float tmax, SdfStats* stats) {
+  if (a.sdf) return intersectAnalyticPart(a, part, o, d, tmin, tmax, stats).has_value();
+  // The same arithmetic as intersectAnalyticPart, so both agree on every ray.
+  const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
+  const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
+  const auto t = intersectPartDistance(a.shape, part, oo, od, double(tmin), double(tmax));
+  return t && float(*t) >= tmin && float(*t) <= tmax;
+}
+
 std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3& o, const vec3& d,
                                           float tmin, float tmax) {
   return intersectAnalyticPart(a, -1, o, d, tmin, tmax);
 }
 
+namespace {
+vec3 toWorldPoint(const AnalyticInstance& a, const dvec3& p) {
+  return vec3(dvec3(a.toWorld * glm::dvec4(p, 1.0)));
+}
+vec3 toWorldNormal(const AnalyticInstance& a, const dvec3& n) {
+  return vec3(glm::normalize(glm::transpose(glm::dmat3(a.toObject)) * n));
+}
+}  // namespace
+
 vec3 analyticPosition(const AnalyticInstance& a, int part, vec2 uv) {
-  return vec3(dvec3(a.toWorld * glm::dvec4(shapePoint(a.shape, part, uv), 1.0)));
+  return toWorldPoint(a, shapePoint(a.shape, part, uv));
 }
 
 vec3 analyticNormal(const AnalyticInstance& a, int part, vec2 uv) {
-  const dvec3 n = glm::transpose(glm::dmat3(a.toObject)) * shapeNormal(a.shape, part, uv);
-  return vec3(glm::normalize(n));
+  return toWorldNormal(a, shapeNormal(a.shape, part, uv));
+}
+
+void analyticPositionAndNormal(const AnalyticInstance& a, int part, vec2 uv, vec3& position,
+                               vec3& normal) {
+  dvec3 p, n;
+  shapePointAndNormal(a.shape, part, uv, p, n);
+  position = toWorldPoint(a, p);
+  normal = toWorldNormal(a, n);
 }
 
 std::size_t WorldGeometry::triangleCount() const {

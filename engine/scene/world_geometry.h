@@ -56,9 +56,16 @@ std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3&
 std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
                                               const vec3& d, float tmin, float tmax,
                                               SdfStats* stats = nullptr);
+// Whether intersectAnalyticPart finds a hit, without computing it (occlusion queries skip
+// the surface parameters of quadrics).
+bool analyticPartOccludes(const AnalyticInstance& a, int part, const vec3& o, const vec3& d,
+                          float tmin, float tmax, SdfStats* stats = nullptr);
 // World point and unit outward normal ((M^-1)^T n, right for mirrors too) at a part's uv.
 vec3 analyticPosition(const AnalyticInstance& a, int part, vec2 uv);
 vec3 analyticNormal(const AnalyticInstance& a, int part, vec2 uv);
+// Both, bit for bit, with the shape's trigonometry evaluated once (hot in the ray tracers).
+void analyticPositionAndNormal(const AnalyticInstance& a, int part, vec2 uv, vec3& position,
+                               vec3& normal);
 // SDF objects: world point and unit normal (central differences at the tolerance) of an
 // object-space hit point.
 vec3 sdfPosition(const AnalyticInstance& a, const dvec3& objectPoint);

@@ -51,6 +51,7 @@ void RtDistributedPass::execute(PassContext& c) {
   CpuImage& out = c.cpuWrite(color_);
   const WhittedTracer tracer(world.scene(), world.geometry(), world.rtScene(),
                              {maxDepth_, areaSamples_});
+  const PinholeFrame pinhole(camera, frame.width, frame.height);
   tbb::parallel_for(0, frame.height, [&](int y) {
     std::vector<int> lensStratum(std::size_t(spp_), 0);
     for (int x = 0; x < frame.width; ++x) {
@@ -63,8 +64,10 @@ void RtDistributedPass::execute(PassContext& c) {
       for (int s = 0; s < spp_; ++s) {
         const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pixelSeed);
         const vec2 lens = stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed);
-        const Ray ray = thinLensRay(camera, frame.width, frame.height, float(x) + offset.x,
-                                    float(y) + offset.y, lens);
+        const float px = float(x) + offset.x, py = float(y) + offset.y;
+        const Ray ray = camera.aperture > 0.f
+                            ? thinLensRay(camera, frame.width, frame.height, px, py, lens)
+                            : pinhole.ray(px, py);  // == thinLensRay with no aperture
         sum +=
             tracer.radiance(ray, 1, spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s)));
       }

@@ -31,14 +31,19 @@ void RtSecondaryPass::execute(PassContext& c) {
   const WhittedTracer tracer(scene, world.geometry(), world.rtScene(), {maxDepth_, areaSamples_});
   const bool reflection = kind_ == Kind::Reflection;
 
+  const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
-      if (const auto hit = exactTexel(hits, world.geometry(), frame.camera, x, y)) {
-        const Material& m =
-            scene.material(scene.meshes[scene.instances[hit->instance].mesh].material);
-        if (reflection ? m.kps > 0.f : m.kt > 0.f) {
-          const Ray eye = primaryRay(frame.camera, frame.width, frame.height, x + 0.5f, y + 0.5f);
+      // The material decides first: only its pixels pay for lifting an analytic texel.
+      const auto texel = hitsTexel(hits, x, y);
+      const Material* m =
+          texel ? &scene.material(
+                      scene.meshes[scene.instances.at(std::size_t(texel->instance)).mesh].material)
+                : nullptr;
+      if (m && (reflection ? m->kps > 0.f : m->kt > 0.f)) {
+        if (const auto hit = exactTexel(hits, world.geometry(), frame.camera, x, y)) {
+          const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
           const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
           const std::uint32_t seed = std::uint32_t(y * frame.width + x);
           // The G-buffer point is the lecture's depth 1; its secondary rays are depth 2.

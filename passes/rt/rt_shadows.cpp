@@ -41,18 +41,7 @@ void RtShadowsPass::execute(PassContext& c) {
     for (int x = 0; x < w; ++x) {
       const auto hit = exactTexel(hits, world.geometry(), c.frame().camera, x, y);
       if (!hit) continue;
-      if (hit->analytic) {
-        const SurfacePoint p = makeSurfacePoint(world.scene(), world.geometry(), *hit, vec3(0.f));
-        receivers[i] = {p.position, p.faceNormal, p.positionMagnitude};
-        pixelOf[i++] = std::uint32_t(y * w + x);
-        continue;
-      }
-      const WorldMesh& mesh = world.geometry().meshes.at(hit->instance);
-      const std::uint32_t* tri = &mesh.indices.at(3 * std::size_t(hit->primitive));
-      receivers[i] = {
-          interpolatePosition(mesh, hit->primitive, hit->u, hit->v),
-          geometricNormal(mesh, hit->primitive),
-          vertexMagnitude(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]])};
+      receivers[i] = shadowReceiver(world.geometry(), *hit);
       pixelOf[i++] = std::uint32_t(y * w + x);
     }
   });
