@@ -9,6 +9,7 @@
 
 #include "engine/core/error.h"
 #include "engine/gl/context.h"
+#include "engine/gl/glfw_window.h"
 
 namespace diptych::gl {
 namespace {
@@ -69,6 +70,7 @@ class GlfwContext final : public GlContext {
   int height() const override { return framebufferSize().second; }
   std::string_view name() const override { return "glfw"; }
   void swapBuffers() override { glfwSwapBuffers(window_); }
+  GLFWwindow* window() const { return window_; }
 
  protected:
   void makeCurrentNative() override { glfwMakeContextCurrent(window_); }
@@ -93,6 +95,11 @@ class GlfwContext final : public GlContext {
 };
 
 }  // namespace
+
+GLFWwindow* glfwWindowOf(GlContext& context) {
+  auto* glfw = dynamic_cast<GlfwContext*>(&context);
+  return glfw ? glfw->window() : nullptr;
+}
 
 std::unique_ptr<GlContext> createGlfwContext(int width, int height, bool visible) {
   return std::make_unique<GlfwContext>(width, height, visible);

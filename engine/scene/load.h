@@ -21,4 +21,8 @@ Scene loadJsonSceneUnvalidated(const std::filesystem::path& path);
 // "intensity":20}'); `where` names the source in errors (e.g. "--light").
 Light parseLightJson(const std::string& text, const std::string& where);
 
+// The "camera" object of a JSON file (a scene, or a camera the viewer saved), checked as in a
+// scene. near/far are 0 when the file gives neither (callers fit them: fitNearFar).
+Camera readCameraFile(const std::filesystem::path& path);
+
 }  // namespace diptych
