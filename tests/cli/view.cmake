@@ -43,6 +43,11 @@ camera dolly 0.9
 write-recipe saved
 overlay flip
 screenshot moved
+motion on 4
+camera orbit 5 0
+screenshot moving
+motion off
+screenshot rested
 split off
 overlay none
 resize 1 1
@@ -96,6 +101,19 @@ endif()
 json_get(moved.json overlay view overlay)
 if(NOT overlay STREQUAL "flip")
   message(FATAL_ERROR "[state] overlay ${overlay}")
+endif()
+
+# While the camera moves the frame renders at 1/4 size and no figures are computed; at rest,
+# full size with figures again.
+json_get(moving.json mvw size 0)
+json_get(moving.json mvh size 1)
+file(READ "${WORK_DIR}/moving.json" moving)
+string(JSON mvf TYPE "${moving}" figures)
+json_get(rested.json rw size 0)
+json_get(rested.json rf figures rmse)
+if(NOT mvw EQUAL 50 OR NOT mvh EQUAL 37 OR NOT mvf STREQUAL "NULL" OR NOT rw EQUAL 200
+   OR NOT rf GREATER 0)
+  message(FATAL_ERROR "[motion] moving ${mvw}x${mvh} figures ${mvf}; rested ${rw} rmse ${rf}")
 endif()
 
 # Huge: the window is large, the frame is capped at 2 Mpx (docs/viewer.md).

@@ -34,7 +34,7 @@ const std::map<std::string, Arity>& verbs() {
       {"slot", {1, 1, -1}},         {"param", {2, 2, -1}},   {"camera", {1, 4, 1}},
       {"split", {1, 2, 1}},         {"overlay", {1, 1, -1}}, {"exposure", {1, 1, 0}},
       {"resize", {2, 2, 0}},        {"frames", {1, 1, 0}},   {"screenshot", {1, 1, -1}},
-      {"write-recipe", {1, 1, -1}}, {"quit", {0, 0, -1}}};
+      {"write-recipe", {1, 1, -1}}, {"motion", {1, 2, 1}}, {"quit", {0, 0, -1}}};
   return v;
 }
 
@@ -56,7 +56,7 @@ std::vector<ScriptCommand> loadScript(const std::string& path) {
       throw InputError(path, place,
                        "unknown command '" + c.verb +
                            "' (slot, param, camera, split, overlay, exposure, resize, frames, "
-                           "screenshot, write-recipe, quit)");
+                           "screenshot, write-recipe, motion, quit)");
     if (c.args.size() < it->second.min || c.args.size() > it->second.max)
       throw InputError(path, place,
                        "'" + c.verb + "' takes " + std::to_string(it->second.min) + ".." +
@@ -81,6 +81,8 @@ std::vector<ScriptCommand> loadScript(const std::string& path) {
       throw InputError(path, place, "overlay is none, flip or abs");
     if (c.verb == "split" && c.args[0] != "on" && c.args[0] != "off")
       throw InputError(path, place, "expected 'split on [POSITION in 0..1]' or 'split off'");
+    if (c.verb == "motion" && (c.args[0] == "on") != (c.numbers.size() == 1))
+      throw InputError(path, place, "expected 'motion on FACTOR' or 'motion off'");
     if (c.verb == "param" && c.args[1].find('=') == std::string::npos)
       throw InputError(path, place, "expected 'param SLOT KEY=VALUE'");
     out.push_back(std::move(c));

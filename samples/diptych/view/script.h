@@ -10,7 +10,8 @@ namespace diptych::view {
 struct ScriptCommand {
   int line = 0;
   std::string verb;               // slot, param, camera, split, overlay, reference-samples,
-                                  // exposure, resize, frames, screenshot, write-recipe, quit
+                                  // exposure, resize, frames, screenshot, write-recipe,
+                                  // motion, quit
   std::vector<std::string> args;  // the words after the verb
   std::vector<double> numbers;    // numeric arguments where the verb takes numbers
 };

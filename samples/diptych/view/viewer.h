@@ -75,6 +75,7 @@ class Viewer {
   bool quit_ = false;
   double lastMotion_ = -1e9;  // glfwGetTime() of the last camera motion
   int reduction_ = 1;         // render at 1/reduction_ of the window while moving
+  int scriptMotion_ = 0;      // script "motion on FACTOR": > 0 acts as moving at that factor
   std::string pendingShot_;   // screenshot name to write after this frame is drawn
   int screenshots_ = 0;
   std::tuple<Overlay, float, ToneOperator> uploadedLook_{};  // what the textures show
