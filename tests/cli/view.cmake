@@ -34,6 +34,7 @@ endfunction()
 
 file(WRITE "${WORK_DIR}/session.txt" "# exact hybrid, then a raster shadow map, then a moved camera
 frames 1
+time 2
 screenshot hybrid
 slot visibility=shadow_map:resolution=256,bias=none
 screenshot raster
@@ -84,6 +85,11 @@ json_get(moved.json bias slots visibility params bias)
 if(NOT t STREQUAL "rt_shadows" OR NOT t2 STREQUAL "shadow_map" OR NOT res EQUAL 256
    OR NOT bias STREQUAL "constant")
   message(FATAL_ERROR "[state] slots: ${t}, ${t2} (resolution ${res}), bias ${bias}")
+endif()
+json_get(hybrid.json shade_ms timings nodes shade cpu_ms)
+json_get(hybrid.json shade_frames timings nodes shade frames)
+if(NOT shade_ms GREATER 0 OR NOT shade_frames EQUAL 2)
+  message(FATAL_ERROR "[timings] shade ${shade_ms} ms over ${shade_frames} frames")
 endif()
 json_get(hybrid.json r0 figures rmse)
 if(NOT r0 EQUAL 0)  # the hybrid against the hybrid reference: the same frame
@@ -138,6 +144,13 @@ endif()
 image_metric(moved.png rendered.png rmse p)
 if(NOT p EQUAL 0)
   message(FATAL_ERROR "[parity] viewer and render differ: rmse ${p}")
+endif()
+
+# The camera moved as asked: dolly 0.9 from (0,5,7) to the origin, orbiting kept the distance.
+json_get(saved.camera.json fd camera focus_distance)
+json_get(saved.camera.json tx camera target 0)
+if(NOT fd GREATER 7.7420 OR NOT fd LESS 7.7422 OR NOT tx EQUAL 0)  # 0.9 * sqrt(74) = 7.74209
+  message(FATAL_ERROR "[camera] distance ${fd}, target x ${tx}")
 endif()
 
 # The variants entry runs in compare.

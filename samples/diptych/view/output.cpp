@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "engine/core/error.h"
+#include "engine/core/timing.h"
 #include "engine/gl/context.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
@@ -59,13 +60,23 @@ void Viewer::screenshot(const std::string& name) {
                {"exposure", state_.exposure},
                {"window", {context_.width(), context_.height()}}};
   j["images"] = {{"frame", name + ".png"}, {"window", name + ".window.png"}};
-  if (const LiveGraph* live = session_.live()) {
-    nlohmann::json timings = nlohmann::json::object();
+  if (const LiveGraph* live = session_.live()) {  // the timing panel's numbers
+    nlohmann::json nodes = nlohmann::json::object();
     for (std::size_t i = 0; i < live->graph.nodes.size(); ++i) {
-      const auto& ms = live->executor->timings()[i].cpuMs;
-      if (!ms.empty()) timings[live->graph.nodes[i].name] = ms.back();
+      const NodeTiming& t = live->executor->timings()[i];
+      if (t.cpuMs.empty()) continue;
+      nlohmann::json& node = nodes[live->graph.nodes[i].name];
+      node = {{"cpu_ms", summarize(t.cpuMs).median}, {"frames", t.cpuMs.size()}};
+      if (!t.gpuMs.empty()) node["gpu_ms"] = summarize(t.gpuMs).median;
     }
-    j["last_frame_cpu_ms"] = timings;
+    nlohmann::json culled = nlohmann::json::object();
+    for (const GraphPass& p : live->graph.passes)
+      if (p.culled) culled[p.name] = p.cullReason;
+    j["timings"] = {{"method",
+                     "median over the frames since the graph's first (at most 32); CPU "
+                     "steady_clock per node, GL_TIME_ELAPSED for GL nodes and transfers"},
+                    {"nodes", nodes},
+                    {"culled", culled}};
   }
   writeJson(base.string() + ".json", j);
   say("wrote " + base.string() + ".png, .window.png, .json");

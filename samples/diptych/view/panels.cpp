@@ -71,9 +71,10 @@ std::optional<nlohmann::json> paramWidget(const ParamSpec& spec, const nlohmann:
 
 void Viewer::panels() {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
   ImGui::Begin("Diptych view");
+  ImGui::PushItemWidth(230);
   ImGui::TextWrapped("%s", session_.scenePath().c_str());
   ImGui::TextDisabled("%s", context_.info().renderer.c_str());
   if (const LiveGraph* live = session_.live())
@@ -98,9 +99,19 @@ void Viewer::panels() {
     ImGui::SliderFloat("exposure", &state_.exposure, -8.f, 8.f, "%+.1f EV");
   }
   if (ImGui::CollapsingHeader("Technique slots", ImGuiTreeNodeFlags_DefaultOpen)) slotPanel();
-  if (ImGui::CollapsingHeader("Compare", ImGuiTreeNodeFlags_DefaultOpen)) comparePanel();
-  if (ImGui::CollapsingHeader("Timings")) timingPanel();
   if (!state_.message.empty()) ImGui::TextWrapped("%s", state_.message.c_str());
+  ImGui::PopItemWidth();
+  ImGui::End();
+  // Comparison and timings on the right, so that the left keeps the slots.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 8, 8), ImGuiCond_FirstUseEver, ImVec2(1, 0));
+  ImGui::SetNextWindowSize(ImVec2(400, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  ImGui::Begin("Compare");
+  ImGui::PushItemWidth(200);
+  comparePanel();
+  ImGui::PopItemWidth();
+  if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) timingPanel();
   ImGui::End();
 }
 
@@ -173,7 +184,9 @@ void Viewer::timingPanel() {
   const LiveGraph* live = session_.live();
   if (!live) return;
   const CompiledGraph& g = live->graph;
-  ImGui::TextDisabled("median of the last frames; CPU steady_clock, GPU GL_TIME_ELAPSED");
+  if (ImGui::Button("time 10 frames")) session_.timeFrames(10);
+  ImGui::TextDisabled("median of the last <= 32 frames after the first;");
+  ImGui::TextDisabled("CPU steady_clock, GPU GL_TIME_ELAPSED (render --timings)");
   if (ImGui::BeginTable("timings", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn("node");
     ImGui::TableSetupColumn("dom");
@@ -191,7 +204,10 @@ void Viewer::timingPanel() {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(domainName(g.nodes[n].domain));
       ImGui::TableNextColumn();
-      ImGui::Text("%.2f", cpu);
+      if (t.cpuMs.empty())
+        ImGui::TextUnformatted("-");  // only the first frame ran: one-time work, not shown
+      else
+        ImGui::Text("%.2f", cpu);
       ImGui::TableNextColumn();
       if (t.gpuMs.empty())
         ImGui::TextUnformatted("-");

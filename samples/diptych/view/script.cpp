@@ -34,7 +34,8 @@ const std::map<std::string, Arity>& verbs() {
       {"slot", {1, 1, -1}},         {"param", {2, 2, -1}},   {"camera", {1, 4, 1}},
       {"split", {1, 2, 1}},         {"overlay", {1, 1, -1}}, {"exposure", {1, 1, 0}},
       {"resize", {2, 2, 0}},        {"frames", {1, 1, 0}},   {"screenshot", {1, 1, -1}},
-      {"write-recipe", {1, 1, -1}}, {"motion", {1, 2, 1}}, {"quit", {0, 0, -1}}};
+      {"write-recipe", {1, 1, -1}}, {"motion", {1, 2, 1}},   {"time", {1, 1, 0}},
+      {"quit", {0, 0, -1}}};
   return v;
 }
 
@@ -56,7 +57,7 @@ std::vector<ScriptCommand> loadScript(const std::string& path) {
       throw InputError(path, place,
                        "unknown command '" + c.verb +
                            "' (slot, param, camera, split, overlay, exposure, resize, frames, "
-                           "screenshot, write-recipe, motion, quit)");
+                           "screenshot, write-recipe, motion, time, quit)");
     if (c.args.size() < it->second.min || c.args.size() > it->second.max)
       throw InputError(path, place,
                        "'" + c.verb + "' takes " + std::to_string(it->second.min) + ".." +

@@ -79,6 +79,9 @@ void Viewer::execute(const ScriptCommand& c) {
   } else if (c.verb == "motion") {  // frames as while the camera moves, at 1/FACTOR size
     if (!n.empty() && (n[0] < 1 || n[0] > 8)) fail("motion FACTOR is in 1..8");
     scriptMotion_ = n.empty() ? 0 : int(n[0]);
+  } else if (c.verb == "time") {
+    if (n[0] < 1 || n[0] > 1000) fail("time takes a frame count in 1..1000");
+    session_.timeFrames(int(n[0]));
   } else if (c.verb == "quit") {
     say("quit (script " + place + ")");
     quit_ = true;

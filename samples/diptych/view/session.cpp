@@ -162,7 +162,8 @@ bool Session::render(int width, int height, bool withReference, bool wantFigures
     current_ =
         live_->executor->output(live_->graph.resources[live_->graph.outputs[0]].name).toImage();
     lastFrameMs_ = msSince(start);
-    ++live_->frames;
+    // The first frame's one-time work stays out of the timing panel, as render's --warmup.
+    if (++live_->frames == 1) live_->executor->clearTimings();
     stale_ = false;
     measured_ = false;
     figures_ = Figures{};  // they described the previous frame
@@ -182,6 +183,13 @@ bool Session::render(int width, int height, bool withReference, bool wantFigures
     changed = true;
   }
   return changed;
+}
+
+void Session::timeFrames(int frames) {
+  if (!live_) return;
+  live_->executor->clearTimings();
+  for (int f = 0; f < frames; ++f) live_->executor->runFrame();
+  live_->frames += frames;
 }
 
 void Session::renderReference(int width, int height) {

@@ -66,6 +66,9 @@ class Session {
   // Renders the current recipe at width x height (the reference too when `withReference`) and,
   // when `measure`, the figures. Returns false when nothing changed since the last call.
   bool render(int width, int height, bool withReference, bool measure);
+  // Runs the current graph `frames` more times (same camera) so that the timing panel holds a
+  // median of warm frames: a resting viewer renders nothing, so its panel has only what moved.
+  void timeFrames(int frames);
   const Image& current() const { return current_; }
   const Image& reference() const { return reference_; }
   const Image& errorMap() const { return errorMap_; }  // FLIP per pixel of the last measure

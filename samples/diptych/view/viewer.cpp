@@ -117,8 +117,7 @@ void Viewer::frame() {
   } else {
     handleInput();
   }
-  const bool moving =
-      scripted ? scriptMotion_ > 0 : glfwGetTime() - lastMotion_ < kMotionHoldS;
+  const bool moving = scripted ? scriptMotion_ > 0 : glfwGetTime() - lastMotion_ < kMotionHoldS;
   if (scripted && moving) reduction_ = scriptMotion_;
   const bool compare = state_.split || state_.overlay != Overlay::None;
   if (fbw >= kMinSide && fbh >= kMinSide) {
