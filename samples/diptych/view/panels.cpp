@@ -175,6 +175,7 @@ void Viewer::comparePanel() {
     return;
   }
   ImGui::Text("RMSE %.5g   FLIP mean %.4f", f.rmse, f.flipMean);
+  if (f.referenceSamples > 0) ImGui::TextDisabled("(against %d samples)", f.referenceSamples);
   if (f.visibility)
     ImGui::Text("visibility (light 0): acne %.2f%%  peter-panning %.2f%%  leak %.2f%%",
                 100 * f.acneRate, 100 * f.peterPanningRate, 100 * f.lightLeakRate);

@@ -47,6 +47,7 @@ std::map<std::string, CpuImage> probe(const Recipe& recipe, RenderWorld& world,
 nlohmann::json Figures::toJson() const {
   if (!valid) return nullptr;
   nlohmann::json j = {{"rmse", rmse}, {"flip_mean", flipMean}};
+  if (referenceSamples > 0) j["reference_samples"] = referenceSamples;
   if (visibility)
     j["visibility"] = {{"acne_rate", acneRate},
                        {"peter_panning_rate", peterPanningRate},
@@ -241,6 +242,7 @@ void Session::measure() {
   figures_.flipMean = m.at("flip_mean");
   errorMap_ = flipErrorMap(current_, reference_, options);
   figures_.valid = true;
+  figures_.referenceSamples = progressiveReference_ ? referenceSamples_ : 0;
   // The visibility slot's artifacts (docs/shadow-bias.md) against the exact producer's signal
   // on the exact hybrid's G-buffer, as `diptych sweep` measures them; light 0.
   const Recipe mine = recipe();

@@ -32,6 +32,7 @@ struct Figures {
   double rmse = 0, flipMean = 0;
   bool visibility = false;  // the visibility slot differs from the reference's: classifyShadows
   double acneRate = 0, peterPanningRate = 0, lightLeakRate = 0;
+  int referenceSamples = 0;  // the progressive path reference's count when measured (0: n/a)
   nlohmann::json toJson() const;
 };
 
