@@ -153,18 +153,42 @@ if(NOT fd GREATER 7.7420 OR NOT fd LESS 7.7422 OR NOT tx EQUAL 0)  # 0.9 * sqrt(
   message(FATAL_ERROR "[camera] distance ${fd}, target x ${tx}")
 endif()
 
-# The variants entry runs in compare.
-file(READ "${WORK_DIR}/saved.variants.json" variants)
-string(JSON name GET "${variants}" variants 0 name)
+# The variants entry runs in compare (small and one frame: this checks that it is usable).
+execute_process(COMMAND ${DIPTYCH} compare ${SCENE} --variants saved.variants.json --size 64x48
+                        --frames 1 --warmup 0 --out compare
+                WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET
+                TIMEOUT 600)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "[variants] compare failed: ${err}")
+endif()
+json_get(compare/results.json name variants 0 name)
 if(NOT name STREQUAL "saved")
-  message(FATAL_ERROR "[variants] ${variants}")
+  message(FATAL_ERROR "[variants] compare ran '${name}'")
 endif()
 
-# Quit at once; a camera file loaded at start.
+# A camera file loaded at start, the Whitted reference, a screenshot and quit.
+file(WRITE "${WORK_DIR}/whitted.txt" "screenshot whitted\nquit\n")
+run_view(whitted ${SCENE} --size 64x48 --camera saved.camera.json --reference whitted
+         --script whitted.txt)
+json_get(whitted.json ref reference)
+json_get(whitted.json wrmse figures rmse)
+json_get(whitted.json wfd camera focus_distance)
+if(NOT VIEW_OUT MATCHES "quit" OR NOT ref STREQUAL "whitted" OR NOT wrmse GREATER_EQUAL 0
+   OR NOT wfd STREQUAL fd)
+  message(FATAL_ERROR "[whitted] ${ref} rmse ${wrmse}, camera ${wfd} (saved ${fd})\n${VIEW_OUT}")
+endif()
 file(WRITE "${WORK_DIR}/quit.txt" "quit\n")
-run_view(quit ${SCENE} --size 64x48 --camera saved.camera.json --script quit.txt)
-if(NOT VIEW_OUT MATCHES "quit")
-  message(FATAL_ERROR "[quit] ${VIEW_OUT}")
+
+# A script command that fails once the window is open (a value its schema rejects): one error
+# line naming the script line, non-zero exit, the window closed.
+file(WRITE "${WORK_DIR}/bad_param.txt" "slot visibility=shadow_map\nparam visibility bias=bogus\nquit\n")
+execute_process(COMMAND ${XVFB} ${DIPTYCH} view ${SCENE} --size 64x48 --script bad_param.txt
+                WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET
+                TIMEOUT 300)
+string(REGEX MATCHALL "diptych: error:" errors "${err}")
+list(LENGTH errors count)
+if(rc EQUAL 0 OR NOT count EQUAL 1 OR NOT err MATCHES "bad_param.txt: line 2: .*bogus")
+  message(FATAL_ERROR "[bad_param] exit ${rc}, stderr: ${err}")
 endif()
 
 # Bad input: one error line, before any window (no display needed).

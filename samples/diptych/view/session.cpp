@@ -168,6 +168,7 @@ bool Session::render(int width, int height, bool withReference, bool wantFigures
     stale_ = false;
     measured_ = false;
     figures_ = Figures{};  // they described the previous frame
+    errorMap_ = Image();
     changed = true;
   }
   // The path reference refines while the camera rests, up to kMaxReferenceSamples; its figures

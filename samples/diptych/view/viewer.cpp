@@ -135,6 +135,7 @@ void Viewer::frame() {
       textures_->upload(textures_->current, session_.current(), tone);
       textures_->upload(textures_->reference, session_.reference(), tone);
       const Image& err = session_.errorMap();
+      textures_->heat = gl::Texture();  // none unless this frame has one (never a stale map)
       if (state_.overlay == Overlay::Flip && !err.empty())
         textures_->upload(textures_->heat, heatMap(err, 1.f), {});
       if (state_.overlay == Overlay::Abs && !session_.reference().empty() &&
@@ -146,7 +147,7 @@ void Viewer::frame() {
         textures_->upload(textures_->heat, heatMap(abs, peak > 0.f ? peak : 1.f), {});
       }
     }
-    drawImages(fbw, fbh);
+    drawImages();
   }
   panels();
   ImGui::Render();
@@ -162,7 +163,7 @@ void Viewer::frame() {
   context_.swapBuffers();
 }
 
-void Viewer::drawImages(int, int) {
+void Viewer::drawImages() {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   auto id = [](const gl::Texture& t) { return ImTextureID(std::intptr_t(t.id())); };
@@ -183,7 +184,6 @@ void Viewer::handleInput() {
   ImGuiIO& io = ImGui::GetIO();
   Camera& cam = session_.camera();
   bool moved = false;
-  static bool draggingWipe = false;
   if (!io.WantCaptureKeyboard) {
     if (ImGui::IsKeyPressed(GLFW_KEY_F)) state_.fly = !state_.fly;
     if (ImGui::IsKeyPressed(GLFW_KEY_HOME) || ImGui::IsKeyPressed(GLFW_KEY_BACKSPACE)) {
@@ -212,10 +212,10 @@ void Viewer::handleInput() {
   if (!io.WantCaptureMouse) {
     const float wipeX = state_.wipe * io.DisplaySize.x;
     if (ImGui::IsMouseClicked(0) && state_.split && std::abs(io.MousePos.x - wipeX) < 8.f)
-      draggingWipe = true;
+      draggingWipe_ = true;
     const ImVec2 d = io.MouseDelta;
     const bool drag = d.x != 0.f || d.y != 0.f;
-    if (draggingWipe && io.MouseDown[0]) {
+    if (draggingWipe_ && io.MouseDown[0]) {
       state_.wipe = std::clamp(io.MousePos.x / io.DisplaySize.x, 0.f, 1.f);
     } else if (drag && io.MouseDown[0] && !io.KeyShift) {
       if (state_.fly)
@@ -227,7 +227,7 @@ void Viewer::handleInput() {
       pan(cam, -d.x / io.DisplaySize.y, d.y / io.DisplaySize.y);
       moved = true;
     }
-    if (!io.MouseDown[0]) draggingWipe = false;
+    if (!io.MouseDown[0]) draggingWipe_ = false;
     if (io.MouseWheel != 0.f) {
       dolly(cam, std::pow(0.9f, io.MouseWheel));
       moved = true;

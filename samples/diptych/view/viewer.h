@@ -51,7 +51,7 @@ class Viewer {
   void handleInput();
   bool runScriptStep();  // false when the script is done
   void execute(const ScriptCommand& c);
-  void drawImages(int width, int height);
+  void drawImages();  // the frame, the wipe and the heat map, behind the panels
   void panels();
   void slotPanel();
   void comparePanel();
@@ -73,6 +73,7 @@ class Viewer {
   std::size_t scriptNext_ = 0;
   int waitFrames_ = 0;
   bool quit_ = false;
+  bool draggingWipe_ = false;
   double lastMotion_ = -1e9;  // glfwGetTime() of the last camera motion
   int reduction_ = 1;         // render at 1/reduction_ of the window while moving
   int scriptMotion_ = 0;      // script "motion on FACTOR": > 0 acts as moving at that factor
