@@ -3,6 +3,9 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <dlfcn.h>
+#include <link.h>
+
 #include <cstdlib>
 #include <mutex>
 #include <string>
@@ -21,6 +24,23 @@ thread_local std::string lastGlfwError;
 
 void onGlfwError(int code, const char* description) {
   lastGlfwError = "GLFW error " + std::to_string(code) + ": " + description;
+}
+
+// glfwTerminate closes the X display, and libGLX_mesa then dlcloses swrast_dri.so, whose
+// one-time driver allocations stay referenced only from its unmapped globals: LeakSanitizer
+// reports them from an "<unknown module>" that no suppression matches (issue 7). Marking every
+// library loaded with the first window RTLD_NODELETE keeps the driver mapped until exit, so its
+// globals are scanned and tests/lsan_suppressions.txt applies (as tests/unit/test_gl_glfw.cpp
+// does for the unit tests); a process that opens a second window also reuses the loaded driver.
+void keepLoadedLibrariesUntilExit() {
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, std::size_t, void*) {
+        if (info->dlpi_name && *info->dlpi_name)  // RTLD_NOLOAD: only what is already mapped
+          if (void* handle = dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE))
+            dlclose(handle);
+        return 0;
+      },
+      nullptr);
 }
 
 class GlfwContext final : public GlContext {
@@ -56,6 +76,7 @@ class GlfwContext final : public GlContext {
     try {
       makeCurrentNative();
       initialize();
+      keepLoadedLibrariesUntilExit();
     } catch (...) {
       release();
       throw;

@@ -32,7 +32,7 @@ struct ViewOptions {
 void runView(const ViewOptions& o) {
   if (o.verbose) setLogLevel(spdlog::level::debug);
   // Every input is read and checked before a window opens, so a bad one is one error line.
-  const auto [width, height] = parseSize(o.size, 16384);
+  const auto [width, height] = parseSize(o.size, 8192);
   const auto tone = parseToneOperator(o.tonemap);
   if (!tone) throw InputError("--tonemap", "", "expected clamp, reinhard or aces");
   if (!std::filesystem::is_directory(o.out))
