@@ -122,7 +122,7 @@ void runRender(const RenderOptions& o) {
   Camera camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds());
   if (auto line = applyLighting(scene, camera, o.lighting)) log().warn("{}", *line);
   if (!o.cameraFile.empty()) {  // after the default lighting, which the scene's camera placed
-    camera = readCameraFile(o.cameraFile);
+    camera = readCameraFile(o.cameraFile, scene.worldOrigin);
     if (camera.znear == 0.f) fitNearFar(camera, scene.bounds());
   }
   Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);

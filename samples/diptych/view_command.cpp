@@ -55,7 +55,7 @@ void runView(const ViewOptions& o) {
       }
   std::optional<Camera> start;
   if (!o.camera.empty()) {
-    start = readCameraFile(o.camera);
+    start = readCameraFile(o.camera, scene.worldOrigin);
     if (start->znear == 0.f) fitNearFar(*start, scene.bounds());
   }
 

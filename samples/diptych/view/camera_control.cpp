@@ -71,10 +71,11 @@ float fovDegrees(float radians) {
   return base;
 }
 
-nlohmann::json cameraToJson(const Camera& c) {
+nlohmann::json cameraToJson(const Camera& c, const glm::dvec3& worldOrigin) {
   auto v = [](const vec3& a) { return nlohmann::json::array({a.x, a.y, a.z}); };
-  return {{"position", v(c.position)},
-          {"target", v(c.target)},
+  auto file = [&](const vec3& a) { return v(vec3(glm::dvec3(a) + worldOrigin)); };
+  return {{"position", file(c.position)},
+          {"target", file(c.target)},
           {"up", v(c.up)},
           {"fov", fovDegrees(c.verticalFov)},
           {"aperture", c.aperture},

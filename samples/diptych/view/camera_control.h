@@ -29,6 +29,8 @@ inline void snapFov(Camera& c) {
 
 // The camera as a JSON scene's "camera" object (docs/scene-format.md), near/far included so
 // that a renderer reading it back gets the same clip range.
-nlohmann::json cameraToJson(const Camera& camera);
+// `worldOrigin`: where a rebased scene's file origin went (Scene::worldOrigin); position and
+// target are written in the file's coordinates (+ worldOrigin, in double), as cameras are read.
+nlohmann::json cameraToJson(const Camera& camera, const glm::dvec3& worldOrigin = {});
 
 }  // namespace diptych::view

@@ -96,12 +96,12 @@ void Viewer::writeRecipe(const std::string& name) {
 }
 
 void Viewer::saveCamera(const std::filesystem::path& file) {
-  writeJson(file, {{"camera", cameraToJson(session_.camera())}});
+  writeJson(file, {{"camera", cameraToJson(session_.camera(), session_.scene().worldOrigin)}});
   say("saved camera to " + file.string());
 }
 
 void Viewer::loadCamera(const std::filesystem::path& file) {
-  Camera c = readCameraFile(file);  // InputError naming the file and key
+  Camera c = readCameraFile(file, session_.scene().worldOrigin);  // InputError: file and key
   if (c.znear == 0.f) fitNearFar(c, session_.scene().bounds());
   session_.camera() = c;
   session_.cameraChanged();

@@ -271,9 +271,12 @@ nlohmann::json Session::stateJson() const {
   for (const TechniqueSlot& s : techniqueSlots())
     if (auto state = slotState(s.name))
       slots[s.name] = {{"type", state->type}, {"params", state->params}};
-  nlohmann::json j = {
-      {"scene", scenePath_}, {"camera", cameraToJson(camera_)}, {"recipe", recipeToJson(recipe())},
-      {"slots", slots},      {"reference", referenceText_},     {"figures", figures_.toJson()}};
+  nlohmann::json j = {{"scene", scenePath_},
+                      {"camera", cameraToJson(camera_, scene_.worldOrigin)},
+                      {"recipe", recipeToJson(recipe())},
+                      {"slots", slots},
+                      {"reference", referenceText_},
+                      {"figures", figures_.toJson()}};
   if (progressiveReference_) j["reference_samples"] = referenceSamples_;
   if (live_) j["size"] = {live_->graph.frame.width, live_->graph.frame.height};
   return j;
