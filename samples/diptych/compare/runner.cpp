@@ -26,7 +26,12 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
   for (std::size_t n = 0; n < run.graph.nodes.size(); ++n) {
     const double ms = summarize(run.timings[n].cpuMs).median;
     run.passMs[run.graph.nodes[n].name] = ms;
-    run.totalMs += ms;
+    // Readbacks of signals requested only for the per-slot metrics are measurement, not frame
+    // work: the frame's own output (outputs[0], the image) still counts.
+    const GraphNode& node = run.graph.nodes[n];
+    const bool measurementOnly = node.forOutputOnly && !outputs.empty() &&
+                                 run.graph.resources[node.resource].name != outputs.front();
+    if (!measurementOnly) run.totalMs += ms;
     if (auto it = run.timings[n].counters.find("rays"); it != run.timings[n].counters.end())
       run.rays += it->second;
   }
