@@ -3,12 +3,16 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <dlfcn.h>
+#include <link.h>
+
 #include <cstdlib>
 #include <mutex>
 #include <string>
 
 #include "engine/core/error.h"
 #include "engine/gl/context.h"
+#include "engine/gl/glfw_window.h"
 
 namespace diptych::gl {
 namespace {
@@ -20,6 +24,23 @@ thread_local std::string lastGlfwError;
 
 void onGlfwError(int code, const char* description) {
   lastGlfwError = "GLFW error " + std::to_string(code) + ": " + description;
+}
+
+// glfwTerminate closes the X display, and libGLX_mesa then dlcloses swrast_dri.so, whose
+// one-time driver allocations stay referenced only from its unmapped globals: LeakSanitizer
+// reports them from an "<unknown module>" that no suppression matches (issue 7). Marking every
+// library loaded with the first window RTLD_NODELETE keeps the driver mapped until exit, so its
+// globals are scanned and tests/lsan_suppressions.txt applies (as tests/unit/test_gl_glfw.cpp
+// does for the unit tests); a process that opens a second window also reuses the loaded driver.
+void keepLoadedLibrariesUntilExit() {
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, std::size_t, void*) {
+        if (info->dlpi_name && *info->dlpi_name)  // RTLD_NOLOAD: only what is already mapped
+          if (void* handle = dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE))
+            dlclose(handle);
+        return 0;
+      },
+      nullptr);
 }
 
 class GlfwContext final : public GlContext {
@@ -55,6 +76,7 @@ class GlfwContext final : public GlContext {
     try {
       makeCurrentNative();
       initialize();
+      keepLoadedLibrariesUntilExit();
     } catch (...) {
       release();
       throw;
@@ -69,6 +91,7 @@ class GlfwContext final : public GlContext {
   int height() const override { return framebufferSize().second; }
   std::string_view name() const override { return "glfw"; }
   void swapBuffers() override { glfwSwapBuffers(window_); }
+  GLFWwindow* window() const { return window_; }
 
  protected:
   void makeCurrentNative() override { glfwMakeContextCurrent(window_); }
@@ -93,6 +116,11 @@ class GlfwContext final : public GlContext {
 };
 
 }  // namespace
+
+GLFWwindow* glfwWindowOf(GlContext& context) {
+  auto* glfw = dynamic_cast<GlfwContext*>(&context);
+  return glfw ? glfw->window() : nullptr;
+}
 
 std::unique_ptr<GlContext> createGlfwContext(int width, int height, bool visible) {
   return std::make_unique<GlfwContext>(width, height, visible);

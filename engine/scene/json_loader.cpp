@@ -575,4 +575,17 @@ Light parseLightJson(const std::string& text, const std::string& where) {
   return readLight(JsonObject(value, "light", where));
 }
 
+Camera readCameraFile(const std::filesystem::path& path, const glm::dvec3& worldOrigin) {
+  const json document = parseFile(path);
+  JsonObject top(document, "", path.string());
+  auto camera = top.object("camera");
+  if (!camera) top.fail("camera", "missing: expected a \"camera\" object as in a JSON scene");
+  Scene scene;  // readCamera's checks, unchanged; other keys (a whole scene file) are ignored
+  readCamera(std::move(*camera), scene);
+  Camera c = scene.camera;
+  c.position = vec3(glm::dvec3(c.position) - worldOrigin);
+  c.target = vec3(glm::dvec3(c.target) - worldOrigin);
+  return c;
+}
+
 }  // namespace diptych

@@ -21,4 +21,10 @@ Scene loadJsonSceneUnvalidated(const std::filesystem::path& path);
 // "intensity":20}'); `where` names the source in errors (e.g. "--light").
 Light parseLightJson(const std::string& text, const std::string& where);
 
+// The "camera" object of a JSON file (a scene, or a camera the viewer saved), checked as in a
+// scene, moved into a rebased world (position and target - worldOrigin, in double: the file is
+// in the scene file's coordinates). near/far are 0 when the file gives neither (callers fit
+// them: fitNearFar).
+Camera readCameraFile(const std::filesystem::path& path, const glm::dvec3& worldOrigin = {});
+
 }  // namespace diptych

@@ -9,6 +9,7 @@
 #include "samples/diptych/passes_command.h"
 #include "samples/diptych/render_command.h"
 #include "samples/diptych/sweep_command.h"
+#include "samples/diptych/view_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Diptych: rasterization tricks beside their exact ray-traced answers"};
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
   diptych::cli::addPassesCommand(app, exitCode);
   diptych::cli::addSweepCommand(app, exitCode);
   diptych::cli::addShadowBiasCommand(app, exitCode);
+  diptych::cli::addViewCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

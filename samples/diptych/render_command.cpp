@@ -33,7 +33,7 @@ namespace diptych::cli {
 namespace {
 
 struct RenderOptions {
-  std::string scene, recipe, size = "640x480", out = "out.png", graphOut, timingsOut;
+  std::string scene, recipe, cameraFile, size = "640x480", out = "out.png", graphOut, timingsOut;
   std::vector<std::string> outputs;  // --output, repeatable
   std::string context = "auto";
   std::vector<std::string> slots;
@@ -122,9 +122,13 @@ void runRender(const RenderOptions& o) {
 
   Scene scene = loadScene(o.scene);
   for (const std::string& w : scene.warnings) log().warn("{}", w);
-  const Camera camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds());
+  Camera camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds());
   if (auto line = applyLighting(scene, camera, o.lighting)) log().warn("{}", *line);
   applyShadingOption(scene, o.shading);
+  if (!o.cameraFile.empty()) {  // after the default lighting, which the scene's camera placed
+    camera = readCameraFile(o.cameraFile, scene.worldOrigin);
+    if (camera.znear == 0.f) fitNearFar(camera, scene.bounds());
+  }
   Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);
   for (const std::string& text : o.slots)
     applySlotOverride(recipe, parseSlotOverride(text), builtinPasses());
@@ -203,6 +207,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--recipe", options->recipe,
                   "Frame-graph recipe (JSON); default: the hybrid frame");
   cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--camera", options->cameraFile,
+                  "Camera from a JSON file's \"camera\" object (a scene, or one `diptych view` "
+                  "saved) instead of the scene's");
   cmd->add_option("--out", options->out, "Output image (.png sRGB tone-mapped, .exr/.hdr linear)")
       ->capture_default_str();
   cmd->add_option("--slot", options->slots,
