@@ -40,9 +40,14 @@ layout(binding = 1) uniform sampler2DArray uShadowMaps;
 
 uniform int uLight;  // -1: a layer with no light, written as lit
 uniform int uResolution;
-uniform int uBias;
-uniform int uFilter;
-uniform int uKernel;
+// Light kind, bias mode, filter and PCF kernel are compile-time constants: one program per
+// combination (passes/raster/shadow_map_lookup.cpp), as a GPU engine builds shader
+// permutations. llvmpipe runs both sides of every branch under a lane mask, so with them as
+// uniforms every tap paid for every bias mode and the cube-edge path (docs/benchmarks.md).
+const int uBias = DIPTYCH_BIAS;
+const int uFilter = DIPTYCH_FILTER;
+const int uKernel = DIPTYCH_KERNEL;
+const int gKind = DIPTYCH_KIND;
 uniform int uTaps;
 uniform float uConstantBias;     // world units along the light ray
 uniform float uNormalScale;      // texel footprints
@@ -55,7 +60,7 @@ uniform vec2 uPoisson[64];
 layout(location = 0) out float outVisibility;
 
 // The current light and receiver, set once in main() (initialised so no path reads garbage).
-int gKind = KIND_UNSHADOWED, gFirst = 0;
+int gFirst = 0;
 vec3 gLightPos = vec3(0.0), gLightDir = vec3(0.0);
 float gNear = 1.0, gFar = 2.0, gTexelScale = 0.0, gLightSize = 0.0;
 vec3 gP = vec3(0.0), gPb = vec3(0.0);  // exact surface point, biased lookup point
@@ -198,7 +203,6 @@ void main() {
   }
   SceneSurface s = surfaceFromHits(texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
   ShadowLight light = shadowLights[uLight];
-  gKind = light.info.x;
   gFirst = light.info.y;
   gLightPos = light.positionNear.xyz;
   gNear = light.positionNear.w;

@@ -3,6 +3,7 @@
 // in the pass: a compiled graph may outlive its context). Several shadow_map passes in one graph
 // (e.g. two bias modes side by side) share the programs; each execution renders its maps, then
 // looks them up, before the next pass runs, so sharing the map textures is safe.
+#include <array>
 #include <map>
 #include <utility>
 #include <vector>
@@ -32,7 +33,10 @@ class ShadowMapGl {
 
  private:
   void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);
-  gl::Program depth_, lookup_;
+  // The lookup program for one (light kind, bias, filter, kernel), compiled on first use.
+  const gl::Program& lookupProgram(ViewKind kind, const Settings& settings);
+  gl::Program depth_;
+  std::map<std::array<int, 4>, gl::Program> lookups_;
   gl::Program alphaDepth_;  // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
   gl::Framebuffer depthFbo_, lookupFbo_;
   gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle

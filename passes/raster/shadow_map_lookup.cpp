@@ -7,6 +7,7 @@
 
 #include "engine/gl/bindings.h"
 #include "engine/gl/debug.h"
+#include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 #include "passes/raster/shadow_map_gl.h"
@@ -73,6 +74,19 @@ void ShadowMapGl::uploadFrusta(const std::vector<LightFrustum>& frusta, const Se
   uploadArray(lights_, lights);
 }
 
+const gl::Program& ShadowMapGl::lookupProgram(ViewKind kind, const Settings& s) {
+  const int kernel = s.filter == Filter::Pcf ? s.kernel : 1;  // only PCF reads the kernel
+  gl::Program& program = lookups_[{int(kind), int(s.bias), int(s.filter), kernel}];
+  if (!program) {
+    program = gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"},
+                              {{"DIPTYCH_KIND", std::to_string(int(kind))},
+                               {"DIPTYCH_BIAS", std::to_string(int(s.bias))},
+                               {"DIPTYCH_FILTER", std::to_string(int(s.filter))},
+                               {"DIPTYCH_KERNEL", std::to_string(kernel)}});
+  }
+  return program;
+}
+
 void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& frusta,
                          const Settings& s, const gl::Texture& maps, const gl::Texture& gbuffer,
                          const gl::Texture& visibility) {
@@ -88,20 +102,21 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
 
   const Aabb& b = world.geometry().bounds;
   const float diagonal = b.empty() ? 1.f : glm::length(b.hi - b.lo);
-  lookup_.set("uLightCount", shading.lightCount);
-  lookup_.set("uResolution", maps.width());
-  lookup_.set("uBias", int(s.bias));
-  lookup_.set("uFilter", int(s.filter));
-  lookup_.set("uKernel", s.kernel);
-  lookup_.set("uTaps", s.taps);
-  lookup_.set("uConstantBias", s.constantBias);
-  lookup_.set("uNormalScale", s.normalScale);
-  lookup_.set("uPlaneEpsilon", s.planeEpsilon);
-  lookup_.set("uAdaptiveEpsilon", s.adaptiveEpsilon * diagonal);  // scene-scaled, world units
-  lookup_.set("uRadius", s.radius);
-  lookup_.set("uMaxRadius", s.maxRadius);
-  for (int i = 0; i < int(poisson_.size()); ++i)
-    lookup_.set(("uPoisson[" + std::to_string(i) + "]").c_str(), poisson_[std::size_t(i)]);
+  const auto setUniforms = [&](const gl::Program& p) {
+    p.set("uLightCount", shading.lightCount);
+    p.set("uResolution", maps.width());
+    p.set("uTaps", s.taps);
+    p.set("uConstantBias", s.constantBias);
+    p.set("uNormalScale", s.normalScale);
+    p.set("uPlaneEpsilon", s.planeEpsilon);
+    p.set("uAdaptiveEpsilon", s.adaptiveEpsilon * diagonal);  // scene-scaled, world units
+    p.set("uRadius", s.radius);
+    p.set("uMaxRadius", s.maxRadius);
+    // Only the Poisson and PCSS programs declare the disc (an unused array is optimised out).
+    if (s.filter == Filter::Poisson || s.filter == Filter::Pcss)
+      for (int i = 0; i < int(poisson_.size()); ++i)
+        p.set(("uPoisson[" + std::to_string(i) + "]").c_str(), poisson_[std::size_t(i)]);
+  };
 
   gl::glDisable(GL_DEPTH_TEST);
   gl::glDisable(GL_BLEND);
@@ -109,7 +124,6 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
   gl::glDisable(GL_SCISSOR_TEST);
   gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   gl::glViewport(0, 0, visibility.width(), visibility.height());
-  lookup_.use();
   emptyVao_.bind();
   const bool layered = visibility.kind() == gl::TextureKind::Tex2DArray;
   for (int light = 0; light < visibility.layers(); ++light) {
@@ -117,7 +131,12 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
     lookupFbo_.checkComplete("shadow_map.lookup");
     lookupFbo_.bind();
     // A layer without a light (a scene with no lights still has one) reads as lit.
-    lookup_.set("uLight", light < int(frusta.size()) ? light : -1);
+    const bool hasLight = light < int(frusta.size());
+    const ViewKind kind = hasLight ? frusta[std::size_t(light)].kind : ViewKind::Unshadowed;
+    const gl::Program& program = lookupProgram(kind, s);
+    setUniforms(program);
+    program.set("uLight", hasLight ? light : -1);
+    program.use();
     gl::glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   gl::glBindVertexArray(0);

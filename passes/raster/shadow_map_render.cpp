@@ -12,7 +12,6 @@ namespace diptych::shadowmap {
 
 ShadowMapGl::ShadowMapGl()
     : depth_(gl::loadProgram({"shadow_map_depth.vert", "shadow_map_depth.frag"})),
-      lookup_(gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"})),
       depthFbo_(gl::Framebuffer::create()),
       lookupFbo_(gl::Framebuffer::create()),
       emptyVao_(gl::VertexArray::create()),

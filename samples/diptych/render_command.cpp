@@ -82,7 +82,9 @@ void writeText(const std::string& path, const std::string& text) {
 void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const RenderOptions& o) {
   std::printf(
       "per-node timings: median of %d frames after %d warm-up frames (CPU: steady_clock; GPU: "
-      "GL_TIME_ELAPSED)\n",
+      "GL_TIME_ELAPSED, read after the frame's last node, so no node waits on its query: a GL "
+      "node's cpu ms is the time to issue its commands, and the GL work it queued shows in its "
+      "gpu ms and in the cpu ms of the first node that waits for it, normally a readback)\n",
       o.frames, o.warmup);
   std::printf("%-34s %-9s %-4s %11s %11s %14s\n", "node", "kind", "dom", "cpu ms", "gpu ms",
               "Mrays/s");
