@@ -212,7 +212,9 @@ void runRender(const RenderOptions& o) {
     nlohmann::json j = graphToJson(graph, &executor.timings());
     j["method"] = fmt::format(
         "median of {} frames after {} warm-up frames; CPU wall clock (steady_clock) "
-        "per node, GL_TIME_ELAPSED queries for GL nodes and transfers",
+        "per node, GL_TIME_ELAPSED queries for GL nodes and transfers, read after the frame's "
+        "last node (no node waits on its query: a GL node's cpu_ms is the time to issue its "
+        "commands, and the wait for GL work falls in the first node that synchronises)",
         o.frames, o.warmup);
     j["scene"] = o.scene;
     j["devices"] = devices;
