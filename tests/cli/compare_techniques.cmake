@@ -12,15 +12,21 @@ import json, sys
 variants = {v["name"]: v for v in json.load(open(sys.argv[1]))["variants"]}
 flip = {n: v["metrics"]["flip_mean"] for n, v in variants.items()}
 print(flip)
-def differ(a, b, what):
-    # Relative gap: FLIP means of a few 1e-2 differ in the third or fourth digit here.
-    gap = abs(flip[a] - flip[b]) / max(flip[a], flip[b])
-    if not gap > 1e-4:
-        sys.exit(f"{a} and {b} give the same FLIP ({flip[a]} vs {flip[b]}): {what}")
-differ("env-cube", "env-sphere", "the sky does not show the parameterisation")
-differ("env-cube", "env-equirect", "the sky does not show the parameterisation")
-differ("env-sphere", "env-equirect", "the sky does not show the parameterisation")
-differ("sorted-blend", "unsorted-blend", "blending order does not matter")
+def differ(values, a, b, bound, what):
+    gap = abs(values[a] - values[b]) / max(values[a], values[b])
+    if not gap > bound:
+        sys.exit(f"{a} and {b} give the same value ({values[a]} vs {values[b]}): {what}")
+# FLIP means: most of each map's error is the same (the floor and objects no environment map
+# reflects), so cube and equirect differ only in the fourth digit (measured 1.2e-4 relative at
+# 240x180). llvmpipe and the CPU metrics are deterministic, so 1e-5 is far above rounding.
+for a, b in (("env-cube", "env-sphere"), ("env-cube", "env-equirect"), ("env-sphere", "env-equirect")):
+    differ(flip, a, b, 1e-5, "the sky does not show the parameterisation")
+differ(flip, "sorted-blend", "unsorted-blend", 1e-3, "blending order does not matter")
+# The reflection signal itself (relative RMSE over reflective pixels): 0.3% to 1.5% apart.
+refl = {n: variants[n]["signals"]["reflection"]["relative_rmse"] for n in ("env-cube", "env-sphere", "env-equirect")}
+print(refl)
+for a, b in (("env-cube", "env-sphere"), ("env-cube", "env-equirect"), ("env-sphere", "env-equirect")):
+    differ(refl, a, b, 1e-3, "the reflection signal does not show the parameterisation")
 # The signals themselves: the transmission slot differs between the two orders.
 t = {n: variants[n]["signals"]["transmission"]["relative_rmse"] for n in ("sorted-blend", "unsorted-blend")}
 if not abs(t["sorted-blend"] - t["unsorted-blend"]) > 1e-3 * max(t.values()):
