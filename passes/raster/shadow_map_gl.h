@@ -36,11 +36,13 @@ class ShadowMapGl {
  private:
   const std::vector<Aabb>& meshBounds(const WorldGeometry& geometry);
   void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);
-  // The lookup program for one (light kind, bias, filter, kernel), compiled on first use.
-  const gl::Program& lookupProgram(ViewKind kind, const Settings& settings);
+  // The lookup program for one (light kind, bias, filter, kernel, interior-only variant),
+  // compiled on first use.
+  const gl::Program& lookupProgram(ViewKind kind, const Settings& settings, bool interior);
   gl::Program depth_;
-  std::map<std::array<int, 4>, gl::Program> lookups_;
-  gl::Program alphaDepth_;  // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
+  std::map<std::array<int, 5>, gl::Program> lookups_;
+  gl::Texture lookupDepth_;  // marks pixels the interior cube pass has written
+  gl::Program alphaDepth_;   // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
   gl::Framebuffer depthFbo_, lookupFbo_;
   gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle
   gl::Buffer layers_, lights_;

@@ -74,15 +74,16 @@ void ShadowMapGl::uploadFrusta(const std::vector<LightFrustum>& frusta, const Se
   uploadArray(lights_, lights);
 }
 
-const gl::Program& ShadowMapGl::lookupProgram(ViewKind kind, const Settings& s) {
+const gl::Program& ShadowMapGl::lookupProgram(ViewKind kind, const Settings& s, bool interior) {
   const int kernel = s.filter == Filter::Pcf ? s.kernel : 1;  // only PCF reads the kernel
-  gl::Program& program = lookups_[{int(kind), int(s.bias), int(s.filter), kernel}];
+  gl::Program& program = lookups_[{int(kind), int(s.bias), int(s.filter), kernel, int(interior)}];
   if (!program) {
-    program = gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"},
-                              {{"DIPTYCH_KIND", std::to_string(int(kind))},
-                               {"DIPTYCH_BIAS", std::to_string(int(s.bias))},
-                               {"DIPTYCH_FILTER", std::to_string(int(s.filter))},
-                               {"DIPTYCH_KERNEL", std::to_string(kernel)}});
+    std::vector<gl::ShaderDefine> defines = {{"DIPTYCH_KIND", std::to_string(int(kind))},
+                                             {"DIPTYCH_BIAS", std::to_string(int(s.bias))},
+                                             {"DIPTYCH_FILTER", std::to_string(int(s.filter))},
+                                             {"DIPTYCH_KERNEL", std::to_string(kernel)}};
+    if (interior) defines.push_back({"DIPTYCH_INTERIOR", ""});
+    program = gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"}, defines);
   }
   return program;
 }
@@ -125,19 +126,48 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
   gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   gl::glViewport(0, 0, visibility.width(), visibility.height());
   emptyVao_.bind();
+  if (!lookupDepth_ || lookupDepth_.width() != visibility.width() ||
+      lookupDepth_.height() != visibility.height()) {
+    lookupDepth_ =
+        gl::Texture::create2D(gl::TextureFormat::D32F, visibility.width(), visibility.height());
+    lookupDepth_.setLabel("shadow_map.lookup_depth");
+  }
   const bool layered = visibility.kind() == gl::TextureKind::Tex2DArray;
   for (int light = 0; light < visibility.layers(); ++light) {
     lookupFbo_.attachColor(0, visibility, 0, layered ? light : -1);
+    lookupFbo_.attachDepth(lookupDepth_);
     lookupFbo_.checkComplete("shadow_map.lookup");
     lookupFbo_.bind();
     // A layer without a light (a scene with no lights still has one) reads as lit.
     const bool hasLight = light < int(frusta.size());
     const ViewKind kind = hasLight ? frusta[std::size_t(light)].kind : ViewKind::Unshadowed;
-    const gl::Program& program = lookupProgram(kind, s);
-    setUniforms(program);
-    program.set("uLight", hasLight ? light : -1);
-    program.use();
-    gl::glDrawArrays(GL_TRIANGLES, 0, 3);
+    const auto draw = [&](const gl::Program& program) {
+      setUniforms(program);
+      program.set("uLight", hasLight ? light : -1);
+      program.use();
+      gl::glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
+    // Receiver-plane bias keeps one pass: its depth gradient comes from screen derivatives,
+    // and with the split its visibility moved (MSE 2e-5 on whitted), so it is left exact.
+    if (kind != ViewKind::Cube || s.bias == Bias::ReceiverPlane) {
+      gl::glDisable(GL_DEPTH_TEST);
+      draw(lookupProgram(kind, s, false));
+      continue;
+    }
+    // Cube maps: the interior variant (no cube-edge path) writes every pixel whose taps all
+    // stay on its own face and marks it with depth 0; the full shader then runs, behind an
+    // early depth test, only where depth is still the cleared 1 (shadow_map_lookup.frag).
+    const GLfloat one = 1.f;
+    gl::glClearNamedFramebufferfv(lookupFbo_.id(), GL_DEPTH, 0, &one);
+    gl::glEnable(GL_DEPTH_TEST);
+    gl::glDepthMask(GL_TRUE);
+    gl::glDepthFunc(GL_ALWAYS);
+    draw(lookupProgram(kind, s, true));
+    gl::glDepthMask(GL_FALSE);
+    gl::glDepthFunc(GL_LESS);  // the full-screen triangle is at depth 0
+    draw(lookupProgram(kind, s, false));
+    gl::glDepthMask(GL_TRUE);
+    gl::glDisable(GL_DEPTH_TEST);
   }
   gl::glBindVertexArray(0);
   gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
