@@ -23,7 +23,7 @@ class GlBackend {
   // GL_TIME_ELAPSED query number `slot` (one per graph node, created on first use) around
   // the node's GL commands. Neither call waits for the GL: the result is read by timerMs.
   void beginTimer(std::size_t slot);
-  void endTimer();
+  void endTimer();  // and glFlush: submits the node's commands without waiting
   // The result of query `slot`. Read after the frame's last node, when its readbacks have
   // already waited for the GL work, so the results are in and nothing stalls the frame.
   double timerMs(std::size_t slot) const;
