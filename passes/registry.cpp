@@ -28,8 +28,9 @@ const PassRegistry& builtinPasses() {
     r.add<GBufferPass>({.name = "gbuffer",
                         .summary = "rasterized hits buffer, normals and reversed-Z depth (GL)"});
     r.addRenamedOutput({"gbuffer", "visibility", kHits});
-    r.add<ShadePass>(
-        {.name = "shade", .summary = "the lecture's illumination model from the G-buffer (CPU)"});
+    r.add<ShadePass>({.name = "shade",
+                      .summary = "the lecture's illumination model from the G-buffer (GL or CPU: "
+                                 "placed where its inputs live)"});
 
     // Producers by slot; within a slot, `diptych compare` runs them in this order.
     r.add<RtShadowsPass>({.name = "rt_shadows",

@@ -21,6 +21,10 @@ nlohmann::json timingJson(const NodeTiming& t) {
   return j;
 }
 
+bool isTransfer(const GraphNode& node) {
+  return node.kind == NodeKind::Readback || node.kind == NodeKind::Upload;
+}
+
 std::string dotEscape(const std::string& s) {
   std::string out;
   for (char c : s) out += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
@@ -38,6 +42,7 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
     nlohmann::json jp{
         {"name", p.name}, {"type", p.type}, {"domain", domainName(p.domain)}, {"culled", p.culled}};
     if (p.culled) jp["cull_reason"] = p.cullReason;
+    if (!p.placement.empty()) jp["placement"] = p.placement;
     for (SceneNeed n : p.needs) jp["scene_needs"].push_back(sceneNeedName(n));
     for (ResourceId r : p.reads) jp["reads"].push_back(g.resources[r].name);
     for (ResourceId w : p.writes) jp["writes"].push_back(g.resources[w].name);
@@ -66,6 +71,13 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
                       {"name", node.name},
                       {"kind", nodeKindName(node.kind)},
                       {"domain", domainName(node.domain)}};
+    if (isTransfer(node)) {
+      jn["resource"] = g.resources[node.resource].name;
+      jn["from"] = domainName(node.kind == NodeKind::Readback ? Domain::Gl : Domain::Cpu);
+      jn["to"] = domainName(node.domain);
+      jn["bytes"] = g.resources[node.resource].desc.bytes();
+      if (node.forOutputOnly) jn["for_output_only"] = true;
+    }
     if (timings && n < timings->size()) jn["timing"] = timingJson((*timings)[n]);
     j["schedule"].push_back(jn);
   }
@@ -105,6 +117,8 @@ std::string graphToDot(const CompiledGraph& g, const std::vector<NodeTiming>* ti
       const GraphPass& pass = g.passes[node.pass];
       label += "\\n(" + dotEscape(pass.type) + ", " + domainName(pass.domain) + ")";
       shape = pass.domain == Domain::Gl ? "shape=box, style=filled" : "shape=box, style=rounded";
+    } else if (isTransfer(node)) {
+      label += fmt::format("\\n{} bytes", g.resources[node.resource].desc.bytes());
     }
     if (medianOf(n) >= 0) label += fmt::format("\\n{:.3f} ms", medianOf(n));
     dot += fmt::format("  \"{}\" [{}, label=\"{}\"];\n", dotEscape(node.name), shape, label);

@@ -7,6 +7,7 @@
 #include "engine/core/check.h"
 #include "engine/core/error.h"
 #include "engine/core/known.h"
+#include "engine/graph/placement.h"
 
 namespace diptych {
 
@@ -254,7 +255,11 @@ void schedule(CompiledGraph& g, const std::vector<PassIndex>& order) {
     }
     g.nodes.push_back(node);
   }
-  for (ResourceId out : g.outputs) ensure(out, Domain::Cpu);
+  for (ResourceId out : g.outputs) {
+    const std::size_t before = g.nodes.size();
+    ensure(out, Domain::Cpu);
+    if (g.nodes.size() > before) g.nodes.back().forOutputOnly = true;
+  }
 }
 
 // A resource modified in place must have no other reader: it would see the new contents.
@@ -366,6 +371,7 @@ CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, c
                             spec.place + ".params");
     builder.bind(p, &spec, &params);
     g.passes[p].pass->setup(builder);
+    g.passes[p].domain = g.passes[p].pass->domain();  // a parameter may choose it
     params.checkAllRead();
     for (const auto& [slot, source] : spec.inputs)
       if (!builder.slotsRead().count(slot))
@@ -394,6 +400,7 @@ CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, c
     g.outputs.push_back(*id);
   }
   cullUnrequested(g);
+  placeAutoPasses(g, order);
   schedule(g, order);
   computeLifetimesAndPool(g);
   return g;

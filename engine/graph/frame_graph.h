@@ -32,6 +32,7 @@ struct GraphPass {
   std::vector<SceneNeed> needs;
   bool culled = false;
   std::string cullReason;  // "scene has no transmissive materials", "output not requested"
+  std::string placement;   // auto-placed passes: the rule's choice and the bytes it compared
 };
 
 enum class NodeKind { Pass, Readback, Upload, Default };
@@ -45,6 +46,9 @@ struct GraphNode {
   PassIndex pass;                     // NodeKind::Pass
   ResourceId resource = kNoResource;  // transfers and defaults: what they move or fill
   std::vector<int> storagesRead, storagesWritten;
+  // A readback (or default fill) that no pass needs: it exists only because the resource was
+  // requested as an output (e.g. compare's per-slot signals).
+  bool forOutputOnly = false;
 };
 
 // A physical allocation of one resource in one domain (in-place versions share it).

@@ -7,20 +7,32 @@
 #include "engine/scene/environment.h"
 #include "engine/shading/shading.h"
 #include "passes/common/hits_texel.h"
+#include "passes/raster/gl_shade.h"
 #include "passes/slots.h"
 
 namespace diptych {
 
+ParamSchema ShadePass::schema() {
+  return {ParamSpec::choice("domain", "auto", {"auto", "gl", "cpu"},
+                            "where shade runs; auto: where its inputs live (docs/frame-graph.md)")};
+}
+
 void ShadePass::setup(PassBuilder& b) {
+  const std::string domain = b.params().string("domain");
+  auto_ = domain == "auto";
+  domain_ = domain == "gl" ? Domain::Gl : Domain::Cpu;
   const int w = b.frame().width, h = b.frame().height;
   hits_ = b.read(kHits, Format::RGBA32UI);
   lightVisibility_ = b.readOptional("light_visibility", Format::R32F);
   reflection_ = b.readOptional("reflection", Format::RGBA32F);
   transmission_ = b.readOptional("transmission", Format::RGBA32F);
+  albedo_ = b.readOptional("albedo", Format::RGBA32F);
   color_ = b.write("color", {Format::RGBA32F, w, h}, vec4(0.f, 0.f, 0.f, 1.f));
 }
 
 void ShadePass::execute(PassContext& c) {
+  if (domain_ == Domain::Gl)
+    return shadeOnGl(c, {hits_, lightVisibility_, reflection_, transmission_, albedo_, color_});
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
@@ -29,6 +41,7 @@ void ShadePass::execute(PassContext& c) {
       lightVisibility_ == kNoResource ? nullptr : &c.cpuRead(lightVisibility_);
   const CpuImage* reflection = reflection_ == kNoResource ? nullptr : &c.cpuRead(reflection_);
   const CpuImage* transmission = transmission_ == kNoResource ? nullptr : &c.cpuRead(transmission_);
+  const CpuImage* albedo = albedo_ == kNoResource ? nullptr : &c.cpuRead(albedo_);
   CpuImage& out = c.cpuWrite(color_);
 
   std::vector<shading::ShadingLight> lights;
@@ -46,7 +59,11 @@ void ShadePass::execute(PassContext& c) {
       if (!hit) {
         radiance = sampleEnvironment(scene.environment, eye.direction);
       } else {
-        const SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
+        SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
+        if (albedo) {  // the texture-filtering slot's C and alpha replace the material's
+          sp.resolved.color = rgb(albedo, x, y);
+          sp.resolved.alpha = albedo->f(x, y, 3);
+        }
         const vec3 v = -eye.direction;
         radiance = shading::emittedAndAmbient(sp.resolved, scene.ambient);
         for (std::size_t i = 0; i < lights.size(); ++i) {

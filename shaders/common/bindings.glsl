@@ -21,5 +21,7 @@ const int BINDING_SHADOW_LIGHTS = 8;
 
 // Texture unit of scene_shading.glsl's uSceneAlphaMasks; units 0 and 1 are each pass's own.
 const int UNIT_SCENE_ALPHA_MASKS = 7;
+// Texture unit of gl/scene_environment.glsl's uEnvironmentTexels (the exact background lookup).
+const int UNIT_SCENE_ENVIRONMENT = 15;
 
 #endif

@@ -31,10 +31,15 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
     // the calling thread) and its GL time the rest, so its figure is their sum. A transfer's CPU
     // time also holds the wait for earlier passes' GL work: its figure is its own GL time. The
     // frame total stays the CPU sum, which includes that wait (docs/frame-graph.md).
-    const bool transfer = run.graph.nodes[n].kind != NodeKind::Pass;
+    const GraphNode& node = run.graph.nodes[n];
+    const bool transfer = node.kind != NodeKind::Pass;
     const double gl = t.gpuMs.empty() ? 0.0 : summarize(t.gpuMs).median;
-    run.passMs[run.graph.nodes[n].name] = t.gpuMs.empty() ? ms : transfer ? gl : ms + gl;
-    run.totalMs += ms;
+    run.passMs[node.name] = t.gpuMs.empty() ? ms : transfer ? gl : ms + gl;
+    // Readbacks of signals requested only for the per-slot metrics are measurement, not frame
+    // work: the frame's own output (outputs[0], the image) still counts.
+    const bool measurementOnly = node.forOutputOnly && !outputs.empty() &&
+                                 run.graph.resources[node.resource].name != outputs.front();
+    if (!measurementOnly) run.totalMs += ms;
     if (auto it = run.timings[n].counters.find("rays"); it != run.timings[n].counters.end())
       run.rays += it->second;
   }

@@ -15,7 +15,8 @@ struct GraphRun {
   CompiledGraph graph;
   std::vector<NodeTiming> timings;
   std::map<std::string, CpuImage> outputs;
-  double totalMs = 0;  // sum over nodes of each node's median CPU time
+  double totalMs = 0;  // sum over nodes of each node's median CPU time, less measurement-only
+                       // readbacks (GraphNode::forOutputOnly) of outputs other than the first
   // The first frame's CPU time (every node): it carries one-time work (shader compilation, pool
   // allocation, first-use caches) that the median of the measured frames leaves out.
   double firstFrameMs = 0;

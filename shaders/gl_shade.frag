@@ -1,0 +1,71 @@
+// The shade pass on GL (passes/raster/gl_shade.cpp): the lecture's illumination model from the
+// G-buffer, with the same shared code the CPU shade pass runs (common/shading.glsl):
+//   L = M_E + A_G + sum_i V_i S_i L_dir,i + k_ps M_PS L_refl + k_t M_T L_trans
+// Inputs are read with imageLoad (image units 0..5, the pass's own), so that the texture units
+// stay free for the scene's textures. Optional inputs are flagged by uniforms: V_i = 1, L_refl
+// = L_trans = 0 and the material's own C and alpha when unconnected, as in passes/cpu/shade.cpp.
+#include "common/shading.glsl"
+#include "gl/scene_buffers.glsl"
+#include "gl/scene_shading.glsl"
+#include "gl/scene_environment.glsl"
+
+layout(binding = 0, rgba32ui) readonly uniform uimage2D uHits;
+layout(binding = 1, r32f) readonly uniform image2D uVisibility;            // one light
+layout(binding = 2, r32f) readonly uniform image2DArray uVisibilityLayers;  // a layer per light
+layout(binding = 3, rgba32f) readonly uniform image2D uReflection;
+layout(binding = 4, rgba32f) readonly uniform image2D uTransmission;
+layout(binding = 5, rgba32f) readonly uniform image2D uAlbedo;
+uniform int uVisibilityCount;  // layers of light_visibility; 0 when unconnected
+uniform bool uHasReflection;
+uniform bool uHasTransmission;
+uniform bool uHasAlbedo;
+uniform vec3 uAmbient;  // A_G
+
+// The pixel-centre ray, built as diptych::primaryRay builds it (engine/scene/camera_math.cpp);
+// GL row y is image row height - 1 - y, which makes ndcY = 2 fragY / height - 1.
+uniform vec3 uCameraPosition;
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uAspect;
+uniform float uTanHalfFov;
+uniform vec2 uViewportSize;
+
+layout(location = 0) out vec4 outColor;
+
+float lightVisibility(ivec2 p, int i) {
+  if (i >= uVisibilityCount) return 1.0;
+  if (uVisibilityCount == 1) return imageLoad(uVisibility, p).r;
+  return imageLoad(uVisibilityLayers, ivec3(p, i)).r;
+}
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec2 ndc = 2.0 * gl_FragCoord.xy / uViewportSize - 1.0;
+  vec3 eye = normalize(uForward + (ndc.x * uAspect * uTanHalfFov) * uRight +
+                       (ndc.y * uTanHalfFov) * uUp);
+  SceneSurface s = surfaceFromHits(imageLoad(uHits, p));
+  if (!s.hit) {
+    outColor = vec4(sceneEnvironment(eye), 1.0);
+    return;
+  }
+  ShadingMaterial m = sceneMaterial(s.material, s.uv);
+  if (uHasAlbedo) {
+    // The texture-filtering slot's signal replaces the resolved base colour and coverage.
+    vec4 albedo = imageLoad(uAlbedo, p);
+    m.color = albedo.rgb;
+    m.alpha = albedo.a;
+  }
+  // makeSurfacePoint(): the shading normal on the side the eye ray arrives from.
+  vec3 n = dot(s.faceNormal, eye) <= 0.0 ? s.shadingNormal : -s.shadingNormal;
+  vec3 v = -eye;
+  vec3 radiance = emittedAndAmbient(m, uAmbient);
+  for (int i = 0; i < uLightCount; ++i) {
+    LightSample ls = sampleLight(sceneLight(i), s.position);
+    radiance += lightContribution(m, n, v, ls, lightVisibility(p, i));
+  }
+  vec3 reflected = uHasReflection ? imageLoad(uReflection, p).rgb : vec3(0.0);
+  vec3 transmitted = uHasTransmission ? imageLoad(uTransmission, p).rgb : vec3(0.0);
+  radiance += secondaryTerms(m, reflected, transmitted);
+  outColor = vec4(radiance, 1.0);
+}
