@@ -15,6 +15,9 @@ uniform int uMaterial;
 uniform vec3 uAmbient;
 uniform int uBlend;   // 1: the output is composited as I = I_m + k_t M_T I
 uniform int uBehind;  // 1: keep only fragments strictly behind the visibility texel's surface
+// 1 (with uBehind): also drop fragments whose pixel's first surface transmits nothing (k_t = 0):
+// the blend producers zero those pixels afterwards (blend_transmission.frag, the same test).
+uniform int uTransmissiveOnly;
 layout(binding = 0) uniform usampler2D uHits;
 
 // Dual-source blending (GL 3.3 core, ARB_blend_func_extended): index 1 is the per-fragment
@@ -23,6 +26,20 @@ layout(location = 0, index = 0) out vec4 outColor;
 layout(location = 0, index = 1) out vec4 outTransmit;
 
 void main() {
+  // The visibility tests that need no ray/triangle work come first, so that llvmpipe skips the
+  // rest of the shader for blocks whose fragments are all discarded (docs/benchmarks.md).
+  uvec4 texel = uvec4(0u);
+  SceneSurface first = surfaceFromHits(texel);  // background: no first surface
+  if (uBehind != 0) {
+    texel = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
+    first = surfaceFromHits(texel);
+    if (uTransmissiveOnly != 0 && !(first.hit && sceneMaterial(first.material, first.uv).kt > 0.0))
+      discard;
+    // "Behind the first visible surface": the first surface itself (same instance and
+    // primitive) is excluded by identity, everything else by its distance along the same ray.
+    if (first.hit && uint(first.instance) == uInstance && texel.y == uint(gl_PrimitiveID))
+      discard;
+  }
   vec3 dir = pixelRayDirection();
   uvec3 idx = sceneTriangle(uFirstTriangle + uint(gl_PrimitiveID));
   vec3 p0 = scenePosition(idx.x), p1 = scenePosition(idx.y), p2 = scenePosition(idx.z);
@@ -32,16 +49,8 @@ void main() {
   float w = 1.0 - bary.x - bary.y;
   vec3 p = w * p0 + bary.x * p1 + bary.y * p2;
 
-  if (uBehind != 0) {
-    // "Behind the first visible surface": the first surface itself (same instance and
-    // primitive) is excluded by identity, everything else by its distance along the same ray.
-    uvec4 texel = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
-    SceneSurface first = surfaceFromHits(texel);
-    if (first.hit) {
-      bool same = uint(first.instance) == uInstance && texel.y == uint(gl_PrimitiveID);
-      if (same || safeLength(p - uEye) <= safeLength(first.position - uEye)) discard;
-    }
-  }
+  if (uBehind != 0 && first.hit && safeLength(p - uEye) <= safeLength(first.position - uEye))
+    discard;
 
   vec3 face = safeNormalize(cross(p1 - p0, p2 - p0));
   vec3 n = w * sceneNormal(idx.x) + bary.x * sceneNormal(idx.y) + bary.y * sceneNormal(idx.z);

@@ -40,9 +40,14 @@ layout(binding = 1) uniform sampler2DArray uShadowMaps;
 
 uniform int uLight;  // -1: a layer with no light, written as lit
 uniform int uResolution;
-uniform int uBias;
-uniform int uFilter;
-uniform int uKernel;
+// Light kind, bias mode, filter and PCF kernel are compile-time constants: one program per
+// combination (passes/raster/shadow_map_lookup.cpp), as a GPU engine builds shader
+// permutations. llvmpipe runs both sides of every branch under a lane mask, so with them as
+// uniforms every tap paid for every bias mode and the cube-edge path (docs/benchmarks.md).
+const int uBias = DIPTYCH_BIAS;
+const int uFilter = DIPTYCH_FILTER;
+const int uKernel = DIPTYCH_KERNEL;
+const int gKind = DIPTYCH_KIND;
 uniform int uTaps;
 uniform float uConstantBias;     // world units along the light ray
 uniform float uNormalScale;      // texel footprints
@@ -55,7 +60,7 @@ uniform vec2 uPoisson[64];
 layout(location = 0) out float outVisibility;
 
 // The current light and receiver, set once in main() (initialised so no path reads garbage).
-int gKind = KIND_UNSHADOWED, gFirst = 0;
+int gFirst = 0;
 vec3 gLightPos = vec3(0.0), gLightDir = vec3(0.0);
 float gNear = 1.0, gFar = 2.0, gTexelScale = 0.0, gLightSize = 0.0;
 vec3 gP = vec3(0.0), gPb = vec3(0.0);  // exact surface point, biased lookup point
@@ -131,6 +136,7 @@ float receiverDepth(int face, ivec2 texel) {
 vec3 tap(vec2 offset) {
   ivec2 texel = ivec2(floor(gSc0.xy * float(uResolution) + offset));
   int face = gFace0;
+#ifndef DIPTYCH_INTERIOR
   if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(uResolution)))) {
     if (gKind != KIND_CUBE) return vec3(1.0, 0.0, 0.0);  // outside the light's frustum: lit
     // Off the edge of a cube face: carry the texel's direction onto the face that holds it.
@@ -139,6 +145,7 @@ vec3 tap(vec2 offset) {
     vec4 q = project(face, w);
     texel = clamp(ivec2(floor(q.xy * float(uResolution))), ivec2(0), ivec2(uResolution - 1));
   }
+#endif
   float stored = texelFetch(uShadowMaps, ivec3(texel, gFirst + face), 0).r;
   return vec3(receiverDepth(face, texel) >= stored ? 1.0 : 0.0, stored, 1.0);
 }
@@ -191,14 +198,28 @@ float visibility() {
   return tap(vec2(0.0)).x;
 }
 
+// Cube maps are looked up in two passes (shadow_map_lookup.cpp): DIPTYCH_INTERIOR, without the
+// cube-edge path, for pixels whose every tap stays on their own face, marking them with depth 0;
+// then the full shader, depth-tested, for the rest. llvmpipe runs a branch's code for every
+// lane, so the edge path (two re-projections) cost every tap of every pixel. Largest tap offset
+// in texels per filter: the interior test is conservative for each of them.
+float maxTapOffset() {
+  if (uFilter == FILTER_PCF) return float(uKernel / 2);
+  if (uFilter == FILTER_POISSON) return uRadius;
+  if (uFilter == FILTER_PCSS) return max(uMaxRadius, 1.0);  // both search and filter radii
+  return 0.0;
+}
+
 void main() {
+#ifdef DIPTYCH_INTERIOR
+  gl_FragDepth = 0.0;  // done here; discarded pixels keep the cleared 1 for the second pass
+#endif
   if (uLight < 0) {
     outVisibility = 1.0;
     return;
   }
   SceneSurface s = surfaceFromHits(texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
   ShadowLight light = shadowLights[uLight];
-  gKind = light.info.x;
   gFirst = light.info.y;
   gLightPos = light.positionNear.xyz;
   gNear = light.positionNear.w;
@@ -243,5 +264,13 @@ void main() {
   }
   gFace0 = faceOf(gPb);
   gSc0 = project(gFace0, gPb);
+#ifdef DIPTYCH_INTERIOR
+  // tap() floors gSc0 * resolution + offset, monotonic in the offset: the extreme offsets bound
+  // every tap's texel.
+  float reach = maxTapOffset();
+  ivec2 lo = ivec2(floor(gSc0.xy * float(uResolution) - reach));
+  ivec2 hi = ivec2(floor(gSc0.xy * float(uResolution) + reach));
+  if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, ivec2(uResolution)))) discard;
+#endif
   outVisibility = saturate01(visibility());
 }

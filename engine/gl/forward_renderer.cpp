@@ -78,7 +78,7 @@ namespace {
 
 std::vector<int> drawList(const Scene& scene, const GlSceneBuffers& buffers,
                           const ForwardOptions& o) {
-  if (!o.order.empty()) return o.order;
+  if (o.explicitOrder || !o.order.empty()) return o.order;
   std::vector<int> list;
   for (int i = 0; i < int(buffers.meshes.size()); ++i) {
     const bool transparent = scene.material(buffers.meshes[i].material).kt > 0.f;
@@ -116,6 +116,10 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
   glViewport(0, 0, width, height);
   glDisable(GL_CULL_FACE);
   glDisable(GL_SCISSOR_TEST);
+  if (o.scissor) {
+    glEnable(GL_SCISSOR_TEST);  // also limits the clears below
+    glScissor(o.scissor->x, o.scissor->y, o.scissor->z, o.scissor->w);
+  }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
@@ -149,6 +153,7 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
   surface_.set("uLightCount", shading.lightCount);
   surface_.set("uBlend", o.blend ? 1 : 0);
   surface_.set("uBehind", o.behindVisibility ? 1 : 0);
+  surface_.set("uTransmissiveOnly", o.behindVisibility && o.transmissiveFirstOnly ? 1 : 0);
   if (o.behindVisibility) glBindTextureUnit(0, o.behindVisibility->id());
   surface_.use();
   buffers.vertexArray.bind();
@@ -164,6 +169,7 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
                    reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));
   }
   glDisable(GL_CLIP_DISTANCE0);
+  glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   // Mesa rejects draws into several colour buffers while a dual-source factor is set, even with
   // blending disabled (the G-buffer has two): restore the default factors.

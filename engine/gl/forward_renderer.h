@@ -41,8 +41,13 @@ enum class InstanceSet { Opaque, Transparent, All };  // transparent: material k
 
 struct ForwardOptions {
   InstanceSet instances = InstanceSet::All;
-  // Explicit draw order (mesh indices); empty: scene order filtered by `instances`.
+  // Explicit draw order (mesh indices); empty: scene order filtered by `instances`, unless
+  // explicitOrder is set (then an empty order draws no mesh).
   std::vector<int> order;
+  bool explicitOrder = false;
+  // Window rectangle (x, y, width, height; GL window coordinates, origin bottom left) outside
+  // which nothing is drawn or cleared (GL scissor test).
+  std::optional<glm::ivec4> scissor;
   int excludeInstance = -1;  // e.g. the reflective object a cube is captured from
   // World-space plane (n, d): only points with dot(n, x) + d >= 0 are drawn (gl_ClipDistance).
   std::optional<vec4> clipPlane;
@@ -55,6 +60,9 @@ struct ForwardOptions {
   // G-buffer visibility of the same camera and size: draw only fragments strictly behind the
   // pixel's first visible surface (see docs/forward-producers.md).
   const Texture* behindVisibility = nullptr;
+  // With behindVisibility: draw only pixels whose first visible surface transmits (k_t > 0),
+  // for producers that zero every other pixel anyway (the blend producers).
+  bool transmissiveFirstOnly = false;
 };
 
 // What a forward render draws: the scene and its uploaded geometry and shading buffers (passes

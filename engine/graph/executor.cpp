@@ -86,6 +86,12 @@ void GraphExecutor::clearTimings() {
 }
 
 void GraphExecutor::runFrame() {
+  // GL timer queries are begun and ended around each GL node and read only after the frame's
+  // last node (normally its final readbacks, which wait for the GL anyway), so no node waits on
+  // its own query: a GL node's CPU time is the time to issue its commands, and the GL work
+  // itself shows in its query and in the CPU time of the first node that waits for it.
+  Stopwatch frameClock;
+  std::vector<std::size_t> timed;
   for (std::size_t n = 0; n < graph_.nodes.size(); ++n) {
     const GraphNode& node = graph_.nodes[n];
     NodeTiming& timing = timings_[n];
@@ -95,7 +101,8 @@ void GraphExecutor::runFrame() {
     std::optional<gl::ScopedGlLabel> label;
     if (glWork) {
       label.emplace(node.name);
-      gl_->beginTimer();
+      gl_->beginTimer(n);
+      timed.push_back(n);
     }
     Stopwatch clock;
     auto slotOf = [&](int storage) { return graph_.storages[storage].poolSlot; };
@@ -123,13 +130,19 @@ void GraphExecutor::runFrame() {
         break;
       }
     }
-    const double gpuMs = glWork ? gl_->endTimerMs() : 0.0;
-    const double cpuMs = clock.milliseconds();
-    // The CPU clock waits for the query result, so GL time cannot exceed it; llvmpipe returns
-    // a garbage value (an absolute timestamp) for a query started before its first scene.
-    if (glWork && gpuMs <= cpuMs) timing.gpuMs.push_back(gpuMs);
-    timing.cpuMs.push_back(cpuMs);
+    if (glWork) gl_->endTimer();
+    timing.cpuMs.push_back(clock.milliseconds());
   }
+  if (timed.empty()) return;
+  // Reading a result waits only if the frame ended without a readback. A node's GL time lies
+  // inside the frame, so it cannot exceed the frame's wall clock measured after the reads;
+  // llvmpipe returns a garbage value (an absolute timestamp) for a query started before its
+  // first scene, which this bound drops.
+  std::vector<double> results;
+  for (std::size_t n : timed) results.push_back(gl_->timerMs(n));
+  const double frameMs = frameClock.milliseconds();
+  for (std::size_t i = 0; i < timed.size(); ++i)
+    if (results[i] >= 0.0 && results[i] <= frameMs) timings_[timed[i]].gpuMs.push_back(results[i]);
 }
 
 const CpuImage& GraphExecutor::output(const std::string& name) const {

@@ -1,7 +1,7 @@
 #pragma once
 // Runs a compiled graph frame after frame: allocates pooled storage once, executes every node
 // in order, checks that passes touch only what they declared, and times every node (CPU clock
-// for all, GL timer queries for GL work and transfers).
+// for all, GL timer queries for GL work and transfers, read after the frame without stalling).
 #include <map>
 #include <memory>
 #include <string>

@@ -20,14 +20,19 @@ class GlBackend {
   void readback(int handle, CpuImage& into);
   void upload(const CpuImage& from, int handle);
   void fill(int handle, const vec4& value);
-  void beginTimer();
-  double endTimerMs();  // waits for the query result
+  // GL_TIME_ELAPSED query number `slot` (one per graph node, created on first use) around
+  // the node's GL commands. Neither call waits for the GL: the result is read by timerMs.
+  void beginTimer(std::size_t slot);
+  void endTimer();  // and glFlush: submits the node's commands without waiting
+  // The result of query `slot`. Read after the frame's last node, when its readbacks have
+  // already waited for the GL work, so the results are in and nothing stalls the frame.
+  double timerMs(std::size_t slot) const;
 
  private:
   std::size_t checked(int handle) const;  // DIPTYCH_CHECK: a handle createTexture returned
   std::vector<gl::Texture> textures_;
   std::vector<ResourceDesc> descs_;
-  gl::TimerQuery timer_;
+  std::vector<gl::TimerQuery> timers_;
 };
 
 gl::TextureFormat toGlFormat(Format format);

@@ -6,6 +6,7 @@
 #include "engine/core/input_file.h"
 #include "engine/core/json_text.h"
 
+#include "engine/scene/environment_sky.h"
 #include "engine/scene/gltf_pbr.h"
 #include "engine/scene/json_reader.h"
 #include "engine/scene/json_sdf.h"
@@ -491,6 +492,44 @@ void readCamera(JsonObject o, Scene& scene) {
   scene.hasCamera = true;
 }
 
+// "sky": the procedural sky of environment_sky.h, baked once at load into an equirect.
+void readSky(JsonObject o, Environment& env) {
+  SkyParams p;
+  p.zenith = o.vector3("zenith", p.zenith);
+  p.horizon = o.vector3("horizon", p.horizon);
+  p.ground = o.vector3("ground", p.ground);
+  p.gradientExponent = o.number("gradient_exponent", p.gradientExponent);
+  p.sunDirection = o.vector3("sun_direction", p.sunDirection);
+  p.sunColor = o.vector3("sun_color", p.sunColor);
+  p.sunRadius = glm::radians(o.number("sun_radius_deg", glm::degrees(p.sunRadius)));
+  p.sunRadiance = o.number("sun_radiance", p.sunRadiance);
+  p.glow = o.number("glow", p.glow);
+  p.glowWidth = glm::radians(o.number("glow_width_deg", glm::degrees(p.glowWidth)));
+  p.width = o.integer("width").value_or(p.width);
+  for (const auto& [key, v] : {std::pair{"zenith", p.zenith},
+                               {"horizon", p.horizon},
+                               {"ground", p.ground},
+                               {"sun_color", p.sunColor}})
+    if (!(glm::all(glm::greaterThanEqual(v, vec3(0.f))) && glm::all(glm::lessThan(v, vec3(1e6f)))))
+      o.fail(key, "expected components in [0, 1e6)");
+  if (!(glm::length(p.sunDirection) > 0.f)) o.fail("sun_direction", "must not be zero");
+  if (!(p.gradientExponent > 0.f && p.gradientExponent <= 100.f))
+    o.fail("gradient_exponent", "expected a value in (0, 100]");
+  if (!(p.sunRadius >= 0.f && p.sunRadius <= glm::radians(45.f)))
+    o.fail("sun_radius_deg", "expected a value in [0, 45]");
+  if (!(p.glowWidth > 0.f && p.glowWidth <= glm::pi<float>()))
+    o.fail("glow_width_deg", "expected a value in (0, 180]");
+  if (!(p.sunRadiance >= 0.f && p.sunRadiance < 1e6f)) o.fail("sun_radiance", "expected [0, 1e6)");
+  if (!(p.glow >= 0.f && p.glow < 1e6f)) o.fail("glow", "expected [0, 1e6)");
+  if (p.width < 16 || p.width > 8192) o.fail("width", "expected an integer in [16, 8192]");
+  o.rejectUnknownKeys();
+  const float intensity = env.intensity;
+  const vec3 color = env.color;
+  env = bakeSky(p);
+  env.intensity = intensity;
+  env.color = color;
+}
+
 void readEnvironment(JsonObject o, const Context& ctx, Scene& scene) {
   Environment& env = scene.environment;
   env.color = o.vector3("color", env.color);
@@ -499,7 +538,10 @@ void readEnvironment(JsonObject o, const Context& ctx, Scene& scene) {
   const auto equirect = o.string("equirect");
   const json* cube = o.find("cube");
   if (equirect && cube) o.fail("cube", "give either equirect or cube, not both");
-  if (equirect) {
+  if (auto sky = o.object("sky")) {
+    if (equirect || cube) o.fail("sky", "give one of sky, equirect or cube");
+    readSky(std::move(*sky), env);
+  } else if (equirect) {
     env.type = EnvironmentType::Equirect;
     env.equirect = readImageAt(ctx, o, "equirect", *equirect);
     env.source = (ctx.folder / *equirect).string();

@@ -1,6 +1,8 @@
 #include "passes/raster/blend_transmission.h"
 
 #include <algorithm>
+#include <limits>
+#include <optional>
 
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
@@ -16,6 +18,15 @@ namespace {
 struct BlendCache {
   gl::Texture depth;
   FullscreenResolve mask{gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"})};
+  std::vector<Aabb> bounds;  // world bounds per mesh; the world's geometry is fixed
+  const std::vector<Aabb>& meshBounds(const WorldGeometry& geometry) {
+    if (bounds.size() != geometry.meshes.size()) {
+      bounds.assign(geometry.meshes.size(), Aabb{});
+      for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
+        for (const vec3& p : geometry.meshes[m].positions) bounds[m].extend(p);
+    }
+    return bounds;
+  }
   void ensure(int width, int height) {
     if (depth && depth.width() == width && depth.height() == height) return;
     depth = gl::Texture::create2D(gl::TextureFormat::D32F, width, height);
@@ -27,6 +38,37 @@ vec3 meshCentre(const WorldMesh& mesh) {
   Aabb box;
   for (const vec3& p : mesh.positions) box.extend(p);
   return box.center();
+}
+
+// Window rectangle [lo, hi) (pixels, GL window coordinates) holding every pixel centre that
+// `box` can cover: the projection of a box wholly in front of the eye is the convex hull of its
+// projected corners. A box reaching to or behind the eye plane gets the whole viewport.
+struct PixelRect {
+  ivec2 lo{0}, hi{0};
+  bool empty() const { return hi.x <= lo.x || hi.y <= lo.y; }
+};
+
+PixelRect windowRect(const Aabb& box, const mat4& viewProj, int width, int height) {
+  const PixelRect whole{ivec2(0), ivec2(width, height)};
+  if (box.empty()) return {};
+  vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (int i = 0; i < 8; ++i) {
+    const vec4 c = viewProj * vec4(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
+                                   i & 4 ? box.hi.z : box.lo.z, 1.f);
+    if (!(c.w > 1e-6f)) return whole;
+    const vec2 w = (0.5f * vec2(c) / c.w + 0.5f) * vec2(float(width), float(height));
+    lo = glm::min(lo, w);
+    hi = glm::max(hi, w);
+  }
+  // One pixel of margin for rounding in the projection and the rasterizer's snapping.
+  PixelRect r;
+  r.lo = glm::clamp(ivec2(glm::floor(lo)) - 1, ivec2(0), ivec2(width, height));
+  r.hi = glm::clamp(ivec2(glm::ceil(hi)) + 1, ivec2(0), ivec2(width, height));
+  return r;
+}
+
+bool overlap(const PixelRect& a, const PixelRect& b) {
+  return a.lo.x < b.hi.x && b.lo.x < a.hi.x && a.lo.y < b.hi.y && b.lo.y < a.hi.y;
 }
 
 }  // namespace
@@ -62,21 +104,58 @@ void BlendTransmissionPass::execute(PassContext& c) {
   const gl::ForwardView view =
       gl::cameraView(frame.camera, float(out.width()) / float(out.height()));
 
+  // Only pixels covered by a transparent object can have a transmissive first surface, and
+  // the mask below zeroes every other pixel: the two forward passes are scissored to the
+  // transparent objects' window rectangle, and opaque meshes whose own rectangle misses it are
+  // not drawn. This is what keeps re-rendering the opaque scene cheap (docs/benchmarks.md).
+  const Scene& scene = world.scene();
+  const WorldGeometry& geometry = world.geometry();
+  const mat4 viewProj = view.projection * view.view;
+  const std::vector<Aabb>& bounds = cache.meshBounds(geometry);
+  std::vector<PixelRect> rects(geometry.meshes.size());
+  PixelRect covered{ivec2(out.width(), out.height()), ivec2(0)};
+  for (std::size_t m = 0; m < geometry.meshes.size(); ++m) {
+    rects[m] = windowRect(bounds[m], viewProj, out.width(), out.height());
+    if (scene.material(geometry.meshes[m].material).kt > 0.f && !rects[m].empty()) {
+      covered.lo = glm::min(covered.lo, rects[m].lo);
+      covered.hi = glm::max(covered.hi, rects[m].hi);
+    }
+  }
+  const std::optional<glm::ivec4> scissor =
+      covered.empty() ? glm::ivec4(0) : glm::ivec4(covered.lo, covered.hi - covered.lo);
+  c.count("blend_scissor_pixels", covered.empty() ? 0.0 : double(scissor->z) * scissor->w);
+
   // Lines 1-3 of the lecture's algorithm: opaque polygons with depth (and the background).
   gl::ForwardOptions opaque;
   opaque.instances = gl::InstanceSet::Opaque;
   opaque.behindVisibility = &hits;
+  opaque.scissor = scissor;
+  opaque.explicitOrder = true;
+  for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
+    if (scene.material(geometry.meshes[m].material).kt <= 0.f && !covered.empty() &&
+        overlap(rects[m], covered))
+      opaque.order.push_back(int(m));
+  // Only pixels whose first surface transmits keep their value (the mask below zeroes the
+  // rest), so the re-rendered scene is shaded there only.
+  opaque.transmissiveFirstOnly = true;
   renderer.render(world.forwardScene(), view, out, cache.depth, opaque);
 
   // Lines 4-10: transparent polygons in Z order, I = I_m + k_t M_t I, depth-tested, not written.
   gl::ForwardOptions transparent;
   transparent.instances = gl::InstanceSet::Transparent;
-  if (sorted_)
-    transparent.order = transparentBackToFront(world.scene(), world.geometry(), view.view);
+  if (sorted_) {
+    transparent.order = transparentBackToFront(scene, geometry, view.view);
+  } else {  // scene order
+    for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
+      if (scene.material(geometry.meshes[m].material).kt > 0.f) transparent.order.push_back(int(m));
+  }
   transparent.clear = false;
   transparent.depthWrite = false;
   transparent.blend = true;
   transparent.behindVisibility = &hits;
+  transparent.scissor = scissor;
+  transparent.explicitOrder = true;
+  transparent.transmissiveFirstOnly = true;
   renderer.render(world.forwardScene(), view, out, cache.depth, transparent);
 
   // The slot's contract: 0 where the first surface transmits nothing.

@@ -20,10 +20,11 @@ void ShadowMapPass::execute(PassContext& c) {
   auto& state = world.glCached<shadowmap::ShadowMapGl>();
   const gl::Texture& maps =
       state.maps(settings_.resolution, std::max(1, shadowmap::totalLayers(frusta)));
-  state.renderMaps(world, frusta, settings_, maps);
+  const int draws = state.renderMaps(world, frusta, settings_, maps);
   state.lookup(world, frusta, settings_, maps, c.glTexture(io_.hits), c.glTexture(io_.signal));
   c.count("shadow_map_texels",
           double(maps.width()) * maps.height() * shadowmap::totalLayers(frusta));
+  c.count("shadow_map_caster_draws", draws);
 }
 
 }  // namespace diptych

@@ -3,12 +3,14 @@
 // in the pass: a compiled graph may outlive its context). Several shadow_map passes in one graph
 // (e.g. two bias modes side by side) share the programs; each execution renders its maps, then
 // looks them up, before the next pass runs, so sharing the map textures is safe.
+#include <array>
 #include <map>
 #include <utility>
 #include <vector>
 
 #include "engine/gl/objects.h"
 #include "engine/gl/scene_buffers.h"
+#include "engine/scene/world_geometry.h"
 #include "passes/raster/shadow_map_frusta.h"
 #include "passes/raster/shadow_map_settings.h"
 
@@ -23,23 +25,35 @@ class ShadowMapGl {
   ShadowMapGl();
   // The D32F array holding `layers` maps of resolution^2 (allocated on first request).
   const gl::Texture& maps(int resolution, int layers);
-  // Renders the depth of every shadow-casting mesh into each light's layers.
-  void renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
-                  const Settings& settings, const gl::Texture& maps);
+  // Renders the depth of every shadow-casting mesh into each light's layers, skipping meshes
+  // outside a layer's frustum; returns the number of mesh draws issued.
+  int renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
+                 const Settings& settings, const gl::Texture& maps);
   // Writes V_i for every light into `visibility` (R32F 2D, or 2D array with one layer per light).
   void lookup(RenderWorld& world, const std::vector<LightFrustum>& frusta, const Settings& settings,
               const gl::Texture& maps, const gl::Texture& gbuffer, const gl::Texture& visibility);
 
  private:
+  const std::vector<Aabb>& meshBounds(const WorldGeometry& geometry);
   void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);
-  gl::Program depth_, lookup_;
-  gl::Program alphaDepth_;  // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
+  // The lookup program for one (light kind, bias, filter, kernel, interior-only variant),
+  // compiled on first use.
+  const gl::Program& lookupProgram(ViewKind kind, const Settings& settings, bool interior);
+  gl::Program depth_;
+  std::map<std::array<int, 5>, gl::Program> lookups_;
+  gl::Texture lookupDepth_;  // marks pixels the interior cube pass has written
+  gl::Program alphaDepth_;   // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
   gl::Framebuffer depthFbo_, lookupFbo_;
   gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle
   gl::Buffer layers_, lights_;
   std::map<std::pair<int, int>, gl::Texture> maps_;  // (resolution, layers) -> D32F array
   std::vector<vec2> poisson_;
+  std::vector<Aabb> meshBounds_;  // world bounds of each GlSceneBuffers mesh
 };
+
+// True when no point of `box` can pass the clip volume of `viewProj` (reversed-Z, ZERO_TO_ONE):
+// a conservative test, so a draw it skips would have produced no fragment.
+bool boxOutsideFrustum(const Aabb& box, const mat4& viewProj);
 
 // `count` points in the unit disc, at least a fixed distance apart, by deterministic dart
 // throwing (Cook 1986, "Stochastic sampling in computer graphics"): the distance shrinks when a

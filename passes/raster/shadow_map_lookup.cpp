@@ -7,6 +7,7 @@
 
 #include "engine/gl/bindings.h"
 #include "engine/gl/debug.h"
+#include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 #include "passes/raster/shadow_map_gl.h"
@@ -73,6 +74,20 @@ void ShadowMapGl::uploadFrusta(const std::vector<LightFrustum>& frusta, const Se
   uploadArray(lights_, lights);
 }
 
+const gl::Program& ShadowMapGl::lookupProgram(ViewKind kind, const Settings& s, bool interior) {
+  const int kernel = s.filter == Filter::Pcf ? s.kernel : 1;  // only PCF reads the kernel
+  gl::Program& program = lookups_[{int(kind), int(s.bias), int(s.filter), kernel, int(interior)}];
+  if (!program) {
+    std::vector<gl::ShaderDefine> defines = {{"DIPTYCH_KIND", std::to_string(int(kind))},
+                                             {"DIPTYCH_BIAS", std::to_string(int(s.bias))},
+                                             {"DIPTYCH_FILTER", std::to_string(int(s.filter))},
+                                             {"DIPTYCH_KERNEL", std::to_string(kernel)}};
+    if (interior) defines.push_back({"DIPTYCH_INTERIOR", ""});
+    program = gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"}, defines);
+  }
+  return program;
+}
+
 void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& frusta,
                          const Settings& s, const gl::Texture& maps, const gl::Texture& gbuffer,
                          const gl::Texture& visibility) {
@@ -88,20 +103,21 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
 
   const Aabb& b = world.geometry().bounds;
   const float diagonal = b.empty() ? 1.f : glm::length(b.hi - b.lo);
-  lookup_.set("uLightCount", shading.lightCount);
-  lookup_.set("uResolution", maps.width());
-  lookup_.set("uBias", int(s.bias));
-  lookup_.set("uFilter", int(s.filter));
-  lookup_.set("uKernel", s.kernel);
-  lookup_.set("uTaps", s.taps);
-  lookup_.set("uConstantBias", s.constantBias);
-  lookup_.set("uNormalScale", s.normalScale);
-  lookup_.set("uPlaneEpsilon", s.planeEpsilon);
-  lookup_.set("uAdaptiveEpsilon", s.adaptiveEpsilon * diagonal);  // scene-scaled, world units
-  lookup_.set("uRadius", s.radius);
-  lookup_.set("uMaxRadius", s.maxRadius);
-  for (int i = 0; i < int(poisson_.size()); ++i)
-    lookup_.set(("uPoisson[" + std::to_string(i) + "]").c_str(), poisson_[std::size_t(i)]);
+  const auto setUniforms = [&](const gl::Program& p) {
+    p.set("uLightCount", shading.lightCount);
+    p.set("uResolution", maps.width());
+    p.set("uTaps", s.taps);
+    p.set("uConstantBias", s.constantBias);
+    p.set("uNormalScale", s.normalScale);
+    p.set("uPlaneEpsilon", s.planeEpsilon);
+    p.set("uAdaptiveEpsilon", s.adaptiveEpsilon * diagonal);  // scene-scaled, world units
+    p.set("uRadius", s.radius);
+    p.set("uMaxRadius", s.maxRadius);
+    // Only the Poisson and PCSS programs declare the disc (an unused array is optimised out).
+    if (s.filter == Filter::Poisson || s.filter == Filter::Pcss)
+      for (int i = 0; i < int(poisson_.size()); ++i)
+        p.set(("uPoisson[" + std::to_string(i) + "]").c_str(), poisson_[std::size_t(i)]);
+  };
 
   gl::glDisable(GL_DEPTH_TEST);
   gl::glDisable(GL_BLEND);
@@ -109,16 +125,49 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
   gl::glDisable(GL_SCISSOR_TEST);
   gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   gl::glViewport(0, 0, visibility.width(), visibility.height());
-  lookup_.use();
   emptyVao_.bind();
+  if (!lookupDepth_ || lookupDepth_.width() != visibility.width() ||
+      lookupDepth_.height() != visibility.height()) {
+    lookupDepth_ =
+        gl::Texture::create2D(gl::TextureFormat::D32F, visibility.width(), visibility.height());
+    lookupDepth_.setLabel("shadow_map.lookup_depth");
+  }
   const bool layered = visibility.kind() == gl::TextureKind::Tex2DArray;
   for (int light = 0; light < visibility.layers(); ++light) {
     lookupFbo_.attachColor(0, visibility, 0, layered ? light : -1);
+    lookupFbo_.attachDepth(lookupDepth_);
     lookupFbo_.checkComplete("shadow_map.lookup");
     lookupFbo_.bind();
     // A layer without a light (a scene with no lights still has one) reads as lit.
-    lookup_.set("uLight", light < int(frusta.size()) ? light : -1);
-    gl::glDrawArrays(GL_TRIANGLES, 0, 3);
+    const bool hasLight = light < int(frusta.size());
+    const ViewKind kind = hasLight ? frusta[std::size_t(light)].kind : ViewKind::Unshadowed;
+    const auto draw = [&](const gl::Program& program) {
+      setUniforms(program);
+      program.set("uLight", hasLight ? light : -1);
+      program.use();
+      gl::glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
+    // Receiver-plane bias keeps one pass: its depth gradient comes from screen derivatives,
+    // and with the split its visibility moved (MSE 2e-5 on whitted), so it is left exact.
+    if (kind != ViewKind::Cube || s.bias == Bias::ReceiverPlane) {
+      gl::glDisable(GL_DEPTH_TEST);
+      draw(lookupProgram(kind, s, false));
+      continue;
+    }
+    // Cube maps: the interior variant (no cube-edge path) writes every pixel whose taps all
+    // stay on its own face and marks it with depth 0; the full shader then runs, behind an
+    // early depth test, only where depth is still the cleared 1 (shadow_map_lookup.frag).
+    const GLfloat one = 1.f;
+    gl::glClearNamedFramebufferfv(lookupFbo_.id(), GL_DEPTH, 0, &one);
+    gl::glEnable(GL_DEPTH_TEST);
+    gl::glDepthMask(GL_TRUE);
+    gl::glDepthFunc(GL_ALWAYS);
+    draw(lookupProgram(kind, s, true));
+    gl::glDepthMask(GL_FALSE);
+    gl::glDepthFunc(GL_LESS);  // the full-screen triangle is at depth 0
+    draw(lookupProgram(kind, s, false));
+    gl::glDepthMask(GL_TRUE);
+    gl::glDisable(GL_DEPTH_TEST);
   }
   gl::glBindVertexArray(0);
   gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -1,5 +1,7 @@
 // Shadow-map depth render: every shadow-casting mesh from the scene's shared GPU buffers into
 // each layer of the D32F array, reversed-Z (see shadow_map_frusta.h), depth only.
+#include <algorithm>
+#include <array>
 #include <cstdint>
 
 #include "engine/gl/debug.h"
@@ -12,7 +14,6 @@ namespace diptych::shadowmap {
 
 ShadowMapGl::ShadowMapGl()
     : depth_(gl::loadProgram({"shadow_map_depth.vert", "shadow_map_depth.frag"})),
-      lookup_(gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"})),
       depthFbo_(gl::Framebuffer::create()),
       lookupFbo_(gl::Framebuffer::create()),
       emptyVao_(gl::VertexArray::create()),
@@ -36,8 +37,38 @@ bool castsShadow(const Scene& scene, int material) {
 
 }  // namespace
 
-void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
-                             const Settings& settings, const gl::Texture& maps) {
+bool boxOutsideFrustum(const Aabb& box, const mat4& viewProj) {
+  // The six clip planes are linear in homogeneous clip space (-w <= x, y <= w, 0 <= z <= w for
+  // ZERO_TO_ONE), so a box whose 8 corners all fail the same plane lies wholly outside: none
+  // of its triangles could survive clipping, and skipping its draw changes no texel. Corners
+  // behind a perspective eye (w < 0) are handled by the same linear tests.
+  if (box.empty()) return true;
+  std::array<int, 6> outside{};
+  for (int i = 0; i < 8; ++i) {
+    const vec4 c = viewProj * vec4(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
+                                   i & 4 ? box.hi.z : box.lo.z, 1.f);
+    outside[0] += c.x < -c.w;
+    outside[1] += c.x > c.w;
+    outside[2] += c.y < -c.w;
+    outside[3] += c.y > c.w;
+    outside[4] += c.z < 0.f;
+    outside[5] += c.z > c.w;
+  }
+  return std::find(outside.begin(), outside.end(), 8) != outside.end();
+}
+
+const std::vector<Aabb>& ShadowMapGl::meshBounds(const WorldGeometry& geometry) {
+  // World geometry is fixed for the RenderWorld this object is cached in: computed once.
+  if (meshBounds_.size() != geometry.meshes.size()) {
+    meshBounds_.assign(geometry.meshes.size(), Aabb{});
+    for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
+      for (const vec3& p : geometry.meshes[m].positions) meshBounds_[m].extend(p);
+  }
+  return meshBounds_;
+}
+
+int ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
+                            const Settings& settings, const gl::Texture& maps) {
   gl::ScopedGlLabel label("shadow_map.render");
   const gl::GlSceneBuffers& scene = world.glScene();
   const Scene& source = world.scene();
@@ -70,7 +101,9 @@ void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>
     shading.bindStorage();
   }
   scene.vertexArray.bind();
+  const std::vector<Aabb>& bounds = meshBounds(world.geometry());
   const GLfloat zero = 0.f;
+  int draws = 0;
   for (const LightFrustum& f : frusta) {
     for (int i = 0; i < f.layers; ++i) {
       depthFbo_.attachDepth(maps, 0, f.firstLayer + i);
@@ -79,8 +112,12 @@ void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>
       gl::glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &zero);
       depth_.set("uViewProjection", f.viewProj[std::size_t(i)]);
       if (alphaDepth_) alphaDepth_.set("uViewProjection", f.viewProj[std::size_t(i)]);
-      for (const gl::GlMeshRange& mesh : scene.meshes) {
+      // Each cube face (or map) draws only the casters its frustum can see: a GPU engine's
+      // per-view culling. Without it every mesh went through every face (docs/benchmarks.md).
+      for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        const gl::GlMeshRange& mesh = scene.meshes[m];
         if (mesh.triangleCount == 0 || !castsShadow(source, mesh.material)) continue;
+        if (m < bounds.size() && boxOutsideFrustum(bounds[m], f.viewProj[std::size_t(i)])) continue;
         const gl::AlphaDraw mode = shading.alphaDraw(mesh.material);
         if (mode == gl::AlphaDraw::Hidden) continue;
         if (mode == gl::AlphaDraw::AlphaTested) {
@@ -91,6 +128,7 @@ void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>
         }
         gl::glDrawElements(GL_TRIANGLES, GLsizei(3 * mesh.triangleCount), GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));
+        ++draws;
       }
     }
   }
@@ -98,6 +136,7 @@ void ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>
   gl::glPolygonOffset(0.f, 0.f);
   gl::glBindVertexArray(0);
   gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return draws;
 }
 
 }  // namespace diptych::shadowmap

@@ -53,7 +53,9 @@ std::string extensionOf(const std::string& path) {
 void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const RenderOptions& o) {
   std::printf(
       "per-node timings: median of %d frames after %d warm-up frames (CPU: steady_clock; GPU: "
-      "GL_TIME_ELAPSED)\n",
+      "GL_TIME_ELAPSED, read after the frame's last node, so no node waits on its query: a GL "
+      "node's cpu ms is the time to issue its commands, and the GL work it queued shows in its "
+      "gpu ms and in the cpu ms of the first node that waits for it, normally a readback)\n",
       o.frames, o.warmup);
   std::printf("%-34s %-9s %-4s %11s %11s %14s\n", "node", "kind", "dom", "cpu ms", "gpu ms",
               "Mrays/s");
@@ -187,7 +189,9 @@ void runRender(const RenderOptions& o) {
     nlohmann::json j = graphToJson(graph, &executor.timings());
     j["method"] = fmt::format(
         "median of {} frames after {} warm-up frames; CPU wall clock (steady_clock) "
-        "per node, GL_TIME_ELAPSED queries for GL nodes and transfers",
+        "per node, GL_TIME_ELAPSED queries for GL nodes and transfers, read after the frame's "
+        "last node (no node waits on its query: a GL node's cpu_ms is the time to issue its "
+        "commands, and the wait for GL work falls in the first node that synchronises)",
         o.frames, o.warmup);
     j["scene"] = o.scene;
     j["devices"] = devices;

@@ -24,11 +24,19 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
   }
   run.timings = ex.timings();
   for (std::size_t n = 0; n < run.graph.nodes.size(); ++n) {
-    const double ms = summarize(run.timings[n].cpuMs).median;
-    run.passMs[run.graph.nodes[n].name] = ms;
+    const NodeTiming& t = run.timings[n];
+    const double ms = summarize(t.cpuMs).median;
+    // GL timer queries are not waited on per node (executor.cpp): a GL pass's CPU time is the
+    // time to issue its commands (on llvmpipe that includes vertex processing and binning on
+    // the calling thread) and its GL time the rest, so its figure is their sum. A transfer's CPU
+    // time also holds the wait for earlier passes' GL work: its figure is its own GL time. The
+    // frame total stays the CPU sum, which includes that wait (docs/frame-graph.md).
+    const GraphNode& node = run.graph.nodes[n];
+    const bool transfer = node.kind != NodeKind::Pass;
+    const double gl = t.gpuMs.empty() ? 0.0 : summarize(t.gpuMs).median;
+    run.passMs[node.name] = t.gpuMs.empty() ? ms : transfer ? gl : ms + gl;
     // Readbacks of signals requested only for the per-slot metrics are measurement, not frame
     // work: the frame's own output (outputs[0], the image) still counts.
-    const GraphNode& node = run.graph.nodes[n];
     const bool measurementOnly = node.forOutputOnly && !outputs.empty() &&
                                  run.graph.resources[node.resource].name != outputs.front();
     if (!measurementOnly) run.totalMs += ms;

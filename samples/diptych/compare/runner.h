@@ -21,7 +21,8 @@ struct GraphRun {
   // allocation, first-use caches) that the median of the measured frames leaves out.
   double firstFrameMs = 0;
   double rays = 0;                                   // rays counted by the passes in the last frame
-  nlohmann::json passMs = nlohmann::json::object();  // node name -> median CPU ms
+  nlohmann::json passMs = nlohmann::json::object();  // node name -> median ms (runner.cpp: GL
+                                                     // passes CPU + GL, transfers GL)
 };
 
 GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings& frame,
