@@ -48,7 +48,7 @@ int wrapCode(WrapMode w) {
   return 0;
 }
 
-// std430 layout of scene_shading.glsl's GpuMaterial: nine vec4.
+// std430 layout of scene_shading.glsl's GpuMaterial: thirteen vec4.
 void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& out) {
   const shading::ShadingMaterial s = shading::toShadingMaterial(m);
   const bool checker = m.checker.has_value();
@@ -87,6 +87,16 @@ void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& 
                             m.alphaCutoff};
   out.insert(out.end(), std::begin(values), std::end(values));
   out.insert(out.end(), {lane.layer, lane.width, lane.height, lane.flags});
+  // --- textures (scene_shading.glsl's GpuMaterial.texColorEmitMrAo .. texRoughness) ---
+  // Texture indices as float (-1: none; exact for indices below 2^24), and the glTF inputs that
+  // resolveMaterial re-maps per texel with gltfPbrToLecture.
+  const float colour = m.checker ? -1.f : float(m.colorTexture);
+  out.insert(out.end(), {colour, float(m.emissionTexture), float(m.metallicRoughnessTexture),
+                         float(m.occlusionTexture), float(m.normalTexture), m.normalScale,
+                         m.occlusionStrength, m.transmissionFactor, m.baseColorFactor.x,
+                         m.baseColorFactor.y, m.baseColorFactor.z, m.metallicFactor,
+                         m.roughnessFactor, 0.f, 0.f, 0.f});
+  // --- end textures ---
 }
 
 void packLight(const Light& l, std::vector<float>& out) {
@@ -119,6 +129,7 @@ void GlShadingBuffers::bindStorage() const {
   instances.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INSTANCES);
   lights.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_LIGHTS);
   glBindTextureUnit(UNIT_SCENE_ALPHA_MASKS, alphaMasks.id());
+  textures.bind();
 }
 
 AlphaDraw GlShadingBuffers::alphaDraw(int material) const {
@@ -128,6 +139,7 @@ AlphaDraw GlShadingBuffers::alphaDraw(int material) const {
 
 GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometry) {
   GlShadingBuffers out;
+  out.textures = uploadTextures(scene);
   // One layer per distinct colour texture of an alpha-tested material. Layers are as large as
   // the largest such texture (capped at kMaxAlphaMaskSize per side); each texture sits at its
   // own size in the corner of its layer, so that the shader's texel arithmetic is exactly

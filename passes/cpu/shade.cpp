@@ -10,6 +10,19 @@
 #include "passes/slots.h"
 
 namespace diptych {
+namespace {
+
+// The texture_filtering slot's C and coverage replace shade's own level-0 lookup (a = -1: none
+// there). Not for materials whose metallic-roughness texture re-maps C per texel: the signal is
+// C = colour x texture, which that mapping does not take as input (docs/textures.md).
+void applyAlbedo(SurfacePoint& sp, const Scene& scene, const CpuImage& albedo, int x, int y) {
+  const float a = albedo.f(x, y, 3);
+  if (a < 0.f || scene.material(sp.material).metallicRoughnessTexture >= 0) return;
+  sp.resolved.color = vec3(albedo.f(x, y, 0), albedo.f(x, y, 1), albedo.f(x, y, 2));
+  sp.resolved.alpha = a;
+}
+
+}  // namespace
 
 void ShadePass::setup(PassBuilder& b) {
   const int w = b.frame().width, h = b.frame().height;
@@ -17,6 +30,7 @@ void ShadePass::setup(PassBuilder& b) {
   lightVisibility_ = b.readOptional("light_visibility", Format::R32F);
   reflection_ = b.readOptional("reflection", Format::RGBA32F);
   transmission_ = b.readOptional("transmission", Format::RGBA32F);
+  albedo_ = b.readOptional("albedo", Format::RGBA32F);
   color_ = b.write("color", {Format::RGBA32F, w, h}, vec4(0.f, 0.f, 0.f, 1.f));
 }
 
@@ -29,6 +43,7 @@ void ShadePass::execute(PassContext& c) {
       lightVisibility_ == kNoResource ? nullptr : &c.cpuRead(lightVisibility_);
   const CpuImage* reflection = reflection_ == kNoResource ? nullptr : &c.cpuRead(reflection_);
   const CpuImage* transmission = transmission_ == kNoResource ? nullptr : &c.cpuRead(transmission_);
+  const CpuImage* albedo = albedo_ == kNoResource ? nullptr : &c.cpuRead(albedo_);
   CpuImage& out = c.cpuWrite(color_);
 
   std::vector<shading::ShadingLight> lights;
@@ -46,7 +61,8 @@ void ShadePass::execute(PassContext& c) {
       if (!hit) {
         radiance = sampleEnvironment(scene.environment, eye.direction);
       } else {
-        const SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
+        SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
+        if (albedo) applyAlbedo(sp, scene, *albedo, x, y);
         const vec3 v = -eye.direction;
         radiance = shading::emittedAndAmbient(sp.resolved, scene.ambient);
         for (std::size_t i = 0; i < lights.size(); ++i) {

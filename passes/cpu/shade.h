@@ -9,7 +9,9 @@ namespace diptych {
 //       + k_ps M_PS L_refl + k_t M_T L_trans
 // V_i comes from the light_visibility input (any producer of the visibility slot; 1 when
 // unconnected or culled); L_refl and L_trans from optional reflection/transmission inputs
-// (0 when unconnected). Background pixels show the environment. Output: color RGBA32F.
+// (0 when unconnected); C and coverage from the optional albedo input (the texture_filtering
+// slot; its own level-0 lookup where absent or -1). Background pixels show the environment.
+// Output: color RGBA32F.
 class ShadePass : public Pass {
  public:
   Domain domain() const override { return Domain::Cpu; }
@@ -19,6 +21,7 @@ class ShadePass : public Pass {
  private:
   ResourceId hits_ = kNoResource, lightVisibility_ = kNoResource;
   ResourceId reflection_ = kNoResource, transmission_ = kNoResource, color_ = kNoResource;
+  ResourceId albedo_ = kNoResource;
 };
 
 }  // namespace diptych
