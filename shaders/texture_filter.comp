@@ -27,23 +27,30 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= size.x || p.y >= size.y) return;
   uvec4 texel = texelFetch(uHits, p, 0);
-  SceneSurface s = surfaceFromHits(texel);
-  if (!s.hit) {
+  if (texel.x == 0u) {
     imageStore(uAlbedo, p, vec4(-1.0));
     return;
   }
-  GpuMaterial g = sceneMaterials[s.material + 1];
+  // The surface point as surfaceFromHits rebuilds it, without the normals this pass does not use.
+  int instance = int(texel.x) - 1;
+  int material = sceneInstanceMaterial(instance);
+  uvec3 tri = sceneTriangle(sceneInstanceFirstTriangle(instance) + texel.y);
+  float bu = uintBitsToFloat(texel.z), bv = uintBitsToFloat(texel.w), bw = 1.0 - bu - bv;
+  vec3 p0 = scenePosition(tri.x), p1 = scenePosition(tri.y), p2 = scenePosition(tri.z);
+  vec3 position = bw * p0 + bu * p1 + bv * p2;
+  vec2 t0 = vec2(sceneUvs[2u * tri.x], sceneUvs[2u * tri.x + 1u]);
+  vec2 t1 = vec2(sceneUvs[2u * tri.y], sceneUvs[2u * tri.y + 1u]);
+  vec2 t2 = vec2(sceneUvs[2u * tri.z], sceneUvs[2u * tri.z + 1u]);
+  vec2 uv = bw * t0 + bu * t1 + bv * t2;
+  GpuMaterial g = sceneMaterials[material + 1];
   vec4 result = vec4(g.colorKa.xyz, g.transmitAlpha.w);
   int tex = int(g.texColorEmitMrAo.x);
   if (g.emissionChecker.w > 0.5) {
-    result.xyz = sceneMaterial(s.material, s.uv).color;  // procedural: point-sampled
+    result.xyz = sceneMaterial(material, uv).color;  // procedural: point-sampled
   } else if (sceneTextureValid(tex)) {
     // The footprint: neighbour pixel rays meet the triangle's plane (ray differentials).
-    uvec3 tri = sceneTriangle(sceneInstanceFirstTriangle(s.instance) + texel.y);
-    vec3 p0 = scenePosition(tri.x), e1 = scenePosition(tri.y) - p0, e2 = scenePosition(tri.z) - p0;
-    vec2 t0 = vec2(sceneUvs[2u * tri.x], sceneUvs[2u * tri.x + 1u]);
-    vec2 f1 = vec2(sceneUvs[2u * tri.y], sceneUvs[2u * tri.y + 1u]) - t0;
-    vec2 f2 = vec2(sceneUvs[2u * tri.z], sceneUvs[2u * tri.z + 1u]) - t0;
+    vec3 e1 = p1 - p0, e2 = p2 - p0;
+    vec2 f1 = t1 - t0, f2 = t2 - t0;
     vec3 n = cross(e1, e2);
     vec2 ndc = 2.0 * (vec2(p) + 0.5) / vec2(size) - 1.0;
     vec3 d = uForward + ndc.x * uRight + ndc.y * uUp;
@@ -53,28 +60,28 @@ void main() {
     // A neighbour ray parallel to the plane has no footprint point: treat it as very far.
     float tx = abs(dot(dirX, n)) > 0.0 ? planeDistance / dot(dirX, n) : 1.0e20;
     float ty = abs(dot(dirY, n)) > 0.0 ? planeDistance / dot(dirY, n) : 1.0e20;
-    vec2 bx = barycentric(uEye + tx * dirX - s.position, e1, e2);
-    vec2 by = barycentric(uEye + ty * dirY - s.position, e1, e2);
+    vec2 bx = barycentric(uEye + tx * dirX - position, e1, e2);
+    vec2 by = barycentric(uEye + ty * dirY - position, e1, e2);
     vec2 dx = bx.x * f1 + bx.y * f2, dy = by.x * f1 + by.y * f2;
     vec4 c;
     if (uMode == 0) {
-      c = sceneSampleFiltered(tex, s.uv, 0.0, false, SCENE_MIPS_NONE);
+      c = sceneSampleFiltered(tex, uv, 0.0, false, SCENE_MIPS_NONE);
     } else if (uMode == 1) {
-      c = sceneSampleFiltered(tex, s.uv, 0.0, true, SCENE_MIPS_NONE);
+      c = sceneSampleFiltered(tex, uv, 0.0, true, SCENE_MIPS_NONE);
     } else if (uMode == 2) {
       // The lecture: the level grows with log2 of the eye distance. Its constant is the
       // footprint of a pixel facing the camera (the ray-cone LOD without the cosine):
       // lambda = log2(distance * 2 tan(fov/2) / H) + 0.5 log2(uv area / world area) + 0.5 log2(w h).
       float worldArea = length(n), uvArea = abs(f1.x * f2.y - f1.y * f2.x);
       vec2 texSize = vec2(sceneTextureInfo[tex].xy);
-      float lambda = log2(length(s.position - uEye) * 2.0 * length(uUp) / float(size.y)) +
+      float lambda = log2(length(position - uEye) * 2.0 * length(uUp) / float(size.y)) +
                      0.5 * log2(uvArea / worldArea) + 0.5 * log2(texSize.x * texSize.y);
-      c = sceneSampleFiltered(tex, s.uv, worldArea > 0.0 && uvArea > 0.0 ? lambda : 0.0, true,
+      c = sceneSampleFiltered(tex, uv, worldArea > 0.0 && uvArea > 0.0 ? lambda : 0.0, true,
                               SCENE_MIPS_LINEAR);
     } else if (uMode == 3) {
-      c = sceneSampleFiltered(tex, s.uv, sceneLodFromGradients(tex, dx, dy), true, SCENE_MIPS_LINEAR);
+      c = sceneSampleFiltered(tex, uv, sceneLodFromGradients(tex, dx, dy), true, SCENE_MIPS_LINEAR);
     } else {
-      c = sceneSampleAnisotropic(tex, s.uv, dx, dy, uMaxAnisotropy);
+      c = sceneSampleAnisotropic(tex, uv, dx, dy, uMaxAnisotropy);
     }
     result *= c;
   }

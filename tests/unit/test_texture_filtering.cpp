@@ -68,6 +68,37 @@ TEST(TextureFiltering, SupersampleWithOneSampleIsThePixelCentreLookup) {
   EXPECT_LT(meanError(one, bilinear), 1e-4);
 }
 
+CpuImage colorOf(Recipe r) {
+  const auto f = testing::renderHybridFrame(loadScene(kScene), kW, kH, {"shade.color"}, r);
+  return f->output("shade.color");
+}
+
+// shade takes C from its albedo input: a different filter changes the frame, and the built-in
+// recipe's N = 1 signal gives the frame shade makes with its own lookup (input removed).
+TEST(TextureFiltering, ShadeUsesTheAlbedoInput) {
+  Recipe nearest = defaultHybridRecipe(), own = defaultHybridRecipe();
+  applySlotOverride(nearest, parseSlotOverride("texture_filtering=texture_nearest"),
+                    builtinPasses());
+  for (RecipePass& p : own.passes)
+    if (p.type == "shade") p.inputs.erase("albedo");
+  const CpuImage builtIn = colorOf(defaultHybridRecipe());
+  const CpuImage withoutAlbedo = colorOf(own);
+  const CpuImage withNearest = colorOf(nearest);
+  double same = 0.0, changed = 0.0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      for (int c = 0; c < 3; ++c) {
+        same += std::fabs(builtIn.f(x, y, c) - withoutAlbedo.f(x, y, c));
+        changed += std::fabs(builtIn.f(x, y, c) - withNearest.f(x, y, c));
+      }
+  same /= 3.0 * kW * kH;
+  changed /= 3.0 * kW * kH;
+  std::cout << "mean |built-in - own lookup| = " << same << ", |built-in - nearest| = " << changed
+            << "\n";
+  EXPECT_LT(same, 1e-4);
+  EXPECT_GT(changed, 10.0 * same + 1e-4);
+}
+
 CpuImage reflectionOf(const std::string& lod, int w, int h) {
   Recipe r = defaultHybridRecipe();
   applySlotOverride(r, parseSlotOverride("reflection=rt_reflection:texture_lod=" + lod),
