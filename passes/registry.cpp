@@ -11,6 +11,11 @@
 #include "passes/raster/planar_mirror.h"
 #include "passes/raster/shadow_map.h"
 #include "passes/raster/sorted_blend.h"
+#include "passes/raster/texture_anisotropic.h"
+#include "passes/raster/texture_bilinear.h"
+#include "passes/raster/texture_distance.h"
+#include "passes/raster/texture_nearest.h"
+#include "passes/raster/texture_trilinear.h"
 #include "passes/raster/unsorted_blend.h"
 #include "passes/rt/rt_distributed.h"
 #include "passes/rt/rt_path.h"
@@ -19,11 +24,6 @@
 #include "passes/rt/rt_transmission.h"
 #include "passes/rt/rt_whitted.h"
 #include "passes/rt/texture_supersample.h"
-#include "passes/raster/texture_anisotropic.h"
-#include "passes/raster/texture_bilinear.h"
-#include "passes/raster/texture_distance.h"
-#include "passes/raster/texture_nearest.h"
-#include "passes/raster/texture_trilinear.h"
 #include "passes/slots.h"
 
 namespace diptych {

@@ -86,8 +86,8 @@ GlSceneTextures uploadTextures(const Scene& scene) {
     throw Error("scene has " + std::to_string(out.count) +
                 " textures, above GL_MAX_ARRAY_TEXTURE_LAYERS " + std::to_string(maxLayers));
   const int levels = levelsOf(width, height);
-  out.texels = Texture::create2DArray(TextureFormat::RGBA32F, width, height,
-                                      std::max(1, out.count), levels);
+  out.texels =
+      Texture::create2DArray(TextureFormat::RGBA32F, width, height, std::max(1, out.count), levels);
   out.texels.setLabel("scene.textures");
   std::vector<std::int32_t> info;
   for (int k = 0; k < out.count; ++k) {

@@ -39,7 +39,7 @@ struct GlShadingBuffers {
   // sampleTexture does, with texelFetch). A 1x1x1 dummy when no material is alpha-tested.
   Texture alphaMasks;
   int alphaMaskLayers = 0;
-  GlSceneTextures textures;  // every Scene::textures entry with its mip chain
+  GlSceneTextures textures;          // every Scene::textures entry with its mip chain
   std::vector<AlphaDraw> drawModes;  // index material + 1, as `materials`
   int materialCount = 0, instanceCount = 0, lightCount = 0;
 

@@ -23,9 +23,9 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed,
   const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
   if (observer_) observer_({ray, depth, hit});
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
-  SurfacePoint p = makeSurfacePoint(
-      scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
-      ray.direction);
+  SurfacePoint p = makeSurfacePoint(scene_, world_,
+                                    {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
+                                    ray.direction);
   if (cone && settings_.rayCones) {
     const RayCone at{cone->width + cone->spread * hit->t * glm::length(ray.direction),
                      cone->spread};
@@ -69,8 +69,8 @@ vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth, s
                   cone ? &next : nullptr);
 }
 
-vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth,
-                                std::uint32_t seed, const RayCone* cone) const {
+vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
+                                const RayCone* cone) const {
   if (depth >= settings_.maxDepth) return vec3(0.f);
   // Entering through the front face goes from air (1) into the material (ior); leaving goes
   // back out. Nested media are told apart by face orientation only (no medium stack).

@@ -44,8 +44,7 @@ class WhittedTracer {
 
   // RAYTRACING(o, u, depth); the caller offsets o if it leaves a surface.
   // cone: the ray's cone at its origin, used for texture LOD when settings.rayCones is set.
-  vec3 radiance(const Ray& ray, int depth, std::uint32_t seed,
-                const RayCone* cone = nullptr) const;
+  vec3 radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone = nullptr) const;
   // EVALUAMILREC at a known surface point seen from direction v (unit, toward the viewer); cone:
   // the cone's width at the point and its spread.
   vec3 shade(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,

@@ -22,8 +22,10 @@ std::vector<Taps> axisTaps(int source, int dest) {
     t.first = int(std::floor(lo));
     for (int s = t.first; s < source && double(s) < hi; ++s) {
       const double overlap = std::min(hi, double(s + 1)) - std::max(lo, double(s));
-      if (overlap > 0.0) t.weights.push_back(overlap / ratio);
-      else if (t.weights.empty()) ++t.first;  // touches only at its edge
+      if (overlap > 0.0)
+        t.weights.push_back(overlap / ratio);
+      else if (t.weights.empty())
+        ++t.first;  // touches only at its edge
     }
   }
   return taps;

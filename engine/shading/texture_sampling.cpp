@@ -86,7 +86,9 @@ vec4 sampleTexture(const Texture& texture, vec2 uv, bool minifying) {
                       : sampleBilinear(texture.image, uv, texture.wrapS, texture.wrapT);
 }
 
-int mipLevelCount(const Texture& texture) { return 1 + int(texture.mips.size()); }
+int mipLevelCount(const Texture& texture) {
+  return 1 + int(texture.mips.size());
+}
 
 const Image& mipLevel(const Texture& texture, int level) {
   return level <= 0 || texture.mips.empty()

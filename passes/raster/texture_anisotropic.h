@@ -3,7 +3,8 @@
 
 namespace diptych {
 
-// texture_anisotropic: anisotropic probes along the footprint's long axis (EXT_texture_filter_anisotropic).
+// texture_anisotropic: anisotropic probes along the footprint's long axis
+// (EXT_texture_filter_anisotropic).
 class TextureAnisotropicPass : public TextureFilterPass {
  public:
   TextureAnisotropicPass() : TextureFilterPass(TextureFilterKind::Anisotropic) {}

@@ -3,7 +3,8 @@
 
 namespace diptych {
 
-// texture_distance: the lecture's level from log2 of the eye distance, trilinear between the two nearest levels.
+// texture_distance: the lecture's level from log2 of the eye distance, trilinear between the two
+// nearest levels.
 class TextureDistancePass : public TextureFilterPass {
  public:
   TextureDistancePass() : TextureFilterPass(TextureFilterKind::Distance) {}

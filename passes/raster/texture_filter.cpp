@@ -29,7 +29,8 @@ ParamSchema TextureFilterPass::schema(TextureFilterKind kind) {
 }
 
 void TextureFilterPass::setup(PassBuilder& b) {
-  if (kind_ == TextureFilterKind::Anisotropic) maxAnisotropy_ = b.params().integer("max_anisotropy");
+  if (kind_ == TextureFilterKind::Anisotropic)
+    maxAnisotropy_ = b.params().integer("max_anisotropy");
   io_ = slotIo(b, "texture_filtering");
 }
 

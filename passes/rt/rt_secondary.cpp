@@ -32,7 +32,8 @@ void RtSecondaryPass::execute(PassContext& c) {
   const FrameSettings& frame = c.frame();
   const CpuImage& hits = c.cpuRead(io_.hits);
   CpuImage& out = c.cpuWrite(io_.signal);
-  const WhittedTracer tracer(scene, world.geometry(), world.rtScene(), {maxDepth_, areaSamples_, rayCones_});
+  const WhittedTracer tracer(scene, world.geometry(), world.rtScene(),
+                             {maxDepth_, areaSamples_, rayCones_});
   const float spread = pixelSpreadAngle(frame.camera, frame.height);
   const bool reflection = kind_ == Kind::Reflection;
 

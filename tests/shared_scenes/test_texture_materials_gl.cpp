@@ -58,10 +58,21 @@ double mismatchFraction(const std::filesystem::path& file, int& hits) {
     const SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), hit, vec3(0.f));
     const shading::ShadingMaterial& m = sp.resolved;
     // makeSurfacePoint flips the normal to the incoming side; a zero incoming is the front.
-    const float cpu[15] = {m.color.x,      m.color.y,      m.color.z,     m.alpha, m.emission.x,
-                           m.emission.y,   m.emission.z,   m.ka,          m.kd,    m.ks,
-                           m.exponent,     m.kps,          sp.shadingNormal.x,
-                           sp.shadingNormal.y, sp.shadingNormal.z};
+    const float cpu[15] = {m.color.x,
+                           m.color.y,
+                           m.color.z,
+                           m.alpha,
+                           m.emission.x,
+                           m.emission.y,
+                           m.emission.z,
+                           m.ka,
+                           m.kd,
+                           m.ks,
+                           m.exponent,
+                           m.kps,
+                           sp.shadingNormal.x,
+                           sp.shadingNormal.y,
+                           sp.shadingNormal.z};
     const float* g = &gpu[std::size_t(i) * kStride];
     bool ok = true;
     for (int k = 0; k < 15; ++k) {
@@ -96,9 +107,9 @@ TEST(TextureMaterialsGl, EverySamplerModelMatchesTheCpu) {
 
 TEST(TextureMaterialsGl, TextureSettingsDamagedHelmetAndNormalMapsMatchTheCpu) {
   const std::filesystem::path shared(DIPTYCH_SHARED_SCENES);
-  for (const char* file : {"texture-settings-test/TextureSettingsTest.glb",
-                           "damaged-helmet/DamagedHelmet.glb",
-                           "normal-tangent-test/NormalTangentTest.glb"}) {
+  for (const char* file :
+       {"texture-settings-test/TextureSettingsTest.glb", "damaged-helmet/DamagedHelmet.glb",
+        "normal-tangent-test/NormalTangentTest.glb"}) {
     int hits = 0;
     const double f = mismatchFraction(shared / file, hits);
     std::cout << file << ": " << hits << " texels, mismatch " << f << "\n";

@@ -44,8 +44,8 @@ TEST(MipChain, PowerOfTwoLevelsAreTheLecturesBoxAverage) {
           const int k1 = previous->height > 1 ? 2 * k + 1 : 2 * k;
           const float box = 0.25f * (previous->at(2 * j, 2 * k, c) + previous->at(j1, 2 * k, c) +
                                      previous->at(2 * j, k1, c) + previous->at(j1, k1, c));
-          EXPECT_NEAR(level.at(j, k, c), box, 1e-6f) << "level " << level.width << "x"
-                                                     << level.height << " texel " << j << "," << k;
+          EXPECT_NEAR(level.at(j, k, c), box, 1e-6f)
+              << "level " << level.width << "x" << level.height << " texel " << j << "," << k;
         }
       }
     }
@@ -97,9 +97,7 @@ Texture chainTexture(int w, int h) {
 TEST(MipChain, SamplerSelectsLevelsAsTheGlSpec) {
   const Texture t = chainTexture(16, 16);
   const vec2 uv(0.3f, 0.7f);
-  const auto level = [&](int i) {
-    return sampleBilinear(mipLevel(t, i), uv, t.wrapS, t.wrapT);
-  };
+  const auto level = [&](int i) { return sampleBilinear(mipLevel(t, i), uv, t.wrapS, t.wrapT); };
   const vec4 at1 = sampleFiltered(t, uv, 1.f, true, MipSelect::Linear);
   const vec4 at1_25 = sampleFiltered(t, uv, 1.25f, true, MipSelect::Linear);
   const vec4 near1_4 = sampleFiltered(t, uv, 1.4f, true, MipSelect::Nearest);
@@ -125,8 +123,8 @@ TEST(MipChain, LodFromGradientsIsLog2OfTheTexelFootprint) {
   const vec2 dx(8.f / 64.f, 0.f), dy(0.f, 1.f / 32.f), uv(0.41f, 0.37f);
   vec4 probes(0.f);
   for (int i = 0; i < 8; ++i)
-    probes += sampleFiltered(t, uv + ((float(i) + 0.5f) / 8.f - 0.5f) * dx, 0.f, true,
-                             MipSelect::Linear);
+    probes +=
+        sampleFiltered(t, uv + ((float(i) + 0.5f) / 8.f - 0.5f) * dx, 0.f, true, MipSelect::Linear);
   const vec4 aniso = sampleAnisotropic(t, uv, dx, dy, 16);
   for (int c = 0; c < 4; ++c) EXPECT_NEAR(aniso[c], probes[c] / 8.f, 1e-6f);
 }

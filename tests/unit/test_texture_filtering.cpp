@@ -28,7 +28,8 @@ constexpr int kW = 96, kH = 72;
 CpuImage albedoOf(const std::string& producer) {
   Recipe r = defaultHybridRecipe();
   applySlotOverride(r, parseSlotOverride("texture_filtering=" + producer), builtinPasses());
-  const auto f = testing::renderHybridFrame(loadScene(kScene), kW, kH, {"texture_filtering.albedo"}, r);
+  const auto f =
+      testing::renderHybridFrame(loadScene(kScene), kW, kH, {"texture_filtering.albedo"}, r);
   return f->output("texture_filtering.albedo");
 }
 
@@ -52,7 +53,8 @@ TEST(TextureFiltering, MipmapsAndAnisotropyBeatLevelZeroAgainstSupersampling) {
   for (const char* p : {"texture_nearest", "texture_bilinear", "texture_distance",
                         "texture_trilinear", "texture_anisotropic"})
     error[p] = meanError(albedoOf(p), exact);
-  for (const auto& [p, e] : error) std::cout << p << ": mean |albedo - supersampled| = " << e << "\n";
+  for (const auto& [p, e] : error)
+    std::cout << p << ": mean |albedo - supersampled| = " << e << "\n";
   EXPECT_GT(error["texture_nearest"], error["texture_trilinear"]);
   EXPECT_GT(error["texture_bilinear"], error["texture_trilinear"]);
   EXPECT_LT(error["texture_anisotropic"], error["texture_trilinear"]);

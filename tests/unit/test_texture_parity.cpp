@@ -95,8 +95,8 @@ TEST(TextureParity, GlSamplersMatchCpuPerSamplerMode) {
         const float err = std::fabs(gpu - expected[j][ch]);
         if (err > worstError) worstError = err, worst = c;
         EXPECT_LE(err, 1e-5f) << "texture " << tex.name << " case " << c << " output " << j
-                              << " channel " << ch << " uv (" << uv.x << ", " << uv.y
-                              << ") lambda " << lambda;
+                              << " channel " << ch << " uv (" << uv.x << ", " << uv.y << ") lambda "
+                              << lambda;
       }
     }
   }
