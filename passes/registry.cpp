@@ -15,6 +15,7 @@
 #include "passes/raster/texture_bilinear.h"
 #include "passes/raster/texture_distance.h"
 #include "passes/raster/texture_nearest.h"
+#include "passes/raster/texture_sampler.h"
 #include "passes/raster/texture_trilinear.h"
 #include "passes/raster/unsorted_blend.h"
 #include "passes/rt/rt_distributed.h"
@@ -109,6 +110,10 @@ const PassRegistry& builtinPasses() {
         {.name = "texture_anisotropic",
          .slot = "texture_filtering",
          .summary = "texture: anisotropic probes along the footprint's long axis (GL)"});
+    r.add<TextureSamplerPass>(
+        {.name = "texture_sampler",
+         .slot = "texture_filtering",
+         .summary = "texture: its own glTF sampler (min/mag, mip mode) at GL's level (GL)"});
 
     // Full-frame references (no slot).
     r.add<RtWhittedPass>(

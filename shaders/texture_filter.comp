@@ -9,7 +9,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform usampler2D uHits;  // gbuffer.hits (RGBA32UI)
 layout(binding = 0, rgba32f) writeonly uniform image2D uAlbedo;
-uniform int uMode;  // TextureFilterKind: 0 nearest, 1 bilinear, 2 distance, 3 trilinear, 4 aniso
+uniform int uMode;  // TextureFilterKind: 0 nearest, 1 bilinear, 2 distance, 3 trilinear, 4 aniso,
+                    // 5 the texture's own sampler
 uniform int uMaxAnisotropy;
 uniform vec3 uEye, uForward, uRight, uUp;  // primaryRay's pinhole: d = F + ndc.x R + ndc.y U
 
@@ -80,8 +81,10 @@ void main() {
                               SCENE_MIPS_LINEAR);
     } else if (uMode == 3) {
       c = sceneSampleFiltered(tex, uv, sceneLodFromGradients(tex, dx, dy), true, SCENE_MIPS_LINEAR);
-    } else {
+    } else if (uMode == 4) {
       c = sceneSampleAnisotropic(tex, uv, dx, dy, uMaxAnisotropy);
+    } else {
+      c = sceneSampleTextureLod(tex, uv, sceneLodFromGradients(tex, dx, dy));
     }
     result *= c;
   }

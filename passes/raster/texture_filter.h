@@ -10,12 +10,14 @@
 //   texture_distance.h     the lecture's mip level from log2 of the eye distance, trilinear
 //   texture_trilinear.h    GL's derivative-based lambda (8.14.1), trilinear
 //   texture_anisotropic.h  EXT_texture_filter_anisotropic probes along the footprint's long axis
+//   texture_sampler.h      the texture's own glTF sampler (min/mag filter, mipmap mode) at GL's
+//                          derivative-based level: what glTF asks a renderer to do
 #include "engine/graph/pass.h"
 #include "passes/slots.h"
 
 namespace diptych {
 
-enum class TextureFilterKind { Nearest, Bilinear, Distance, Trilinear, Anisotropic };
+enum class TextureFilterKind { Nearest, Bilinear, Distance, Trilinear, Anisotropic, Sampler };
 
 class TextureFilterPass : public Pass {
  public:

@@ -29,7 +29,7 @@ run() {  # name, slot options...
   echo "$name flip=$flip texture_filtering_ms=${tf:--} reflection_ms=${refl:--}" | tee -a "$out/figures.txt"
 }
 : > "$out/figures.txt"
-for p in texture_nearest texture_bilinear texture_distance texture_trilinear texture_anisotropic "texture_supersample:samples=4"; do
+for p in texture_nearest texture_bilinear texture_distance texture_trilinear texture_anisotropic texture_sampler "texture_supersample:samples=4"; do
   run "${p%%:*}" --slot "texture_filtering=$p"
 done
 run trilinear-cone --slot texture_filtering=texture_trilinear --slot reflection=rt_reflection:texture_lod=cone
