@@ -4,7 +4,7 @@
 # final image against a supersampled reference: the hybrid at 4x the size (2560x1920) with
 # texture_supersample N = 2 (8 x 8 texture samples per final pixel) and level-0 reflections,
 # box-averaged to 640x480 by oiiotool. FLIP (diptych diff, 67 ppd) and the per-pass medians of
-# `diptych render` (5 frames after 2 warm-up frames).
+# `diptych render` (3 frames after 1 warm-up frame).
 # Usage: tests/tools/texture_filtering_figures.sh BUILD_DIR OUT_DIR
 set -euo pipefail
 build=$1 out=$2
@@ -18,7 +18,7 @@ if [ ! -f "$out/reference.exr" ]; then  # minutes on llvmpipe: kept between runs
 fi
 run() {  # name, slot options...
   local name=$1; shift
-  "$d" render "$scene" --size 640x480 "$@" --out "$out/$name.exr" > "$out/$name.log"
+  "$d" render "$scene" --size 640x480 --frames 3 --warmup 1 "$@" --out "$out/$name.exr" > "$out/$name.log"
   oiiotool "$out/$name.exr" -o "$out/$name.png"
   local flip
   flip=$("$d" diff "$out/$name.exr" "$out/reference.exr" --metrics flip --json | python3 -c 'import json,sys; print("%.4f" % json.load(sys.stdin)["metrics"]["flip_mean"])')
