@@ -9,8 +9,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform usampler2D uHits;  // gbuffer.hits (RGBA32UI)
 layout(binding = 0, rgba32f) writeonly uniform image2D uAlbedo;
-uniform int uMode;  // TextureFilterKind: 0 nearest, 1 bilinear, 2 distance, 3 trilinear, 4 aniso,
-                    // 5 the texture's own sampler
+// TextureFilterKind, defined by the pass: 0 nearest, 1 bilinear, 2 distance, 3 trilinear,
+// 4 anisotropic, 5 the texture's own sampler.
+const int uMode = TEXTURE_FILTER_MODE;
 uniform int uMaxAnisotropy;
 uniform vec3 uEye, uForward, uRight, uUp;  // primaryRay's pinhole: d = F + ndc.x R + ndc.y U
 
