@@ -7,8 +7,11 @@
 namespace diptych {
 namespace {
 
+const RtScene::GeometryData& dataOf(void* userPtr) {
+  return *static_cast<const RtScene::GeometryData*>(userPtr);
+}
 const AnalyticInstance& shapeOf(void* userPtr) {
-  return *static_cast<const RtScene::GeometryData*>(userPtr)->analytic;
+  return *dataOf(userPtr).analytic;
 }
 
 void boundsCallback(const RTCBoundsFunctionArguments* args) {
@@ -39,7 +42,8 @@ PacketRay readRay(RTCRayN* rays, unsigned n, unsigned i) {
 }
 
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
-  const AnalyticInstance& a = shapeOf(args->geometryUserPtr);
+  const RtScene::GeometryData& data = dataOf(args->geometryUserPtr);
+  const AnalyticInstance& a = *data.analytic;
   const unsigned n = args->N;
   RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, n);
   RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
@@ -47,7 +51,8 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
     const PacketRay r = readRay(rays, n, i);
-    const auto hit = intersectAnalyticPart(a, part, r.origin, r.direction, r.tnear, r.tfar);
+    const auto hit =
+        intersectAnalyticPart(a, part, r.origin, r.direction, r.tnear, r.tfar, data.sdfStats.get());
     if (!hit) continue;
     // SDF hits carry their object-space point: x, y as (u, v), z's bits as the primitive id
     // (SurfaceHit's encoding, engine/rt/surface_point.h).
@@ -66,12 +71,14 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
 }
 
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
-  const AnalyticInstance& a = shapeOf(args->geometryUserPtr);
+  const RtScene::GeometryData& data = dataOf(args->geometryUserPtr);
+  const AnalyticInstance& a = *data.analytic;
   const unsigned n = args->N;
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
     const PacketRay r = readRay(args->ray, n, i);
-    if (intersectAnalyticPart(a, int(args->primID), r.origin, r.direction, r.tnear, r.tfar))
+    if (intersectAnalyticPart(a, int(args->primID), r.origin, r.direction, r.tnear, r.tfar,
+                              data.sdfStats.get()))
       RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();  // Embree: hit
   }
 }

@@ -95,6 +95,7 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
     }
     if (mesh.analytic && options.analytic) {  // quadrics and SDF objects
       data.analytic = &*mesh.analytic;
+      if (data.analytic->sdf) data.sdfStats = std::make_unique<SdfStats>();
       RTCGeometry geom = newAnalyticGeometry(dev, data);
       rtcCommitGeometry(geom);
       rtcAttachGeometryByID(scene_, geom, unsigned(id));
@@ -148,8 +149,8 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
 RtScene::SdfStepStats RtScene::sdfStepStats() const {
   SdfStepStats s;
   for (const GeometryData& g : geometry_) {
-    if (!g.analytic || !g.analytic->sdf) continue;
-    const SdfStats& o = g.analytic->sdf->stats;
+    if (!g.sdfStats) continue;
+    const SdfStats& o = *g.sdfStats;
     s.rays += o.rays.load(std::memory_order_relaxed);
     s.steps += o.steps.load(std::memory_order_relaxed);
     s.capped += o.capped.load(std::memory_order_relaxed);
@@ -160,7 +161,7 @@ RtScene::SdfStepStats RtScene::sdfStepStats() const {
 
 void RtScene::resetSdfStepStats() const {
   for (const GeometryData& g : geometry_)
-    if (g.analytic && g.analytic->sdf) g.analytic->sdf->stats.reset();
+    if (g.sdfStats) g.sdfStats->reset();
 }
 
 RtScene::~RtScene() {

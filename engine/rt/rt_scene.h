@@ -6,12 +6,14 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "engine/rt/rt_device.h"
 #include "engine/scene/camera_math.h"
+#include "engine/scene/sdf.h"
 #include "engine/scene/world_geometry.h"
 
 namespace diptych {
@@ -89,6 +91,7 @@ class RtScene {
     float alpha = 1.f;                      // Material::alpha
     float alphaCutoff = 0.5f;               // Material::alphaCutoff
     const Texture* alphaTexture = nullptr;  // whose .w multiplies alpha; null: none
+    std::unique_ptr<SdfStats> sdfStats;     // this scene's step counters of an SDF object
     // Coverage of triangle `primitive` at Embree barycentrics (u, v); read-only, thread-safe.
     float coverage(std::uint32_t primitive, float u, float v) const;
   };

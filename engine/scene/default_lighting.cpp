@@ -103,7 +103,10 @@ std::optional<std::string> applyLighting(Scene& scene, const Camera& camera,
     added.push_back("environment " + options.environmentFile);
   }
   if (!options.lightJson.empty()) {
-    scene.lights.push_back(parseLightJson(options.lightJson, "--light"));
+    Light light = parseLightJson(options.lightJson, "--light");
+    // The user writes the file's coordinates; the loaded world may have been rebased.
+    light.position = vec3(glm::dvec3(light.position) - scene.worldOrigin);
+    scene.lights.push_back(light);
     added.push_back("the --light " + scene.lights.back().name);
   }
   if (sceneIsUnlit(scene)) {

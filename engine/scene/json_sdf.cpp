@@ -21,7 +21,6 @@ double positiveNumber(JsonObject& o, const std::string& key, double fallback) {
 // a uniform scale keeps the distance a distance). toLocal is the inverse of T R S.
 // Limits that keep a hostile SDF from exhausting memory or time at load (docs/robustness.md).
 constexpr std::size_t kMaxSdfNodes = 1024;
-constexpr double kMaxSdfEvaluations = 1.5e9;  // e.g. 256^3 x 89 nodes, or 64^3 x 1024
 
 void readPlacement(JsonObject& o, SdfNode& n) {
   const dvec3 t(o.vector3("translate", vec3(0.f)));

@@ -1,6 +1,9 @@
 #include "engine/scene/primitives.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "engine/scene/sdf.h"
 
 namespace diptych {
 namespace {
@@ -182,6 +185,20 @@ Mesh makeCone(float radius, float height, int slices, bool capped) {
 Scene tessellateAnalytic(const Scene& scene, int segments) {
   Scene out = scene;
   for (Mesh& m : out.meshes) {
+    if (m.sdf) {
+      const SdfObject& o = *m.sdf;
+      const double evaluations = std::pow(double(segments) + 1.0, 3.0) * double(o.sdf.nodes.size());
+      if (evaluations > kMaxSdfEvaluations) {
+        out.warnings.push_back("SDF object '" + m.name + "' kept exact: polygonising it at " +
+                               std::to_string(segments) + " cells exceeds the evaluation budget");
+        continue;
+      }
+      Mesh t = polygonizeSdf(o.sdf, o.lo, o.hi, segments);
+      t.name = m.name;
+      t.material = m.material;
+      m = std::move(t);  // no sdf: traced as the triangles
+      continue;
+    }
     if (!m.analytic) continue;
     const AnalyticShape s = *m.analytic;
     Mesh t;

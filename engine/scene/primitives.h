@@ -44,7 +44,10 @@ Mesh makeCone(float radius, float height, int slices, bool capped = true);
 
 // The scene with every analytic quadric (Mesh::analytic) replaced by its tessellation at
 // `segments` around (spheres: segments x segments/2), traced as triangles: the "geometry"
-// comparison axis of `diptych compare` (docs/geometry.md). SDF objects are left as they are.
+// comparison axis of `diptych compare` (docs/geometry.md). SDF objects are replaced by their
+// surface-nets polygonisation at `segments` cells per axis, traced as triangles too, unless that
+// would exceed kMaxSdfEvaluations (then the object stays exact and a warning is added to the
+// returned scene's warnings).
 Scene tessellateAnalytic(const Scene& scene, int segments);
 
 }  // namespace diptych

@@ -173,6 +173,9 @@ struct Scene {
   std::vector<Light> lights;
   Camera camera;
   bool hasCamera = false;  // false: a camera was framed automatically from the bounds
+  // Where the file's origin went when the world was rebased (rebaseIfFar): a position p given in
+  // the file's coordinates (e.g. a --light added after loading) is at p - worldOrigin here.
+  glm::dvec3 worldOrigin{0.0};
   Environment environment;
   vec3 ambient{0.f};                  // A_G
   std::vector<std::string> warnings;  // recoveries made while loading, each naming the place

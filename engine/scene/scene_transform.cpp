@@ -53,18 +53,21 @@ void rebaseScene(Scene& s, const dvec3& origin) {
   s.camera.position = vec3(dvec3(s.camera.position) - origin);
   s.camera.target = vec3(dvec3(s.camera.target) - origin);
   for (Light& l : s.lights) l.position = vec3(dvec3(l.position) - origin);
+  s.worldOrigin += origin;
 }
 
 dvec3 rebaseIfFar(Scene& s) {
   const Aabb box = s.bounds();
   if (box.empty()) return dvec3(0.0);
-  const vec3 side = box.hi - box.lo;
-  const double extent = std::max({double(side.x), double(side.y), double(side.z)});
-  const vec3& p = s.camera.position;
-  const double offset =
-      std::max({std::fabs(double(p.x)), std::fabs(double(p.y)), std::fabs(double(p.z))});
-  if (!(offset > kRebaseRatio * extent)) return dvec3(0.0);
-  const dvec3 origin(p);
+  const dvec3 lo(box.lo), hi(box.hi);
+  const dvec3 side = hi - lo, centre = 0.5 * (lo + hi);
+  const double extent = std::max({side.x, side.y, side.z});
+  auto maxAbs = [](const dvec3& v) {
+    return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  };
+  if (!(maxAbs(centre) > kRebaseRatio * extent)) return dvec3(0.0);
+  const dvec3 camera(s.camera.position);
+  const dvec3 origin = maxAbs(camera - centre) <= kRebaseRatio * extent ? camera : centre;
   rebaseScene(s, origin);
   return origin;
 }

@@ -21,9 +21,13 @@ Scene similarityTransformed(const Scene& scene, double scale, const glm::dvec3& 
 // ray tracing, rasterization and shading all read the moved scene, so they stay consistent.
 void rebaseScene(Scene& scene, const glm::dvec3& origin);
 
-// Rebases to the camera position when the camera is far from the origin compared with the
-// scene's extent (max |camera_i| > kRebaseRatio * largest bounding-box side): there float
-// coordinates would spend their bits on the offset. Returns the origin used (0 when not moved).
+// Rebases when the geometry is far from the origin compared with its own extent (max |c_i| of
+// the bounding-box centre c > kRebaseRatio * largest side): there float coordinates would spend
+// their bits on the offset. The trigger looks at the geometry, not the camera, so a small scene
+// near the origin seen from far away is left where it is. The new origin is the camera position
+// (camera-relative world, as engines do it) when the camera is near the geometry (within
+// kRebaseRatio extents of the centre), else the box centre. Records the origin in
+// scene.worldOrigin and returns it (0 when not moved).
 inline constexpr double kRebaseRatio = 16.0;
 glm::dvec3 rebaseIfFar(Scene& scene);
 

@@ -83,18 +83,21 @@ struct SdfStats {
 };
 
 // An SDF object as the scene holds it: the tree, the tracer's settings, its object-space
-// bounds (the Embree user primitive's box; rays are traced only inside it) and the statistics.
+// bounds (the Embree user primitive's box; rays are traced only inside it). Step statistics are
+// kept by whoever traces it (RtScene), not here: one object may be traced by several scenes.
 struct SdfObject {
   Sdf sdf;
   SphereTraceSettings settings;
   dvec3 lo{-1.0}, hi{1.0};
-  mutable SdfStats stats;
 };
 
 // Surface nets (Gibson 1998, "Constrained elastic surface nets"): one vertex per grid cell
 // that the surface crosses, at the mean of its edges' linear zero crossings; one quad per
 // crossed grid edge joining the four cells around it. `cells` per axis over the padded
 // bounds. Counter-clockwise seen from outside (f > 0), normals from sdfNormal.
+// Its cost is (cells + 1)^3 distance evaluations of every node; loaders and the geometry axis
+// refuse more than kMaxSdfEvaluations (e.g. 256^3 x 89 nodes, or 64^3 x 1024).
+inline constexpr double kMaxSdfEvaluations = 1.5e9;
 struct Mesh;
 Mesh polygonizeSdf(const Sdf& sdf, const dvec3& lo, const dvec3& hi, int cells);
 

@@ -53,7 +53,7 @@ AnalyticInstance placeShape(const AnalyticShape& shape, std::shared_ptr<const Sd
 // entering there must not start within 2 tolerances of it, where the tracer would take it for a
 // ray leaving the surface (sphereTrace).
 std::optional<ShapeHit> intersectSdf(const SdfObject& s, const dvec3& o, const dvec3& d, float tmin,
-                                     float tmax) {
+                                     float tmax, SdfStats* stats) {
   double t0 = tmin, t1 = tmax;
   const double pad = 4.0 * s.settings.tolerance;
   for (int i = 0; i < 3; ++i) {
@@ -65,7 +65,7 @@ std::optional<ShapeHit> intersectSdf(const SdfObject& s, const dvec3& o, const d
   }
   if (!(t0 <= t1)) return std::nullopt;
   const SphereTraceResult r = sphereTrace(s.sdf, o, d, t0, t1, s.settings);
-  s.stats.record(r);
+  if (stats) stats->record(r);
   if (!r.t || float(*r.t) < tmin || float(*r.t) > tmax) return std::nullopt;
   const dvec3 p = o + *r.t * d;
   return ShapeHit{*r.t, 0, vec2(float(p.x), float(p.y)), p};
@@ -139,11 +139,12 @@ vec3 sdfNormal(const AnalyticInstance& a, const dvec3& p) {
 }
 
 std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
-                                              const vec3& d, float tmin, float tmax) {
+                                              const vec3& d, float tmin, float tmax,
+                                              SdfStats* stats) {
   // An affine map keeps t: object-space o' + t d' is the image of o + t d.
   const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
   const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
-  if (a.sdf) return intersectSdf(*a.sdf, oo, od, tmin, tmax);
+  if (a.sdf) return intersectSdf(*a.sdf, oo, od, tmin, tmax, stats);
   auto hit = part < 0 ? intersectShape(a.shape, oo, od, double(tmin), double(tmax))
                       : intersectPart(a.shape, part, oo, od, double(tmin), double(tmax));
   if (hit && !(float(hit->t) >= tmin && float(hit->t) <= tmax)) return std::nullopt;

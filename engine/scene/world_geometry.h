@@ -10,6 +10,8 @@
 
 namespace diptych {
 
+struct SdfStats;  // engine/scene/sdf.h
+
 // An analytic shape placed by its instance transform. Rays are intersected in object space in
 // double (intersectAnalytic); points and normals go back to world space once, rounded to float.
 struct AnalyticInstance {
@@ -48,9 +50,12 @@ WorldGeometry flattenScene(const Scene& scene);
 // shape (liftToAnalytic in engine/rt/surface_point.h) compute bit-identical hits for the same ray.
 std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3& o, const vec3& d,
                                           float tmin, float tmax);
-// The one-part variant (an Embree user primitive is one part).
+// The one-part variant (an Embree user primitive is one part). For an SDF object the sphere
+// tracer's steps are recorded into `stats` when given (the caller owns the counters, so two
+// ray-tracing scenes sharing one SdfObject keep separate figures).
 std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
-                                              const vec3& d, float tmin, float tmax);
+                                              const vec3& d, float tmin, float tmax,
+                                              SdfStats* stats = nullptr);
 // World point and unit outward normal ((M^-1)^T n, right for mirrors too) at a part's uv.
 vec3 analyticPosition(const AnalyticInstance& a, int part, vec2 uv);
 vec3 analyticNormal(const AnalyticInstance& a, int part, vec2 uv);

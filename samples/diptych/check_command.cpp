@@ -5,11 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "engine/core/error.h"
+#include "engine/core/output_file.h"
 #include "engine/gl/context.h"
 #include "engine/graph/render_world.h"
 #include "engine/metrics/metrics.h"
@@ -117,12 +117,6 @@ std::string markdownReport(const nlohmann::json& j, const std::vector<std::strin
   return md + "\n";
 }
 
-void writeText(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream out(p);
-  out << text;
-  if (!out) throw Error(p.string() + ": cannot write file");
-}
-
 int runCheck(const CheckOptions& o) {
   const auto [width, height] = parseSize(o.size, 4096);
   const std::vector<double> scales = parseList("--scales", o.scales, true);
@@ -217,9 +211,9 @@ int runCheck(const CheckOptions& o) {
   progress("check", total, total, "done");
   j["pass"] = allPass;
   const std::filesystem::path dir(o.out);
-  writeText(dir / "check.json", j.dump(2));
+  writeTextFile(dir / "check.json", j.dump(2));
   const std::string md = markdownReport(j, recipeNames);
-  writeText(dir / "check.md", md);
+  writeTextFile(dir / "check.md", md);
   std::fputs(md.c_str(), stdout);
   std::printf("wrote %s and %s\n", (dir / "check.json").string().c_str(),
               (dir / "check.md").string().c_str());

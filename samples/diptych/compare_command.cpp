@@ -10,6 +10,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
+#include "engine/core/output_file.h"
 #include "engine/core/timing.h"
 #include "engine/gl/context.h"
 #include "engine/graph/device_info.h"
@@ -123,9 +124,9 @@ void runCompare(const CompareOptions& o) {
   for (const Variant& v : variants) recipes.push_back(v.build(registry));  // errors before any work
 
   Scene scene = loadScene(sceneFile);
-  // The geometry axis joins the defaults where the scene has analytic quadrics.
+  // The geometry axis joins the defaults where the scene has analytic quadrics or SDF objects.
   const bool analytic = std::any_of(scene.meshes.begin(), scene.meshes.end(),
-                                    [](const Mesh& m) { return bool(m.analytic); });
+                                    [](const Mesh& m) { return m.analytic || m.sdf; });
   if (o.variants.empty() && analytic) {
     for (const Variant& v : geometryVariants()) {
       variants.push_back(v);
@@ -176,8 +177,8 @@ void runCompare(const CompareOptions& o) {
     writeImage(cached, referenceImage);
     if (ref.outputs.count("reference.variance"))  // path tracing: the per-pixel variance too
       writeImage(cached.string() + ".variance.exr", ref.outputs.at("reference.variance").toImage());
-    std::ofstream(cached.string() + ".json")
-        << nlohmann::json{{"ms", referenceMs}, {"reference", reference.text}}.dump();
+    writeTextFile(cached.string() + ".json",
+                  nlohmann::json{{"ms", referenceMs}, {"reference", reference.text}}.dump());
   }
   if (std::filesystem::exists(cached.string() + ".variance.exr")) {
     std::filesystem::create_directories(dir / "images");
@@ -215,6 +216,8 @@ void runCompare(const CompareOptions& o) {
     std::unique_ptr<RenderWorld> tessellatedWorld;
     if (v.tessellation > 0) {
       tessellated = std::make_unique<Scene>(tessellateAnalytic(scene, v.tessellation));
+      for (std::size_t w = scene.warnings.size(); w < tessellated->warnings.size(); ++w)
+        log().warn("{}: {}", v.name, tessellated->warnings[w]);
       tessellatedWorld = std::make_unique<RenderWorld>(*tessellated, context.get());
     }
     RenderWorld& variantWorld = tessellatedWorld ? *tessellatedWorld : world;

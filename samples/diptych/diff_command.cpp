@@ -12,6 +12,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/known.h"
+#include "engine/core/output_file.h"
 #include "engine/metrics/metrics.h"
 
 namespace diptych::cli {
@@ -106,6 +107,7 @@ int runDiff(const DiffOptions& o) {
           options.metrics.end())
         options.metrics.push_back(groupOf(t.metric));
 
+  if (!o.heatmap.empty()) checkOutputPath("--heatmap", o.heatmap);
   const Image test = readLinearImage(o.image);
   const Image reference = readLinearImage(o.reference);
   const std::map<std::string, double> values = computeMetrics(test, reference, options);

@@ -1,22 +1,19 @@
 #include "samples/diptych/render_command.h"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 
 #include "engine/core/error.h"
 #include "engine/core/image_check.h"
 #include "engine/core/known.h"
 #include "engine/core/log.h"
+#include "engine/core/output_file.h"
 #include "engine/core/timing.h"
 #include "engine/core/tonemap.h"
 #include "engine/gl/context.h"
@@ -45,38 +42,10 @@ struct RenderOptions {
   bool verbose = false;
 };
 
-// Output files are checked before rendering so that a bad path never costs a render or leaves
-// some outputs written and others not. The parent folder must exist (render does not create
-// folders, so a typo in a folder name is an error rather than a new tree).
-void checkWritable(const std::string& option, const std::string& path) {
-  namespace fs = std::filesystem;
-  const fs::path p(path);
-  const fs::path parent = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(parent, ec))
-    throw InputError(option, "", path + ": folder " + parent.string() + " does not exist");
-  if (fs::exists(p, ec) && !fs::is_regular_file(p, ec))
-    throw InputError(option, "", path + ": exists and is not a regular file");
-  // Open it for appending (access() says yes to root everywhere, even in /proc); remove it
-  // again if it did not exist, so that a failed render leaves nothing behind.
-  const bool existed = fs::exists(p, ec);
-  const int fd = ::open(p.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  if (fd < 0)
-    throw InputError(option, "", path + ": cannot be written (" + std::strerror(errno) + ")");
-  ::close(fd);
-  if (!existed) fs::remove(p, ec);
-}
-
 std::string extensionOf(const std::string& path) {
   std::string e = std::filesystem::path(path).extension().string();
   for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
   return e;
-}
-
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  if (!out) throw Error(path + ": cannot write file");
 }
 
 void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const RenderOptions& o) {
@@ -144,9 +113,9 @@ void runRender(const RenderOptions& o) {
           "expected 'auto' or a number of stops in [-64, 64], got '" + o.exposure + "'");
     fixedExposure = ev;
   }
-  checkWritable("--out", o.out);
-  if (!o.graphOut.empty()) checkWritable("--graph-out", o.graphOut);
-  if (!o.timingsOut.empty()) checkWritable("--timings", o.timingsOut);
+  checkOutputPath("--out", o.out);
+  if (!o.graphOut.empty()) checkOutputPath("--graph-out", o.graphOut);
+  if (!o.timingsOut.empty()) checkOutputPath("--timings", o.timingsOut);
 
   Scene scene = loadScene(o.scene);
   for (const std::string& w : scene.warnings) log().warn("{}", w);
@@ -201,9 +170,9 @@ void runRender(const RenderOptions& o) {
   }
 
   if (!o.graphOut.empty()) {
-    writeText(o.graphOut, extensionOf(o.graphOut) == ".dot"
-                              ? graphToDot(graph, &executor.timings())
-                              : graphToJson(graph, &executor.timings()).dump(2));
+    writeTextFile(o.graphOut, extensionOf(o.graphOut) == ".dot"
+                                  ? graphToDot(graph, &executor.timings())
+                                  : graphToJson(graph, &executor.timings()).dump(2));
     std::printf("wrote %s\n", o.graphOut.c_str());
   }
   if (!o.timingsOut.empty()) {
@@ -214,7 +183,7 @@ void runRender(const RenderOptions& o) {
         o.frames, o.warmup);
     j["scene"] = o.scene;
     j["devices"] = devices;
-    writeText(o.timingsOut, j.dump(2));
+    writeTextFile(o.timingsOut, j.dump(2));
     std::printf("wrote %s\n", o.timingsOut.c_str());
   }
   printTimingTable(graph, executor, o);

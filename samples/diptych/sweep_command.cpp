@@ -14,7 +14,7 @@ namespace {
 struct SweepCli {
   SweepOptions options;
   std::string size = "320x240", out = "sweep";
-  std::vector<std::string> vary, varyLight;
+  std::vector<std::string> vary, varyLight, varyView;
 };
 
 void printSummary(const nlohmann::json& results) {
@@ -49,6 +49,8 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--vary", c->vary, "KEY=V1,V2,... | KEY=START:STOP:STEP | KEY=START:STOP:logN");
   cmd->add_option("--vary-light", c->varyLight,
                   "elevation=... | azimuth=... (degrees; a directional light)");
+  cmd->add_option("--vary-view", c->varyView,
+                  "size=WxH,... | camera_azimuth=... (degrees) | camera_distance=... (factor)");
   cmd->add_option("--light", c->options.light, "The light classified and moved")
       ->capture_default_str();
   cmd->add_option("--receiver", c->options.receiver, "Measure only this object's pixels");
@@ -62,11 +64,12 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", c->out, "Output folder (resumed when it holds this sweep)")
       ->capture_default_str();
   cmd->callback([c, &exitCode] {
-    std::tie(c->options.width, c->options.height) = parseSize(c->size, 8192);
+    std::tie(c->options.width, c->options.height) = parseSize(c->size, kMaxSweepSide);
     c->options.out = c->out;
     c->options.axes.clear();
-    for (const auto& v : c->vary) c->options.axes.push_back(parseAxis(v, false));
-    for (const auto& v : c->varyLight) c->options.axes.push_back(parseAxis(v, true));
+    for (const auto& v : c->vary) c->options.axes.push_back(parseAxis(v, AxisKind::Pass));
+    for (const auto& v : c->varyLight) c->options.axes.push_back(parseAxis(v, AxisKind::Light));
+    for (const auto& v : c->varyView) c->options.axes.push_back(parseAxis(v, AxisKind::View));
     const nlohmann::json results = runSweep(c->options);
     printSummary(results);
     std::printf("%s\nwrote %s/results.json, %s/results.csv\n",

@@ -121,3 +121,10 @@ foreach(args "small.png;a.png" "a.png;b.png;--metrics;bogus")
     message(FATAL_ERROR "[exit code ${args}] expected ${want}, got ${rc}\n${err}")
   endif()
 endforeach()
+# An output into a folder that does not exist is an error before any work (diff does not
+# create folders, as render does not), and nothing is written.
+expect_failure(heatmap-missing-folder EXPECT "--heatmap" "does not exist"
+               ARGS diff a.png b.png --heatmap no-such-folder/heat.png)
+if(EXISTS "${WORK_DIR}/no-such-folder")
+  message(FATAL_ERROR "[heatmap-missing-folder] created the folder")
+endif()

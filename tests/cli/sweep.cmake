@@ -82,3 +82,53 @@ expect_rejected(sweep-huge-band EXPECT "--band" "width + height"
                 ARGS sweep "${scene}" --slot visibility=shadow_map --vary resolution=64 --band 2147483647)
 expect_rejected(sweep-negative-reach EXPECT "--reach"
                 ARGS sweep "${scene}" --slot visibility=shadow_map --vary resolution=64 --reach -1)
+expect_rejected(sweep-view-key EXPECT "--vary-view" "unknown view key 'fov'"
+                ARGS sweep "${scene}" --slot visibility=shadow_map --vary-view fov=30,60)
+expect_rejected(sweep-view-size EXPECT "--vary-view" "WIDTHxHEIGHT"
+                ARGS sweep "${scene}" --slot visibility=shadow_map --vary-view size=0x10)
+expect_rejected(sweep-view-distance EXPECT "--vary-view" "camera_distance is a factor > 0"
+                ARGS sweep "${scene}" --slot visibility=shadow_map --vary-view camera_distance=0,1)
+
+# View axes: frame size and camera are scene states too (one exact reference each), and each
+# point is rendered at its own size from its own camera.
+expect_success(sweep-view
+               ARGS sweep "${scene}" --slot visibility=shadow_map:bias=constant --vary resolution=256
+                    --vary-view size=64x48,96x72 --vary-view camera_azimuth=0,40 --out view
+               FILES view/results.json view/results.csv view/classes/p0003.png)
+string(REGEX MATCHALL "exact reference" refs "${LAST_STDERR}")
+list(LENGTH refs count)
+if(NOT count EQUAL 4)
+  message(FATAL_ERROR "expected 4 exact references (2 sizes x 2 cameras), got ${count}:\n${LAST_STDERR}")
+endif()
+execute_process(COMMAND /usr/bin/python3 -c "
+import csv, json, struct, sys
+r = json.load(open(sys.argv[1] + '/results.json'))
+rows = list(csv.DictReader(open(sys.argv[1] + '/results.csv')))
+assert [row['size'] for row in rows] == ['64x48', '64x48', '96x72', '96x72'], rows
+assert [row['camera_azimuth'] for row in rows] == ['0', '40', '0', '40'], rows
+def png_size(path):
+    with open(path, 'rb') as f:
+        head = f.read(24)
+    return struct.unpack('>II', head[16:24])
+sizes = [png_size(sys.argv[1] + '/' + p['files']['classes']) for p in r['points']]
+assert sizes == [(64, 48), (64, 48), (96, 72), (96, 72)], sizes
+# The orbit shows the receivers from elsewhere: the measured pixel sets differ.
+def seen(p):
+    s = p['signal']
+    return (s['lit_outside'], s['shadow_outside'], s['misclassified'])
+assert seen(r['points'][2]) != seen(r['points'][3]), (seen(r['points'][2]), seen(r['points'][3]))
+" "${WORK_DIR}/view" RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "view sweep results wrong: ${err}")
+endif()
+
+# The output folder is locked while a sweep writes into it: a second run (here flock(1) holds
+# the lock, as a running sweep would) stops with one error instead of interleaving rows.
+file(MAKE_DIRECTORY "${WORK_DIR}/locked")
+execute_process(COMMAND flock "${WORK_DIR}/locked/.diptych.lock" ${DIPTYCH} sweep "${scene}"
+                        --slot visibility=shadow_map --vary resolution=64 --size 32x24 --out locked
+                WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc ERROR_VARIABLE err TIMEOUT 120)
+string(FIND "${err}" "another diptych run is writing to this folder" pos)
+if(rc EQUAL 0 OR pos EQUAL -1 OR EXISTS "${WORK_DIR}/locked/results.json")
+  message(FATAL_ERROR "a locked output folder was not refused (exit ${rc}):\n${err}")
+endif()

@@ -12,6 +12,7 @@
 
 #include "engine/metrics/metrics.h"
 #include "engine/rt/ray_probe.h"
+#include "engine/scene/default_lighting.h"
 #include "engine/scene/scene_transform.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
@@ -129,4 +130,33 @@ TEST(Rebase, MovesTheCameraToTheOriginAndKeepsRelativePositions) {
 }
 
 }  // namespace
+TEST(Rebase, TriggersOnTheGeometryNotTheCamera) {
+  // A small scene at the origin seen from far away stays where it is: moving it to the camera
+  // would put the geometry, not the camera, at the large coordinate.
+  Scene seenFromFar = sampleScene("whitted");
+  seenFromFar.camera.position = vec3(2e5f, 0.f, 0.f);
+  EXPECT_EQ(rebaseIfFar(seenFromFar), glm::dvec3(0.0));
+  EXPECT_EQ(seenFromFar.worldOrigin, glm::dvec3(0.0));
+  // Far geometry looked at from a camera that is far from it too: the box centre becomes the
+  // origin (the camera alone cannot make the geometry's coordinates small).
+  Scene far = similarityTransformed(sampleScene("whitted"), 1.0, glm::dvec3(1e6, 0, 0));
+  far.camera.position = vec3(0.f);
+  const Aabb box = far.bounds();
+  const glm::dvec3 centre = 0.5 * (glm::dvec3(box.lo) + glm::dvec3(box.hi));
+  EXPECT_EQ(rebaseIfFar(far), centre);
+  EXPECT_EQ(far.worldOrigin, centre);
+}
+
+TEST(Rebase, CommandLineLightIsMovedWithTheWorld) {
+  // --light positions are written in the file's coordinates; after a rebase they must land at
+  // the same place relative to the geometry.
+  Scene s = similarityTransformed(sampleScene("whitted"), 1.0, glm::dvec3(1e5, 0, 0));
+  const glm::dvec3 origin = rebaseIfFar(s);
+  ASSERT_NE(origin, glm::dvec3(0.0));
+  LightingOptions options;
+  options.lightJson = R"({"type":"point","position":[100002,3,4],"color":[1,1,1],"intensity":10})";
+  applyLighting(s, s.camera, options);
+  EXPECT_EQ(s.lights.back().position, vec3(glm::dvec3(100002, 3, 4) - origin));
+}
+
 }  // namespace diptych

@@ -16,6 +16,7 @@
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
 #include "engine/scene/load.h"
+#include "engine/scene/primitives.h"
 #include "engine/scene/sdf.h"
 #include "tests/support/test_paths.h"
 
@@ -238,6 +239,53 @@ TEST(Sdf, EmbreeUserGeometryTracesAnSdfObject) {
   EXPECT_LE(stats.rays, 3u);
   EXPECT_GT(stats.meanSteps(), 1.0);
   EXPECT_EQ(stats.capped, 0u);
+}
+
+TEST(Sdf, TwoRayTracingScenesKeepTheirOwnStepCounts) {
+  // Both scenes trace the one SdfObject the scene holds: each counts only its own rays, and a
+  // reset of one leaves the other's figures alone.
+  auto object = std::make_shared<SdfObject>();
+  object->sdf.nodes.push_back({});  // a unit sphere
+  object->lo = dvec3(-1.0);
+  object->hi = dvec3(1.0);
+  Scene scene;
+  Mesh mesh = polygonizeSdf(object->sdf, object->lo, object->hi, 8);
+  mesh.sdf = object;
+  scene.meshes.push_back(mesh);
+  scene.instances.push_back({"sphere", 0, mat4(1.f)});
+  const WorldGeometry world = flattenScene(scene);
+  RtDevice device;
+  RtScene a(device, world, scene), b(device, world, scene);
+  a.resetSdfStepStats();
+  b.resetSdfStepStats();
+  ASSERT_TRUE(a.intersect({vec3(-5.f, 0.f, 0.f), vec3(1.f, 0.f, 0.f)}, 0.f, 1e30f));
+  ASSERT_TRUE(a.intersect({vec3(0.f, -5.f, 0.f), vec3(0.f, 1.f, 0.f)}, 0.f, 1e30f));
+  ASSERT_TRUE(b.intersect({vec3(0.f, 0.f, 5.f), vec3(0.f, 0.f, -1.f)}, 0.f, 1e30f));
+  EXPECT_EQ(a.sdfStepStats().rays, 2u);
+  EXPECT_EQ(b.sdfStepStats().rays, 1u);
+  a.resetSdfStepStats();
+  EXPECT_EQ(a.sdfStepStats().rays, 0u);
+  EXPECT_EQ(b.sdfStepStats().rays, 1u);
+}
+
+TEST(Sdf, GeometryAxisReplacesSdfObjectsByTheirPolygonisation) {
+  // compare's geometry-N variants trace the surface-nets mesh at N cells instead of the SDF.
+  const Scene scene = loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/sdf.json");
+  const Scene coarse = tessellateAnalytic(scene, 16), fine = tessellateAnalytic(scene, 64);
+  int sdfObjects = 0;
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    if (!scene.meshes[i].sdf) continue;
+    ++sdfObjects;
+    EXPECT_FALSE(coarse.meshes[i].sdf) << scene.meshes[i].name;
+    EXPECT_FALSE(fine.meshes[i].sdf) << scene.meshes[i].name;
+    EXPECT_GT(coarse.meshes[i].triangleCount(), 0u) << scene.meshes[i].name;
+    EXPECT_GT(fine.meshes[i].triangleCount(), coarse.meshes[i].triangleCount())
+        << scene.meshes[i].name;
+    EXPECT_EQ(coarse.meshes[i].material, scene.meshes[i].material);
+  }
+  EXPECT_GT(sdfObjects, 0);
+  const WorldGeometry world = flattenScene(coarse);
+  for (const WorldMesh& m : world.meshes) EXPECT_FALSE(m.analytic && m.analytic->sdf);
 }
 
 TEST(Sdf, JsonObjectsLoadAndBadTreesAreRejectedByName) {

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
-#include <fstream>
 
 #include "engine/core/error.h"
+#include "engine/core/output_file.h"
 #include "samples/diptych/compare/report.h"
 
 namespace diptych::cli {
@@ -58,8 +58,8 @@ const char* kLegend =
 
 std::vector<std::string> writeBiasReport(const std::filesystem::path& dir,
                                          const nlohmann::json& summary) {
-  std::ofstream(dir / "summary.json") << summary.dump(1);
-  std::ofstream(dir / "summary.csv") << csvOf(summary);
+  writeTextFile(dir / "summary.json", summary.dump(1));
+  writeTextFile(dir / "summary.csv", csvOf(summary));
   const std::string script = std::string(DIPTYCH_BIAS_TOOLS_DIR) + "/plot_shadow_bias.py";
   const std::string command =
       fmt::format("/usr/bin/python3 '{}' '{}' '{}'", script, (dir / "summary.json").string(),
@@ -150,7 +150,7 @@ std::vector<std::string> writeBiasReport(const std::filesystem::path& dir,
       "  document.body.setAttribute('data-rows', String(document.querySelectorAll('#best "
       "tr').length - 1));\n"
       "});</script>\n</body></html>\n";
-  std::ofstream(dir / "report.html") << page;
+  writeTextFile(dir / "report.html", page);
   return {"summary.json", "summary.csv", "plots", "report.html"};
 }
 

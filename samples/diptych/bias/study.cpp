@@ -41,12 +41,7 @@ std::pair<double, double> amountRange(const std::string& mode, const BiasStudyOp
   double lo = 1e30, hi = 0;
   for (int res : o.resolutions)
     for (double e : o.elevations) {
-      Scene s = scene;
-      const double r = e * kDegrees;
-      const vec3 d = glm::normalize(s.lights[o.light].direction);
-      const double a = std::atan2(-double(d.z), -double(d.x));
-      s.lights[o.light].direction = -vec3(float(std::cos(r) * std::cos(a)), float(std::sin(r)),
-                                          float(std::cos(r) * std::sin(a)));
+      const Scene s = sceneAt(scene, {{"elevation", e}}, o.light);
       shadowmap::FrustumOptions fo;
       fo.resolution = res;
       const double w = shadowmap::fitLightFrusta(s.lights, world.bounds, fo)[o.light].texelScale;
@@ -210,13 +205,13 @@ nlohmann::json runBiasStudy(const BiasStudyOptions& o) {
     s.out = o.out / mode;
     s.label = "shadow-bias";
     if (directional && !o.elevations.empty())
-      s.axes.push_back(parseAxis("elevation=" + join(o.elevations), true));
-    s.axes.push_back(parseAxis("resolution=" + join(o.resolutions), false));
-    s.axes.push_back(parseAxis("filter=" + join(o.filters), false));
+      s.axes.push_back(parseAxis("elevation=" + join(o.elevations), AxisKind::Light));
+    s.axes.push_back(parseAxis("resolution=" + join(o.resolutions), AxisKind::Pass));
+    s.axes.push_back(parseAxis("filter=" + join(o.filters), AxisKind::Pass));
     if (!key.empty()) {
       const auto [lo, hi] = amountRange(mode, o, scene);
       s.axes.push_back(
-          parseAxis(fmt::format("{}={:.6g}:{:.6g}:log{}", key, lo, hi, o.points), false));
+          parseAxis(fmt::format("{}={:.6g}:{:.6g}:log{}", key, lo, hi, o.points), AxisKind::Pass));
     }
     sweeps.emplace_back(mode, std::move(s));
   }

@@ -3,10 +3,11 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
-#include <fstream>
+#include <sstream>
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
+#include "engine/core/output_file.h"
 #include "engine/graph/device_info.h"
 
 namespace diptych::cli {
@@ -92,9 +93,9 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
     image("panels/" + v.name + ".png", panel(v.image, reference, v.heatmap));
     const std::string graphFile = "graphs/" + v.name + ".json";
     std::filesystem::create_directories(dir / "graphs");
-    std::ofstream(dir / graphFile) << v.result["graph"].dump(2);
+    writeTextFile(dir / graphFile, v.result["graph"].dump(2));
     const std::string dotFile = "graphs/" + v.name + ".dot";
-    std::ofstream(dir / dotFile) << v.dot;
+    writeTextFile(dir / dotFile, v.dot);
     written.push_back(graphFile);
     written.push_back(dotFile);
     v.result["files"] = {{"exr", "images/" + v.name + ".exr"},
@@ -107,7 +108,7 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
     entry.erase("graph");  // kept in its own file
     results["variants"].push_back(entry);
   }
-  std::ofstream(dir / "results.json") << results.dump(2);
+  writeTextFile(dir / "results.json", results.dump(2));
   written.push_back("results.json");
 
   // CSV: one row per variant; per-pass columns are the union over variants.
@@ -120,7 +121,7 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       if (std::find(passNames.begin(), passNames.end(), k) == passNames.end())
         passNames.push_back(k);
   }
-  std::ofstream csv(dir / "results.csv");
+  std::ostringstream csv;
   csv << "variant,total_ms,rays,pareto";
   for (const auto& m : metricNames) csv << "," << m;
   for (const auto& p : passNames) csv << ",ms:" << p;
@@ -134,7 +135,7 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       csv << "," << (v["pass_ms"].contains(p) ? v["pass_ms"][p].dump() : "");
     csv << "\n";
   }
-  csv.close();
+  writeTextFile(dir / "results.csv", csv.str());
   written.push_back("results.csv");
 
   const std::string script = std::string(DIPTYCH_TOOLS_DIR) + "/plot_error_vs_time.py";
@@ -229,7 +230,7 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       "tr').length - 1));\n"
       "});</script>\n";
   page += "</body></html>\n";
-  std::ofstream(dir / "report.html") << page;
+  writeTextFile(dir / "report.html", page);
   written.push_back("report.html");
   return written;
 }

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "engine/core/error.h"
+#include "samples/diptych/parse_size.h"
 
 namespace diptych::cli {
 namespace {
@@ -40,8 +41,21 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 }  // namespace
 
-SweepAxis parseAxis(const std::string& text, bool light) {
-  const std::string option = light ? "--vary-light" : "--vary";
+const char* axisOption(AxisKind kind) {
+  switch (kind) {
+    case AxisKind::Light:
+      return "--vary-light";
+    case AxisKind::View:
+      return "--vary-view";
+    case AxisKind::Pass:
+      break;
+  }
+  return "--vary";
+}
+
+SweepAxis parseAxis(const std::string& text, AxisKind kind) {
+  const std::string option = axisOption(kind);
+  const bool light = kind == AxisKind::Light, view = kind == AxisKind::View;
   auto fail = [&](const std::string& message) {
     throw InputError(option, text,
                      message +
@@ -50,13 +64,15 @@ SweepAxis parseAxis(const std::string& text, bool light) {
   };
   SweepAxis axis;
   axis.text = text;
-  axis.light = light;
+  axis.kind = kind;
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0) fail("missing KEY=");
   axis.key = text.substr(0, eq);
   const std::string rest = text.substr(eq + 1);
   if (light && std::find(lightKeys().begin(), lightKeys().end(), axis.key) == lightKeys().end())
     fail("unknown light key '" + axis.key + "' (known: elevation, azimuth)");
+  if (view && std::find(viewKeys().begin(), viewKeys().end(), axis.key) == viewKeys().end())
+    fail("unknown view key '" + axis.key + "' (known: size, camera_azimuth, camera_distance)");
   if (rest.empty()) fail("empty range");
   const auto range = split(rest, ':');
   if (range.size() == 3) {
@@ -99,17 +115,32 @@ SweepAxis parseAxis(const std::string& text, bool light) {
   if (light)
     for (const auto& v : axis.values)
       if (!v.is_number()) fail("light angles are numbers (degrees)");
+  if (view)
+    for (const auto& v : axis.values) {
+      if (axis.key == "size") {
+        if (!v.is_string()) fail("sizes are WIDTHxHEIGHT");
+        try {
+          parseSize(v.get<std::string>(), kMaxSweepSide);
+        } catch (const InputError& e) {
+          fail(e.message());
+        }
+      } else if (!v.is_number()) {
+        fail("camera values are numbers");
+      } else if (axis.key == "camera_distance" && !(v.get<double>() > 0)) {
+        fail("camera_distance is a factor > 0");
+      }
+    }
   return axis;
 }
 
 std::vector<nlohmann::json> cartesianProduct(const std::vector<SweepAxis>& input) {
   std::vector<SweepAxis> axes = input;
-  std::stable_partition(axes.begin(), axes.end(), [](const SweepAxis& a) { return a.light; });
+  std::stable_partition(axes.begin(), axes.end(),
+                        [](const SweepAxis& a) { return a.kind != AxisKind::Pass; });
   std::set<std::string> keys;
   for (const SweepAxis& a : axes)
     if (!keys.insert(a.key).second)
-      throw InputError(a.light ? "--vary-light" : "--vary", a.text,
-                       "key '" + a.key + "' is swept twice");
+      throw InputError(axisOption(a.kind), a.text, "key '" + a.key + "' is swept twice");
   // Each axis is bounded; their product must be too (every point is checked before rendering).
   double count = 1;
   for (const SweepAxis& a : axes) count *= double(a.values.size());

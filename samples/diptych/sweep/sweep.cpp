@@ -7,9 +7,11 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <tuple>
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
+#include "engine/core/output_file.h"
 #include "engine/gl/context.h"
 #include "engine/metrics/signal_metrics.h"
 #include "engine/rt/surface_point.h"
@@ -20,35 +22,48 @@
 #include "passes/registry.h"
 #include "passes/slots.h"
 #include "samples/diptych/compare/runner.h"
+#include "samples/diptych/parse_size.h"
 
 namespace diptych::cli {
 namespace {
 
 constexpr double kDegrees = 3.14159265358979323846 / 180.0;
 
-// The scene with the swept light turned to (elevation, azimuth): elevation above the xz plane,
-// azimuth from +x toward +z; the light travels toward the scene.
-Scene sceneAt(const Scene& base, const nlohmann::json& point, int light) {
-  Scene s = base;
-  if (!point.contains("elevation") && !point.contains("azimuth")) return s;
-  Light& l = s.lights[light];
-  const vec3 toLight = -glm::normalize(l.direction);
-  double elevation = std::asin(std::clamp(double(toLight.y), -1.0, 1.0)) / kDegrees;
-  double azimuth = std::atan2(double(toLight.z), double(toLight.x)) / kDegrees;
-  elevation = point.value("elevation", elevation);
-  azimuth = point.value("azimuth", azimuth);
-  const double e = elevation * kDegrees, a = azimuth * kDegrees;
-  l.direction =
-      -vec3(float(std::cos(e) * std::cos(a)), float(std::sin(e)), float(std::cos(e) * std::sin(a)));
-  return s;
+bool isStateKey(const std::string& k) {
+  return std::find(lightKeys().begin(), lightKeys().end(), k) != lightKeys().end() ||
+         std::find(viewKeys().begin(), viewKeys().end(), k) != viewKeys().end();
 }
 
-nlohmann::json splitPoint(const nlohmann::json& point, bool light) {
+// The point's scene-state part (light and view keys: state = true) or its pass part.
+nlohmann::json splitPoint(const nlohmann::json& point, bool state) {
   nlohmann::json out = nlohmann::json::object();
   for (const auto& [k, v] : point.items())
-    if ((std::find(lightKeys().begin(), lightKeys().end(), k) != lightKeys().end()) == light)
-      out[k] = v;
+    if (isStateKey(k) == state) out[k] = v;
   return out;
+}
+
+// The frame of a point: --size and the scene's camera, changed by its view keys. The camera
+// orbits its target about the world y axis by camera_azimuth degrees and moves along its line
+// of sight to camera_distance times its distance.
+FrameSettings frameAt(const FrameSettings& base, const nlohmann::json& point) {
+  FrameSettings f = base;
+  if (point.contains("size"))
+    std::tie(f.width, f.height) = parseSize(point["size"].get<std::string>(), kMaxSweepSide);
+  Camera& c = f.camera;
+  glm::dvec3 offset = glm::dvec3(c.position) - glm::dvec3(c.target);
+  if (point.contains("camera_azimuth")) {
+    const double a = point["camera_azimuth"].get<double>() * kDegrees;
+    offset = glm::dvec3(std::cos(a) * offset.x + std::sin(a) * offset.z, offset.y,
+                        -std::sin(a) * offset.x + std::cos(a) * offset.z);
+  }
+  offset *= point.value("camera_distance", 1.0);
+  c.position = vec3(glm::dvec3(c.target) + offset);
+  if (point.contains("camera_distance")) {  // keep the geometry between the clip planes
+    const double k = point["camera_distance"].get<double>();
+    c.znear = float(c.znear * std::min(k, 1.0));
+    c.zfar = float(c.zfar * std::max(k, 1.0));
+  }
+  return f;
 }
 
 Recipe pointRecipe(const SlotOverride& base, const nlohmann::json& params) {
@@ -140,12 +155,6 @@ double texelWorld(const StateReference& s, int resolution, int light) {
   return median(w);
 }
 
-void writeAtomically(const std::filesystem::path& path, const std::string& text) {
-  const auto tmp = path.string() + ".tmp";
-  std::ofstream(tmp) << text;
-  std::filesystem::rename(tmp, path);
-}
-
 std::string csvOf(const nlohmann::json& results) {
   std::vector<std::string> keys, signal;
   for (const auto& a : results["spec"]["axes"]) keys.push_back(a["key"]);
@@ -174,6 +183,23 @@ std::string csvOf(const nlohmann::json& results) {
 
 }  // namespace
 
+// The scene with the swept light turned to (elevation, azimuth): elevation above the xz plane,
+// azimuth from +x toward +z; the light travels toward the scene.
+Scene sceneAt(const Scene& base, const nlohmann::json& point, int light) {
+  Scene s = base;
+  if (!point.contains("elevation") && !point.contains("azimuth")) return s;
+  Light& l = s.lights[light];
+  const vec3 toLight = -glm::normalize(l.direction);
+  double elevation = std::asin(std::clamp(double(toLight.y), -1.0, 1.0)) / kDegrees;
+  double azimuth = std::atan2(double(toLight.z), double(toLight.x)) / kDegrees;
+  elevation = point.value("elevation", elevation);
+  azimuth = point.value("azimuth", azimuth);
+  const double e = elevation * kDegrees, a = azimuth * kDegrees;
+  l.direction =
+      -vec3(float(std::cos(e) * std::cos(a)), float(std::sin(e)), float(std::cos(e) * std::sin(a)));
+  return s;
+}
+
 nlohmann::json runSweep(const SweepOptions& o) {
   const PassRegistry& registry = builtinPasses();
   if (o.axes.empty()) throw InputError("--vary", "", "nothing to sweep: give at least one --vary");
@@ -187,17 +213,16 @@ nlohmann::json runSweep(const SweepOptions& o) {
   const SlotOverride base = parseSlotOverride(o.producer);
   const std::vector<nlohmann::json> points = cartesianProduct(o.axes);
   const Scene scene = loadScene(o.scene);
-  const FrameSettings frame{o.width, o.height,
-                            scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
+  const FrameSettings baseFrame{o.width, o.height,
+                                scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
 
   // Every check before any rendering: the light, the receiver, and each point's recipe compiled
   // (the producer's own parameter checks reject unknown keys and bad values).
   if (o.light < 0 || (o.light >= int(scene.lights.size()) && !scene.lights.empty()))
     throw InputError("--light", std::to_string(o.light), "the scene has no such light");
-  const bool sweepsLight =
-      std::any_of(o.axes.begin(), o.axes.end(), [](auto& a) { return a.light; });
-  if (sweepsLight) {
-    const auto& axis = *std::find_if(o.axes.begin(), o.axes.end(), [](auto& a) { return a.light; });
+  auto sweepsLight = [](const SweepAxis& a) { return a.kind == AxisKind::Light; };
+  if (std::any_of(o.axes.begin(), o.axes.end(), sweepsLight)) {
+    const auto& axis = *std::find_if(o.axes.begin(), o.axes.end(), sweepsLight);
     if (o.light < 0 || o.light >= int(scene.lights.size()))
       throw InputError("--light", std::to_string(o.light), "the scene has no such light");
     if (scene.lights[o.light].type != LightType::Directional)
@@ -220,7 +245,8 @@ nlohmann::json runSweep(const SweepOptions& o) {
     const Recipe recipe = pointRecipe(base, splitPoint(point, false));
     signal = slotSignal(recipe, base.slot);
     try {
-      compileGraph(recipe, registry, sceneAt(scene, point, o.light), frame, {signal});
+      compileGraph(recipe, registry, sceneAt(scene, point, o.light), frameAt(baseFrame, point),
+                   {signal});
     } catch (const InputError& e) {
       // e.place() names the key ("passes[1].params.kernel"), e.message() what is wrong with it.
       throw InputError("--vary", point.dump(),
@@ -239,12 +265,13 @@ nlohmann::json runSweep(const SweepOptions& o) {
                          {"receiver", o.receiver},
                          {"axes", nlohmann::json::array()}};
   for (const SweepAxis& a : o.axes)
-    spec["axes"].push_back({{"key", a.key}, {"text", a.text}, {"light", a.light}});
+    spec["axes"].push_back({{"key", a.key}, {"text", a.text}, {"option", axisOption(a.kind)}});
   nlohmann::json results = {
       {"spec", spec},
       {"method",
        fmt::format("each point: the producer beside the exact producer of slot '{}' on the same "
-                   "G-buffer ({}x{}); times: median CPU ms of {} frames after {} warm-up frames",
+                   "G-buffer ({}x{} unless the point sets size); times: median CPU ms of {} "
+                   "frames after {} warm-up frames",
                    base.slot, o.width, o.height, o.frames, o.warmup)},
       {"points", nlohmann::json::array()}};
   const auto resultsFile = o.out / "results.json";
@@ -263,7 +290,9 @@ nlohmann::json runSweep(const SweepOptions& o) {
     for (const auto& p : old["points"]) done[p["params"].dump()] = p;
   }
   std::filesystem::create_directories(o.out / "classes");
+  const OutputFolderLock lock(o.out);  // resuming runs must not interleave their writes
 
+  // Passes render into their own framebuffers: the context's size does not bound the frame.
   auto context = gl::createContext(gl::ContextKind::Osmesa, o.width, o.height);
   std::unique_ptr<StateReference> state;
   std::string stateKey;
@@ -276,9 +305,11 @@ nlohmann::json runSweep(const SweepOptions& o) {
       ++resumed;
       continue;
     }
-    const nlohmann::json lightPart = splitPoint(point, true), passPart = splitPoint(point, false);
-    if (!state || lightPart.dump() != stateKey) {  // a new scene state: its exact reference
-      progress(o.label, int(i), int(points.size()), "exact reference " + lightPart.dump());
+    const nlohmann::json statePart = splitPoint(point, true), passPart = splitPoint(point, false);
+    const FrameSettings frame = frameAt(baseFrame, point);
+    const int width = frame.width, height = frame.height;
+    if (!state || statePart.dump() != stateKey) {  // a new scene state: its exact reference
+      progress(o.label, int(i), int(points.size()), "exact reference " + statePart.dump());
       state.reset();
       state = std::make_unique<StateReference>();
       state->scene = std::make_unique<Scene>(sceneAt(scene, point, o.light));
@@ -290,14 +321,14 @@ nlohmann::json runSweep(const SweepOptions& o) {
       state->mask = coverage(state->exact.outputs.at("gbuffer.hits"));
       if (!receivers.empty()) {
         const CpuImage& gb = state->exact.outputs.at("gbuffer.hits");
-        for (int y = 0; y < o.height; ++y)
-          for (int x = 0; x < o.width; ++x) {
-            auto& m = state->mask[std::size_t(y) * o.width + x];
+        for (int y = 0; y < height; ++y)
+          for (int x = 0; x < width; ++x) {
+            auto& m = state->mask[std::size_t(y) * width + x];
             m = m && std::count(receivers.begin(), receivers.end(), int(gb.u(x, y, 0)) - 1);
           }
       }
       measureGeometry(*state, frame, o.light);
-      stateKey = lightPart.dump();
+      stateKey = statePart.dump();
     }
     const Recipe recipe = pointRecipe(base, passPart);
     const GraphRun run = runGraph(recipe, *state->world, frame, {signal}, o.warmup, o.frames);
@@ -312,9 +343,8 @@ nlohmann::json runSweep(const SweepOptions& o) {
     nlohmann::json measured = nlohmann::json::object();
     if (base.slot == "visibility") {
       const int l = std::min(o.light, mine.desc.layers - 1);
-      const ShadowArtifacts a =
-          classifyShadows(layer(mine, l), layer(exact, l), state->mask, o.width, o.height,
-                          state->footprint, o.band, o.reach);
+      const ShadowArtifacts a = classifyShadows(layer(mine, l), layer(exact, l), state->mask, width,
+                                                height, state->footprint, o.band, o.reach);
       measured = {{"acne_rate", a.acneRate()},
                   {"peter_panning_rate", a.peterPanningRate()},
                   {"light_leak_rate", a.lightLeakRate()},
@@ -329,7 +359,7 @@ nlohmann::json runSweep(const SweepOptions& o) {
                   {"lit_outside", a.litOutside},
                   {"shadow_outside", a.shadowOutside}};
       const std::string classFile = fmt::format("classes/p{:04d}.png", i);
-      writeImage(o.out / classFile, shadowClassImage(a, o.width, o.height));
+      writeImage(o.out / classFile, shadowClassImage(a, width, height));
       row["files"] = {{"classes", classFile}};
     } else {
       const SignalError e = compareRadiance(mine.toImage(), exact.toImage(), state->mask);
@@ -344,13 +374,13 @@ nlohmann::json runSweep(const SweepOptions& o) {
         {"incidence_deg", median(state->incidence)},
         {"pixel_world", median(state->receiverFootprints)}};
     results["points"].push_back(row);
-    writeAtomically(resultsFile, results.dump(1));
-    writeAtomically(o.out / "results.csv", csvOf(results));
-    progress(o.label, int(i) + 1, int(points.size()), passPart.dump() + " " + lightPart.dump());
+    writeTextFile(resultsFile, results.dump(1));
+    writeTextFile(o.out / "results.csv", csvOf(results));
+    progress(o.label, int(i) + 1, int(points.size()), passPart.dump() + " " + statePart.dump());
   }
   // A completed resume rewrites the files in point order.
-  writeAtomically(resultsFile, results.dump(1));
-  writeAtomically(o.out / "results.csv", csvOf(results));
+  writeTextFile(resultsFile, results.dump(1));
+  writeTextFile(o.out / "results.csv", csvOf(results));
   std::fprintf(stderr, "%s: %zu points, %d resumed from %s\n", o.label, points.size(), resumed,
                resultsFile.string().c_str());
   return results;

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/scene/scene.h"
 #include "samples/diptych/sweep/spec.h"
 
 namespace diptych::cli {
@@ -29,5 +30,10 @@ struct SweepOptions {
 // a resumable results.json) before rendering; then renders the missing points. Returns the
 // results.json document: {"spec", "method", "points": [...]}.
 nlohmann::json runSweep(const SweepOptions& options);
+
+// The scene with light `light` turned to the point's "elevation" / "azimuth" (degrees; either
+// may be absent and keeps the light's own): elevation above the xz plane, azimuth from +x
+// toward +z; the light travels toward the scene. Without either key: the scene unchanged.
+Scene sceneAt(const Scene& base, const nlohmann::json& point, int light);
 
 }  // namespace diptych::cli
