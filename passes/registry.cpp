@@ -11,6 +11,12 @@
 #include "passes/raster/planar_mirror.h"
 #include "passes/raster/shadow_map.h"
 #include "passes/raster/sorted_blend.h"
+#include "passes/raster/texture_anisotropic.h"
+#include "passes/raster/texture_bilinear.h"
+#include "passes/raster/texture_distance.h"
+#include "passes/raster/texture_nearest.h"
+#include "passes/raster/texture_sampler.h"
+#include "passes/raster/texture_trilinear.h"
 #include "passes/raster/unsorted_blend.h"
 #include "passes/rt/rt_distributed.h"
 #include "passes/rt/rt_path.h"
@@ -18,6 +24,7 @@
 #include "passes/rt/rt_shadows.h"
 #include "passes/rt/rt_transmission.h"
 #include "passes/rt/rt_whitted.h"
+#include "passes/rt/texture_supersample.h"
 #include "passes/slots.h"
 
 namespace diptych {
@@ -82,6 +89,32 @@ const PassRegistry& builtinPasses() {
     r.add<UnsortedBlendPass>({.name = "unsorted_blend",
                               .slot = "transmission",
                               .summary = "transmission by Z-buffer blending in scene order (GL)"});
+    r.add<TextureSupersamplePass>(
+        {.name = "texture_supersample",
+         .slot = "texture_filtering",
+         .summary = "exact texture filtering: N x N stratified sub-pixel rays, level 0 (CPU)"});
+    r.add<TextureNearestPass>({.name = "texture_nearest",
+                               .slot = "texture_filtering",
+                               .summary = "texture: nearest texel of level 0, no mipmaps (GL)"});
+    r.add<TextureBilinearPass>({.name = "texture_bilinear",
+                                .slot = "texture_filtering",
+                                .summary = "texture: bilinear on level 0, no mipmaps (GL)"});
+    r.add<TextureDistancePass>(
+        {.name = "texture_distance",
+         .slot = "texture_filtering",
+         .summary = "texture: the lecture's mip level from log2 of the eye distance (GL)"});
+    r.add<TextureTrilinearPass>(
+        {.name = "texture_trilinear",
+         .slot = "texture_filtering",
+         .summary = "texture: GL's derivative-based level, trilinear (GL)"});
+    r.add<TextureAnisotropicPass>(
+        {.name = "texture_anisotropic",
+         .slot = "texture_filtering",
+         .summary = "texture: anisotropic probes along the footprint's long axis (GL)"});
+    r.add<TextureSamplerPass>(
+        {.name = "texture_sampler",
+         .slot = "texture_filtering",
+         .summary = "texture: its own glTF sampler (min/mag, mip mode) at GL's level (GL)"});
 
     // Full-frame references (no slot).
     r.add<RtWhittedPass>(

@@ -66,6 +66,17 @@ const std::vector<TechniqueSlot>& techniqueSlots() {
        .raster = "sorted_blend",
        .meaning = "L_trans: radiance arriving through the surface (refracted for ray tracing, "
                   "along the view ray for blending); 0 where k_t = 0"},
+      {.name = "texture_filtering",
+       .signal = "albedo",
+       .format = Format::RGBA32F,
+       .layerPerLight = false,
+       .fallback = vec4(-1.f),
+       .shadeInput = "albedo",
+       .need = SceneNeed::TexturedMaterial,
+       .exact = "texture_supersample",
+       .raster = "texture_trilinear",
+       .meaning = "C and coverage: material colour x filtered colour texture (linear), alpha; -1 "
+                  "where shade keeps its own level-0 lookup"},
   };
   return slots;
 }

@@ -8,7 +8,7 @@
 namespace diptych::gl {
 
 GlSceneBuffers uploadScene(const WorldGeometry& geometry) {
-  std::vector<float> positions, normals, uvs;
+  std::vector<float> positions, normals, uvs, tangents;
   std::vector<std::uint32_t> indices;
   GlSceneBuffers out;
   for (std::size_t m = 0; m < geometry.meshes.size(); ++m) {
@@ -29,6 +29,8 @@ GlSceneBuffers uploadScene(const WorldGeometry& geometry) {
       normals.insert(normals.end(), {mesh.normals[v].x, mesh.normals[v].y, mesh.normals[v].z});
       const vec2 uv = mesh.uvs.empty() ? vec2(0.f) : mesh.uvs[v];
       uvs.insert(uvs.end(), {uv.x, uv.y});
+      const vec4 t = v < mesh.tangents.size() ? mesh.tangents[v] : vec4(0.f);
+      tangents.insert(tangents.end(), {t.x, t.y, t.z, t.w});
     }
     GlMeshRange range;
     range.instance = mesh.instance;
@@ -49,6 +51,7 @@ GlSceneBuffers uploadScene(const WorldGeometry& geometry) {
   out.positions = Buffer::create(positions.size() * 4, positions.data());
   out.normals = Buffer::create(normals.size() * 4, normals.data());
   out.uvs = Buffer::create(uvs.size() * 4, uvs.data());
+  out.tangents = Buffer::create(tangents.size() * 4, tangents.data());
   out.indices = Buffer::create(indices.size() * 4, indices.data());
 
   out.vertexArray = VertexArray::create();
@@ -66,6 +69,7 @@ void GlSceneBuffers::bindStorage() const {
   normals.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_NORMALS);
   uvs.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_UVS);
   indices.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INDICES);
+  tangents.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_TANGENTS);
 }
 
 }  // namespace diptych::gl

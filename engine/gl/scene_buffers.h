@@ -24,12 +24,13 @@ struct GlSceneBuffers {
   Buffer normals;                   // 3 floats per vertex, world space, unit
   Buffer uvs;                       // 2 floats per vertex; (0, 0) for meshes without uvs
   Buffer indices;                   // 3 uints per triangle, into the shared vertex arrays
+  Buffer tangents;                  // 4 floats per vertex (xyz, handedness); 0 without a normal map
   VertexArray vertexArray;          // attribute 0 = position, element buffer = indices
   std::vector<GlMeshRange> meshes;  // same order as WorldGeometry::meshes
   std::size_t vertexCount = 0;
   std::size_t triangleCount = 0;
 
-  // Binds the four buffers to the BINDING_SCENE_* SSBO points (engine/gl/bindings.h).
+  // Binds the five buffers to the BINDING_SCENE_* SSBO points (engine/gl/bindings.h).
   void bindStorage() const;
 };
 

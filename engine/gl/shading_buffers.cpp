@@ -48,7 +48,8 @@ int wrapCode(WrapMode w) {
   return 0;
 }
 
-// std430 layout of scene_shading.glsl's GpuMaterial: nine vec4, then the glTF model's three.
+// std430 layout of scene_shading.glsl's GpuMaterial: nine vec4, then the glTF model's three,
+// then the four of the textures.
 void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& out) {
   const shading::ShadingMaterial s = shading::toShadingMaterial(m);
   const bool checker = m.checker.has_value();
@@ -90,6 +91,16 @@ void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& 
   out.insert(out.end(), {s.baseColor.x, s.baseColor.y, s.baseColor.z, s.metallic,            //
                          s.specularTint.x, s.specularTint.y, s.specularTint.z, s.roughness,  //
                          float(s.model), s.transmission, s.specularWeight, 0.f});
+  // --- textures (scene_shading.glsl's GpuMaterial.texColorEmitMrAo .. texRoughness) ---
+  // Texture indices as float (-1: none; exact for indices below 2^24), and the glTF inputs that
+  // resolveMaterial re-maps per texel with gltfPbrToLecture.
+  const float colour = m.checker ? -1.f : float(m.colorTexture);
+  out.insert(out.end(),
+             {colour, float(m.emissionTexture), float(m.metallicRoughnessTexture),
+              float(m.occlusionTexture), float(m.normalTexture), m.normalScale, m.occlusionStrength,
+              m.transmissionFactor, m.baseColorFactor.x, m.baseColorFactor.y, m.baseColorFactor.z,
+              m.metallicFactor, m.roughnessFactor, 0.f, 0.f, 0.f});
+  // --- end textures ---
 }
 
 void packLight(const Light& l, std::vector<float>& out) {
@@ -122,6 +133,7 @@ void GlShadingBuffers::bindStorage() const {
   instances.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INSTANCES);
   lights.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_LIGHTS);
   glBindTextureUnit(UNIT_SCENE_ALPHA_MASKS, alphaMasks.id());
+  textures.bind();
 }
 
 AlphaDraw GlShadingBuffers::alphaDraw(int material) const {
@@ -131,6 +143,7 @@ AlphaDraw GlShadingBuffers::alphaDraw(int material) const {
 
 GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometry) {
   GlShadingBuffers out;
+  out.textures = uploadTextures(scene);
   // One layer per distinct colour texture of an alpha-tested material. Layers are as large as
   // the largest such texture (capped at kMaxAlphaMaskSize per side); each texture sits at its
   // own size in the corner of its layer, so that the shader's texel arithmetic is exactly

@@ -3,14 +3,16 @@
 // evaluate the shared shading model (shaders/common/shading.glsl) on the same inputs as the CPU
 // passes. Read in GLSL through shaders/gl/scene_shading.glsl.
 //
-// Limitation: colour and emission textures are not sampled on the GPU yet (the procedural
-// checker is); a GL producer shading a textured material uses the material's constant colour.
-// Only the alpha of alpha-masked (AlphaMode::Mask) materials' colour textures is uploaded, for
-// the cut-outs of the G-buffer and shadow-map depth passes (sceneMaterialAlpha in GLSL).
+// Every scene texture is uploaded with its mip chain (engine/gl/scene_textures.h) and
+// sceneMaterial samples base colour, emission, metallic-roughness and occlusion as
+// resolveMaterial does on the CPU. The alpha of alpha-masked (AlphaMode::Mask) materials' colour
+// textures is also kept in its own R32F array for the cut-outs of the G-buffer and shadow-map
+// depth passes (sceneMaterialAlpha in GLSL).
 #include <vector>
 
 #include "engine/gl/objects.h"
 #include "engine/gl/scene_buffers.h"
+#include "engine/gl/scene_textures.h"
 #include "engine/scene/scene.h"
 
 namespace diptych::gl {
@@ -29,7 +31,7 @@ AlphaDraw alphaDraw(const Scene& scene, int material);
 inline constexpr int kMaxAlphaMaskSize = 2048;
 
 struct GlShadingBuffers {
-  Buffer materials;  // 9 vec4 per material; entry 0 is the default material, m + 1 is materials[m]
+  Buffer materials;  // 16 vec4 per material; entry 0 is the default material, m + 1 is materials[m]
   Buffer instances;  // 2 ints per instance: (material + 1, first triangle in the shared buffers)
   Buffer lights;     // 5 vec4 per light
   // R32F 2D array: layer k holds the alpha of one colour texture used by a masked material, at
@@ -37,11 +39,12 @@ struct GlShadingBuffers {
   // sampleTexture does, with texelFetch). A 1x1x1 dummy when no material is alpha-tested.
   Texture alphaMasks;
   int alphaMaskLayers = 0;
+  GlSceneTextures textures;          // every Scene::textures entry with its mip chain
   std::vector<AlphaDraw> drawModes;  // index material + 1, as `materials`
   int materialCount = 0, instanceCount = 0, lightCount = 0;
 
-  // Binds the three buffers to their BINDING_SCENE_* points and alphaMasks to
-  // UNIT_SCENE_ALPHA_MASKS (engine/gl/bindings.h).
+  // Binds the three buffers to their BINDING_SCENE_* points, alphaMasks to
+  // UNIT_SCENE_ALPHA_MASKS and the textures (engine/gl/bindings.h).
   void bindStorage() const;
   AlphaDraw alphaDraw(int material) const;  // -1 or out of range: the default material
   bool anyAlphaTested() const { return alphaMaskLayers > 0; }

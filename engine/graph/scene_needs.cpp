@@ -34,6 +34,8 @@ const char* sceneNeedName(SceneNeed need) {
       return "emissive_material";
     case SceneNeed::EnvironmentMap:
       return "environment_map";
+    case SceneNeed::TexturedMaterial:
+      return "textured_material";
   }
   return "?";
 }
@@ -56,6 +58,8 @@ const char* missingReason(SceneNeed need) {
       return "scene has no emissive materials";
     case SceneNeed::EnvironmentMap:
       return "scene has no environment map";
+    case SceneNeed::TexturedMaterial:
+      return "scene has no colour-textured materials";
   }
   return "?";
 }
@@ -86,6 +90,10 @@ bool sceneSatisfies(const Scene& s, SceneNeed need) {
       return anyUsedMaterial(s, [](const Material& m) { return positive(m.emission); });
     case SceneNeed::EnvironmentMap:
       return s.environment.type != EnvironmentType::Color;
+    case SceneNeed::TexturedMaterial:
+      return anyUsedMaterial(s, [&](const Material& m) {
+        return !m.checker && m.colorTexture >= 0 && m.colorTexture < int(s.textures.size());
+      });
   }
   return false;
 }

@@ -14,6 +14,7 @@ enum class SceneNeed {
   TransmissiveMaterial,  // kt > 0 on a used material
   EmissiveMaterial,      // M_E > 0 on a used material
   EnvironmentMap,        // equirect or cube environment (not a solid colour)
+  TexturedMaterial,      // a used material with a colour texture (and no checker)
 };
 
 const char* sceneNeedName(SceneNeed need);

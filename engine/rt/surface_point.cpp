@@ -1,5 +1,6 @@
 #include "engine/rt/surface_point.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -13,8 +14,16 @@
 
 namespace diptych {
 
-shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv) {
+shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv,
+                                         float uvLod) {
   shading::ShadingMaterial m = shading::toShadingMaterial(material);
+  // Level 0 by the texture's magnification filter unless a footprint is given (ray cones):
+  // then lambda = uvLod + 0.5 log2(w h) (RTG ch. 20, eq. 20.23's texture size term).
+  const auto sampleTexture = [&](const Texture& t, vec2 at) {
+    if (!std::isfinite(uvLod)) return diptych::sampleTexture(t, at);
+    const float size = float(t.image.width) * float(t.image.height);
+    return sampleTextureLod(t, at, uvLod + 0.5f * std::log2(std::max(size, 1.f)));
+  };
   const auto texture = [&](int index) -> const Texture* {
     return index >= 0 && index < int(scene.textures.size()) ? &scene.textures[index] : nullptr;
   };

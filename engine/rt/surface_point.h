@@ -2,6 +2,7 @@
 // The shading point of a ray hit: exact position from the same arrays Embree traced, normals,
 // uv, and the material with its textures and checker resolved at the point.
 #include <cstdint>
+#include <limits>
 
 #include "engine/scene/camera_math.h"
 #include "engine/scene/world_geometry.h"
@@ -58,7 +59,10 @@ Ray spawnRay(const SurfacePoint& p, const vec3& direction);
 // alpha = alpha * colorTexture.a, M_E = emission * emissionTexture.
 // glTF materials with a metallicRoughnessTexture are re-mapped from the texel's metallic and
 // roughness; an occlusionTexture scales k_a (the lecture's ambient, glTF's indirect light).
-shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv);
+// uvLod: log2 of the footprint in uv units (engine/rt/ray_cone.h); -infinity (the default)
+// reads level 0 with each texture's magnification filter.
+shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv,
+                                         float uvLod = -std::numeric_limits<float>::infinity());
 
 // A tangent-space normal map applied at uv: n' = normalize(T x + B y + N z) with (x, y, z) =
 // (2 texel - 1) * (scale, scale, 1), T Gram-Schmidt-orthogonalised against n and

@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "engine/rt/light_sampling.h"
+#include "engine/rt/ray_cone.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/scene/environment.h"
 #include "engine/shading/shading.h"
@@ -15,15 +16,23 @@ WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, con
   for (const Light& light : scene.lights) lights_.push_back(shading::toShadingLight(light));
 }
 
-vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed) const {
+vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed,
+                             const RayCone* cone) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
   rays_.add(1);
   const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
   if (observer_) observer_({ray, depth, hit});
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
-  const SurfacePoint p = makeSurfacePoint(
-      scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
-      ray.direction);
+  SurfacePoint p = makeSurfacePoint(scene_, world_,
+                                    {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
+                                    ray.direction);
+  if (cone && settings_.rayCones) {
+    const RayCone at{cone->width + cone->spread * hit->t * glm::length(ray.direction),
+                     cone->spread};
+    p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
+                                 coneUvLod(world_, p, ray.direction, at.width));
+    return shade(p, -ray.direction, depth, seed, &at);
+  }
   return shade(p, -ray.direction, depth, seed);
 }
 
@@ -41,33 +50,36 @@ vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t s
   return sum;
 }
 
-vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth,
-                          std::uint32_t seed) const {
+vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
+                          const RayCone* cone) const {
   const shading::ShadingMaterial& m = p.resolved;
   vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + direct(p, v, seed);
   // k_t and k_ps say whether the signals exist (as for the hybrid's rt_reflection and
   // rt_transmission); secondaryTerms weights them by the material's model.
-  const vec3 trans = m.kt > 0.f ? transmitted(p, v, depth, seed) : vec3(0.f);
-  const vec3 refl = m.kps > 0.f ? reflected(p, v, depth, seed) : vec3(0.f);
+  const vec3 trans = m.kt > 0.f ? transmitted(p, v, depth, seed, cone) : vec3(0.f);
+  const vec3 refl = m.kps > 0.f ? reflected(p, v, depth, seed, cone) : vec3(0.f);
   return rad + shading::secondaryTerms(m, p.shadingNormal, v, refl, trans);
 }
 
-vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth,
-                              std::uint32_t seed) const {
+vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
+                              const RayCone* cone) const {
   if (depth >= settings_.maxDepth) return vec3(0.f);
   const vec3 r = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
-  return radiance(spawnRay(p, r), depth + 1, pcgHash(seed ^ 0x52454646u));  // "REFF"
+  const RayCone next = cone ? reflectedCone(world_, p, cone->width, cone->spread) : RayCone{};
+  return radiance(spawnRay(p, r), depth + 1, pcgHash(seed ^ 0x52454646u),  // "REFF"
+                  cone ? &next : nullptr);
 }
 
-vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth,
-                                std::uint32_t seed) const {
+vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
+                                const RayCone* cone) const {
   if (depth >= settings_.maxDepth) return vec3(0.f);
   // Entering through the front face goes from air (1) into the material (ior); leaving goes
   // back out. Nested media are told apart by face orientation only (no medium stack).
   const float ior = scene_.material(p.material).ior;
   const float eta = p.frontFacing ? 1.f / ior : ior;
   const shading::Refraction t = shading::refractLecture(v, p.shadingNormal, eta);
-  return radiance(spawnRay(p, t.t), depth + 1, pcgHash(seed ^ 0x5452414eu));  // "TRAN"
+  return radiance(spawnRay(p, t.t), depth + 1, pcgHash(seed ^ 0x5452414eu),  // "TRAN"
+                  cone);
 }
 
 }  // namespace diptych

@@ -32,7 +32,11 @@ struct RayTreeEvent {
 struct WhittedSettings {
   int maxDepth = 5;      // the lecture's max
   int areaSamples = 16;  // stratified shadow rays per area light
+  // Texture LOD at hits reached with a ray cone (engine/rt/ray_cone.h); false: level 0.
+  bool rayCones = false;
 };
+
+struct RayCone;
 
 class WhittedTracer {
  public:
@@ -40,13 +44,18 @@ class WhittedTracer {
                 WhittedSettings settings);
 
   // RAYTRACING(o, u, depth); the caller offsets o if it leaves a surface.
-  vec3 radiance(const Ray& ray, int depth, std::uint32_t seed) const;
-  // EVALUAMILREC at a known surface point seen from direction v (unit, toward the viewer).
-  vec3 shade(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed) const;
+  // cone: the ray's cone at its origin, used for texture LOD when settings.rayCones is set.
+  vec3 radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone = nullptr) const;
+  // EVALUAMILREC at a known surface point seen from direction v (unit, toward the viewer); cone:
+  // the cone's width at the point and its spread.
+  vec3 shade(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
+             const RayCone* cone = nullptr) const;
   // The secondary radiances of EVALUAMILREC, without their k M factors: L_in(p, r) and
   // L_in(p, t). Each returns 0 when depth >= maxDepth.
-  vec3 reflected(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed) const;
-  vec3 transmitted(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed) const;
+  vec3 reflected(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
+                 const RayCone* cone = nullptr) const;
+  vec3 transmitted(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
+                   const RayCone* cone = nullptr) const;
 
   std::uint64_t raysTraced() const { return rays_.total(); }
   // Called for every RAYTRACING call (not shadow rays), for inspecting or testing the ray tree.

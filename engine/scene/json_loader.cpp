@@ -146,6 +146,30 @@ BumpMap readBump(JsonObject o, const Context& ctx, Scene& scene) {
   return b;
 }
 
+// "checker_texture": a checkerboard *image* made here (docs/scene-format.md): `texels` per side
+// (power of two or not), `cells` squares per side alternating a and b (linear colours), sampled
+// with repeat wrap and trilinear minification like any image texture (mip chain included),
+// unlike the procedural `checker`, which is evaluated exactly at each point.
+Texture readCheckerTexture(JsonObject c, const std::string& name) {
+  const int texels = c.integer("texels").value_or(512);
+  const int cells = c.integer("cells").value_or(8);
+  if (texels < 1 || texels > 8192) c.fail("texels", "must be between 1 and 8192");
+  if (cells < 1 || cells > texels) c.fail("cells", "must be between 1 and texels");
+  const vec3 a = c.vector3("a", vec3(1.f)), b = c.vector3("b", vec3(0.f));
+  c.rejectUnknownKeys();
+  Texture t;
+  t.name = name + ".checker_texture";
+  t.image = Image(texels, texels, 4, 1.f);
+  for (int y = 0; y < texels; ++y) {
+    for (int x = 0; x < texels; ++x) {
+      const bool odd = ((long(x) * cells / texels) + (long(y) * cells / texels)) % 2 != 0;
+      const vec3 col = odd ? b : a;
+      for (int k = 0; k < 3; ++k) t.image.at(x, y, k) = col[k];
+    }
+  }
+  return t;
+}
+
 Material readMaterial(JsonObject o, const std::string& name, const Context& ctx, Scene& scene) {
   Material m;
   m.name = name;
@@ -197,6 +221,11 @@ Material readMaterial(JsonObject o, const std::string& name, const Context& ctx,
     checker.scale = positive(*c, "scale", checker.scale);
     c->rejectUnknownKeys();
     m.checker = checker;
+  }
+  if (auto c = o.object("checker_texture")) {
+    if (m.checker) o.fail("checker_texture", "give either checker or checker_texture, not both");
+    scene.textures.push_back(readCheckerTexture(std::move(*c), name));
+    m.colorTexture = int(scene.textures.size()) - 1;
   }
   for (const char* key : {"ka", "kd", "ks", "exponent", "kps", "kt"})
     if (o.has(key) && o.number(key, 0.f) < 0.f) o.fail(key, "must not be negative");

@@ -4,6 +4,7 @@
 
 #include "engine/core/error.h"
 #include "engine/scene/camera_math.h"
+#include "engine/scene/mip_chain.h"
 #include "engine/scene/scene_transform.h"
 #include "engine/scene/validate.h"
 
@@ -34,6 +35,7 @@ Scene loadScene(const std::filesystem::path& path) {
     if (!box.empty() && allFinite(box.lo) && allFinite(box.hi)) fitNearFar(scene.camera, box);
   }
   validateScene(scene);
+  for (Texture& t : scene.textures) t.mips = buildMipChain(t.image);  // once, for CPU and GL
   // Far from the origin, float world coordinates would spend their bits on the offset:
   // move the world so the camera sits at the origin (docs/numerics.md).
   rebaseIfFar(scene);

@@ -62,6 +62,9 @@ struct Texture {
   bool srgbSource = false;
   WrapMode wrapS = WrapMode::Repeat, wrapT = WrapMode::Repeat;
   FilterMode minFilter = FilterMode::LinearMipmapLinear, magFilter = FilterMode::Linear;
+  // Levels 1..n of the lecture's mip chain (engine/scene/mip_chain.h), built by loadScene;
+  // empty: only level 0 exists (a sampler then reads level 0 at every LOD).
+  std::vector<Image> mips;
 };
 
 enum class AlphaMode { Opaque, Mask, Blend };

@@ -1,6 +1,8 @@
 #include "engine/shading/texture_sampling.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace diptych {
 namespace {
@@ -82,6 +84,81 @@ vec4 sampleTexture(const Texture& texture, vec2 uv, bool minifying) {
   const FilterMode f = minifying ? texture.minFilter : texture.magFilter;
   return isNearest(f) ? sampleNearest(texture.image, uv, texture.wrapS, texture.wrapT)
                       : sampleBilinear(texture.image, uv, texture.wrapS, texture.wrapT);
+}
+
+int mipLevelCount(const Texture& texture) {
+  return 1 + int(texture.mips.size());
+}
+
+const Image& mipLevel(const Texture& texture, int level) {
+  return level <= 0 || texture.mips.empty()
+             ? texture.image
+             : texture.mips[std::size_t(std::min(level, int(texture.mips.size())) - 1)];
+}
+
+vec4 sampleFiltered(const Texture& texture, vec2 uv, float lambda, bool linearTexels,
+                    MipSelect mips) {
+  const auto at = [&](int level) {
+    const Image& image = mipLevel(texture, level);
+    return linearTexels ? sampleBilinear(image, uv, texture.wrapS, texture.wrapT)
+                        : sampleNearest(image, uv, texture.wrapS, texture.wrapT);
+  };
+  const int top = mipLevelCount(texture) - 1;
+  if (mips == MipSelect::None || !(lambda > 0.f)) return at(0);  // also NaN
+  const float l = std::min(lambda, float(top));
+  if (mips == MipSelect::Nearest) {
+    // GL 4.5 eq. 8.10: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else 0.
+    return at(l > 0.5f ? int(std::ceil(l + 0.5f)) - 1 : 0);
+  }
+  const int d1 = int(std::floor(l));
+  const float f = l - float(d1);
+  if (d1 >= top || f == 0.f) return at(d1);
+  return glm::mix(at(d1), at(d1 + 1), f);
+}
+
+vec4 sampleTextureLod(const Texture& texture, vec2 uv, float lambda) {
+  if (!(lambda > 0.f))
+    return sampleFiltered(texture, uv, 0.f, !isNearest(texture.magFilter), MipSelect::None);
+  switch (texture.minFilter) {
+    case FilterMode::Nearest:
+      return sampleFiltered(texture, uv, lambda, false, MipSelect::None);
+    case FilterMode::Linear:
+      return sampleFiltered(texture, uv, lambda, true, MipSelect::None);
+    case FilterMode::NearestMipmapNearest:
+      return sampleFiltered(texture, uv, lambda, false, MipSelect::Nearest);
+    case FilterMode::LinearMipmapNearest:
+      return sampleFiltered(texture, uv, lambda, true, MipSelect::Nearest);
+    case FilterMode::NearestMipmapLinear:
+      return sampleFiltered(texture, uv, lambda, false, MipSelect::Linear);
+    case FilterMode::LinearMipmapLinear:
+      return sampleFiltered(texture, uv, lambda, true, MipSelect::Linear);
+  }
+  return sampleFiltered(texture, uv, lambda, true, MipSelect::Linear);
+}
+
+float lodFromGradients(const Texture& texture, vec2 dx, vec2 dy) {
+  const vec2 size(float(texture.image.width), float(texture.image.height));
+  const float rho = std::max(glm::length(dx * size), glm::length(dy * size));
+  return rho > 0.f ? std::log2(rho) : -std::numeric_limits<float>::infinity();
+}
+
+vec4 sampleAnisotropic(const Texture& texture, vec2 uv, vec2 dx, vec2 dy, int maxAnisotropy) {
+  const vec2 size(float(texture.image.width), float(texture.image.height));
+  const float px = glm::length(dx * size), py = glm::length(dy * size);
+  const float pmax = std::max(px, py), pmin = std::min(px, py);
+  if (!(pmax > 0.f) || !std::isfinite(pmax))
+    return sampleFiltered(texture, uv, 0.f, true, MipSelect::Linear);
+  // Clamped as a float first: pmax / pmin can exceed any int.
+  const float most = float(std::max(1, maxAnisotropy));
+  const int n = int(std::clamp(pmin > 0.f ? std::ceil(pmax / pmin) : most, 1.f, most));
+  const float lambda = std::log2(pmax / float(n));
+  const vec2 axis = px >= py ? dx : dy;
+  vec4 sum(0.f);
+  for (int i = 0; i < n; ++i) {
+    const float offset = (float(i) + 0.5f) / float(n) - 0.5f;  // stratified along the axis
+    sum += sampleFiltered(texture, uv + offset * axis, lambda, true, MipSelect::Linear);
+  }
+  return sum / float(n);
 }
 
 vec3 checkerColor(const Checker& checker, vec2 uv) {

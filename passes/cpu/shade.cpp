@@ -11,6 +11,20 @@
 #include "passes/slots.h"
 
 namespace diptych {
+namespace {
+
+// The texture_filtering slot's C and coverage replace shade's own level-0 lookup (a = -1: none
+// there). Not for materials whose metallic-roughness texture re-maps C per texel: the signal is
+// C = colour x texture, which that mapping does not take as input (docs/textures.md).
+void applyAlbedo(SurfacePoint& sp, const Scene& scene, const CpuImage& albedo, int x, int y) {
+  const float a = albedo.f(x, y, 3);
+  if (a < 0.f || scene.material(sp.material).metallicRoughnessTexture >= 0) return;
+  sp.resolved.color = vec3(albedo.f(x, y, 0), albedo.f(x, y, 1), albedo.f(x, y, 2));
+  sp.resolved.baseColor = sp.resolved.color;  // the glTF model's C
+  sp.resolved.alpha = a;
+}
+
+}  // namespace
 
 ParamSchema ShadePass::schema() {
   return {ParamSpec::choice("domain", "auto", {"auto", "gl", "cpu"},
@@ -60,11 +74,7 @@ void ShadePass::execute(PassContext& c) {
         radiance = sampleEnvironment(scene.environment, eye.direction);
       } else {
         SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
-        if (albedo) {  // the texture-filtering slot's C and alpha replace the material's
-          sp.resolved.color = rgb(albedo, x, y);
-          sp.resolved.baseColor = sp.resolved.color;  // the glTF model's C
-          sp.resolved.alpha = albedo->f(x, y, 3);
-        }
+        if (albedo) applyAlbedo(sp, scene, *albedo, x, y);
         const vec3 v = -eye.direction;
         radiance = shading::emittedAndAmbient(sp.resolved, scene.ambient);
         for (std::size_t i = 0; i < lights.size(); ++i) {

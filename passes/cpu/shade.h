@@ -10,7 +10,8 @@ namespace diptych {
 // V_i comes from the light_visibility input (any producer of the visibility slot; 1 when
 // unconnected or culled); L_refl and L_trans from optional reflection/transmission inputs
 // (0 when unconnected); `albedo` (the texture-filtering slot's signal), when connected,
-// replaces the resolved material's C and alpha. Background pixels show the environment.
+// replaces the resolved material's C and alpha
+// (its own level-0 lookup where absent or -1). Background pixels show the environment.
 // Output: color RGBA32F.
 //
 // Shade exists in both domains: the same model runs on GL (passes/raster/gl_shade.h) from the

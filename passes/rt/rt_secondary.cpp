@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/graph/render_world.h"
+#include "engine/rt/ray_cone.h"
 #include "engine/rt/whitted.h"
 #include "passes/common/hits_texel.h"
 
@@ -13,12 +14,15 @@ ParamSchema RtSecondaryPass::schema() {
                              "maximum recursion depth, the G-buffer point being depth 1 (lecture's "
                              "max)"),
           ParamSpec::integer("area_samples", 16, 1, 4096,
-                             "stratified shadow rays per area light at each hit")};
+                             "stratified shadow rays per area light at each hit"),
+          ParamSpec::choice("texture_lod", "level0", {"level0", "cone"},
+                            "texture level at traced hits: level 0, or ray cones (RTG ch. 20)")};
 }
 
 void RtSecondaryPass::setup(PassBuilder& b) {
   maxDepth_ = b.params().integer("depth");
   areaSamples_ = b.params().integer("area_samples");
+  rayCones_ = b.params().string("texture_lod") == "cone";
   io_ = slotIo(b, kind_ == Kind::Reflection ? "reflection" : "transmission");
 }
 
@@ -28,7 +32,9 @@ void RtSecondaryPass::execute(PassContext& c) {
   const FrameSettings& frame = c.frame();
   const CpuImage& hits = c.cpuRead(io_.hits);
   CpuImage& out = c.cpuWrite(io_.signal);
-  const WhittedTracer tracer(scene, world.geometry(), world.rtScene(), {maxDepth_, areaSamples_});
+  const WhittedTracer tracer(scene, world.geometry(), world.rtScene(),
+                             {maxDepth_, areaSamples_, rayCones_});
+  const float spread = pixelSpreadAngle(frame.camera, frame.height);
   const bool reflection = kind_ == Kind::Reflection;
 
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
@@ -46,9 +52,12 @@ void RtSecondaryPass::execute(PassContext& c) {
           const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
           const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
           const std::uint32_t seed = std::uint32_t(y * frame.width + x);
-          // The G-buffer point is the lecture's depth 1; its secondary rays are depth 2.
-          radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed)
-                                : tracer.transmitted(p, -eye.direction, 1, seed);
+          // The G-buffer point is the lecture's depth 1; its secondary rays are depth 2. Its cone
+          // (RTG eq. 20.30) has width spread * distance there.
+          const RayCone cone{spread * glm::length(p.position - eye.origin), spread};
+          const RayCone* c = rayCones_ ? &cone : nullptr;
+          radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c)
+                                : tracer.transmitted(p, -eye.direction, 1, seed, c);
         }
       }
       for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, radiance[ch]);

@@ -21,6 +21,7 @@ class RtSecondaryPass : public Pass {
  private:
   Kind kind_;
   int maxDepth_ = 5, areaSamples_ = 16;
+  bool rayCones_ = false;
   SlotIo io_;
 };
 

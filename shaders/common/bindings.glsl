@@ -19,9 +19,15 @@ const int BINDING_SCENE_LIGHTS = 6;
 const int BINDING_SHADOW_LAYERS = 7;
 const int BINDING_SHADOW_LIGHTS = 8;
 
+// Per-texture records and tangents (engine/gl/scene_textures.cpp, engine/gl/scene_buffers.cpp).
+const int BINDING_SCENE_TEXTURES = 12;
+const int BINDING_SCENE_TANGENTS = 13;
+
 // Texture unit of scene_shading.glsl's uSceneAlphaMasks; units 0 and 1 are each pass's own.
 const int UNIT_SCENE_ALPHA_MASKS = 7;
 // Texture unit of gl/scene_environment.glsl's uEnvironmentTexels (the exact background lookup).
 const int UNIT_SCENE_ENVIRONMENT = 15;
+// Texture unit of scene_shading.glsl's uSceneTextures (every scene texture with its mip chain).
+const int UNIT_SCENE_TEXTURES = 6;
 
 #endif

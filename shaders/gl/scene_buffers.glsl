@@ -5,6 +5,10 @@ layout(std430, binding = BINDING_SCENE_POSITIONS) readonly buffer ScenePositions
 layout(std430, binding = BINDING_SCENE_NORMALS) readonly buffer SceneNormals { float sceneNormals[]; };
 layout(std430, binding = BINDING_SCENE_UVS) readonly buffer SceneUvs { float sceneUvs[]; };
 layout(std430, binding = BINDING_SCENE_INDICES) readonly buffer SceneIndices { uint sceneIndices[]; };
+// World tangent xyz and handedness w per vertex; zero where the mesh has none (no normal map).
+layout(std430, binding = BINDING_SCENE_TANGENTS) readonly buffer SceneTangents { vec4 sceneTangents[]; };
+
+vec4 sceneTangent(uint vertex) { return sceneTangents[vertex]; }
 
 uvec3 sceneTriangle(uint triangle) {
   return uvec3(sceneIndices[3u * triangle], sceneIndices[3u * triangle + 1u],

@@ -2,6 +2,7 @@
 // point of a visibility-buffer texel reconstructed exactly as the CPU does it
 // (engine/rt/surface_point.cpp). Include after common/shading.glsl and gl/scene_buffers.glsl.
 #include "common/bindings.glsl"
+#include "gl/scene_textures.glsl"
 struct GpuMaterial {
   vec4 colorKa;         // C, k_a
   vec4 kdKsExpKps;      // k_d, k_s, e, k_ps
@@ -15,6 +16,12 @@ struct GpuMaterial {
   vec4 baseMetallic;    // glTF model: base colour, metallic
   vec4 tintRoughness;   // KHR_materials_specular colour, roughness
   vec4 modelTransSpec;  // SHADING_MODEL_*, transmission, specular weight, unused
+  // --- textures (engine/gl/shading_buffers.cpp packMaterial; -1: none) ---
+  vec4 texColorEmitMrAo;      // base colour, emission, metallic-roughness, occlusion textures
+  vec4 texNormalScales;       // normal texture, normal scale, occlusion strength, transmission
+  vec4 baseFactorMetallic;    // glTF baseColorFactor.rgb, metallicFactor
+  vec4 roughnessFactor;       // glTF roughnessFactor, 0, 0, 0
+  // --- end textures ---
 };
 layout(std430, binding = BINDING_SCENE_MATERIALS) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
 layout(std430, binding = BINDING_SCENE_INSTANCES) readonly buffer SceneInstances { ivec2 sceneInstances[]; };
@@ -31,17 +38,45 @@ uniform int uLightCount;  // sceneLights has a dummy entry when the scene has no
 // layer's corner, image row y at GL row y (engine/gl/shading_buffers.cpp).
 layout(binding = UNIT_SCENE_ALPHA_MASKS) uniform sampler2DArray uSceneAlphaMasks;
 
-// Material m of Scene::materials (-1: the default), with the checker applied at uv
-// (colour alternates every 1/scale in u and v, as engine/shading/texture_sampling.cpp).
-ShadingMaterial sceneMaterial(int m, vec2 uv) {
+// --- textures: the material at a texel, as engine/rt/surface_point.cpp resolveMaterial ---
+// Rec. 709 luminance and the glTF metallic-roughness mapping of engine/scene/gltf_pbr.cpp.
+float sceneLuminance(vec3 c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
+void sceneApplyGltfPbr(inout ShadingMaterial s, vec3 base, float metallic, float roughness,
+                       float transmission) {
+  metallic = clamp(metallic, 0.0, 1.0);
+  roughness = clamp(roughness, 0.0, 1.0);
+  transmission = clamp(transmission, 0.0, 1.0);
+  float dielectricF0 = pow((s.ior - 1.0) / (s.ior + 1.0), 2.0);
+  vec3 f0 = mix(vec3(dielectricF0), base, metallic);
+  s.color = base * (1.0 - metallic);
+  s.kd = 1.0 - transmission;
+  s.ks = sceneLuminance(f0);
+  s.specularColor = s.ks > 0.0 ? f0 / s.ks : vec3(1.0);
+  float alpha = max(roughness * roughness, 0.01);
+  s.exponent = max(2.0 / (alpha * alpha) - 2.0, 1.0);
+  s.kps = s.ks * (1.0 - roughness);
+  s.mirrorColor = s.specularColor;
+  s.kt = transmission * (1.0 - metallic);
+  s.transmitColor = base;
+}
+
+// A texture of the material at uv: level 0 by its magnification filter when uvLod is below
+// -1e38 (sceneMaterial), else lambda = uvLod + 0.5 log2(w h) (ray-cone style footprint).
+vec4 sceneMaterialTexture(int tex, vec2 uv, float uvLod) {
+  if (!sceneTextureValid(tex)) return vec4(1.0);
+  if (!(uvLod > -1.0e38)) return sceneSampleTexture(tex, uv);
+  vec2 size = vec2(sceneTextureInfo[tex].xy);
+  return sceneSampleTextureLod(tex, uv, uvLod + 0.5 * log2(max(size.x * size.y, 1.0)));
+}
+
+// Material m of Scene::materials (-1: the default) at uv: the checker (colour alternates every
+// 1/scale in u and v) or the base-colour texture times C and alpha, the emission texture times
+// M_E, a metallic-roughness texture re-mapped per texel, occlusion scaling k_a.
+ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
   GpuMaterial g = sceneMaterials[m + 1];
   ShadingMaterial s;
   s.color = g.colorKa.xyz;
-  if (g.emissionChecker.w > 0.5) {
-    vec2 cell = floor(uv * g.checkerAScale.w);
-    bool odd = mod(cell.x + cell.y, 2.0) != 0.0;
-    s.color = odd ? g.checkerBCutoff.xyz : g.checkerAScale.xyz;
-  }
   s.ka = g.colorKa.w;
   s.kd = g.kdKsExpKps.x;
   s.ks = g.kdKsExpKps.y;
@@ -55,36 +90,66 @@ ShadingMaterial sceneMaterial(int m, vec2 uv) {
   s.alpha = g.transmitAlpha.w;
   s.emission = g.emissionChecker.xyz;
   s.model = int(g.modelTransSpec.x + 0.5);
-  s.baseColor = g.emissionChecker.w > 0.5 ? s.color : g.baseMetallic.xyz;
+  s.baseColor = g.baseMetallic.xyz;
   s.metallic = g.baseMetallic.w;
   s.roughness = g.tintRoughness.w;
   s.specularTint = g.tintRoughness.xyz;
   s.transmission = g.modelTransSpec.y;
   s.specularWeight = g.modelTransSpec.z;
+  int colourTex = int(g.texColorEmitMrAo.x);
+  if (g.emissionChecker.w > 0.5) {
+    vec2 cell = floor(uv * g.checkerAScale.w);
+    bool odd = mod(cell.x + cell.y, 2.0) != 0.0;
+    s.color = odd ? g.checkerBCutoff.xyz : g.checkerAScale.xyz;
+    s.baseColor = s.color;
+  } else if (sceneTextureValid(colourTex)) {
+    vec4 c = sceneMaterialTexture(colourTex, uv, uvLod);
+    s.color *= c.xyz;
+    s.baseColor *= c.xyz;
+    s.alpha *= c.w;
+  }
+  int emissionTex = int(g.texColorEmitMrAo.y);
+  if (sceneTextureValid(emissionTex)) s.emission *= sceneMaterialTexture(emissionTex, uv, uvLod).xyz;
+  int mrTex = int(g.texColorEmitMrAo.z);
+  if (sceneTextureValid(mrTex)) {
+    vec4 mr = sceneMaterialTexture(mrTex, uv, uvLod);
+    vec3 base = sceneTextureValid(colourTex) ? sceneMaterialTexture(colourTex, uv, uvLod).xyz : vec3(1.0);
+    sceneApplyGltfPbr(s, g.baseFactorMetallic.xyz * base, g.baseFactorMetallic.w * mr.z,
+                      g.roughnessFactor.x * mr.y, g.texNormalScales.w);
+    // The glTF model's own inputs at this texel (resolveMaterial does the same).
+    s.metallic = clamp(g.baseFactorMetallic.w * mr.z, 0.0, 1.0);
+    s.roughness = clamp(g.roughnessFactor.x * mr.y, 0.0, 1.0);
+  }
+  int aoTex = int(g.texColorEmitMrAo.w);
+  if (sceneTextureValid(aoTex)) {
+    float ao = sceneMaterialTexture(aoTex, uv, uvLod).x;
+    s.ka *= 1.0 + g.texNormalScales.z * (ao - 1.0);
+  }
   return s;
 }
 
-// The wrap modes of engine/shading/texture_sampling.cpp (0 repeat, 1 clamp to edge, 2 mirrored
-// repeat), applied the same way: the coordinate reduced by whole periods, then texel indices.
-float sceneReduceCoordinate(float t, int mode) {
-  if (isnan(t) || isinf(t)) return 0.0;
-  if (mode == 0) return t - floor(t);
-  if (mode == 2) return t - 2.0 * floor(0.5 * t);
-  return clamp(t, -1.0, 2.0);
-}
+ShadingMaterial sceneMaterial(int m, vec2 uv) { return sceneMaterialLod(m, uv, -3.0e38); }
 
-int sceneWrapTexel(int i, int size, int mode) {
-  // GLSL leaves % undefined for negative operands. After sceneReduceCoordinate a texel index is
-  // at least -size - 1 (clamp: t >= -1, bilinear -0.5), so adding 4 size keeps it non-negative
-  // without changing the result modulo size or 2 size.
-  if (size <= 1) return 0;
-  if (mode == 0) return (i + 4 * size) % size;
-  if (mode == 2) {
-    int m = (i + 4 * size) % (2 * size);
-    return m < size ? m : 2 * size - 1 - m;
-  }
-  return clamp(i, 0, size - 1);
+// glTF 3.9.3 normal map as engine/rt/surface_point.cpp normalMapped: n' = normalize(T x + B y
+// + N z), (x, y, z) = (2 texel - 1) * (scale, scale, 1), T Gram-Schmidt against n, B = w (N x T).
+vec3 sceneNormalMapped(int m, vec3 n, vec4 tangent, vec2 uv) {
+  GpuMaterial g = sceneMaterials[m + 1];
+  int tex = int(g.texNormalScales.x);
+  if (!sceneTextureValid(tex)) return n;
+  vec3 nn = length(n) > 0.0 ? normalize(n) : n;
+  vec3 t = tangent.xyz - nn * dot(nn, tangent.xyz);
+  float len = length(t);
+  if (!(len > 0.0) || isinf(len)) return n;
+  t /= len;
+  vec3 b = cross(nn, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+  vec4 texel = sceneSampleTexture(tex, uv);
+  float scale = g.texNormalScales.y;
+  vec3 ts = vec3((2.0 * texel.x - 1.0) * scale, (2.0 * texel.y - 1.0) * scale, 2.0 * texel.z - 1.0);
+  vec3 mapped = ts.x * t + ts.y * b + ts.z * nn;
+  float mlen = length(mapped);
+  return mlen > 0.0 && !isinf(mlen) ? mapped / mlen : n;
 }
+// --- end textures ---
 
 // Coverage of material m at uv: its alpha times its colour texture's alpha (nearest or
 // bilinear by the texture's magnification filter), as resolveMaterial computes it on the CPU.
@@ -171,5 +236,8 @@ SceneSurface surfaceFromHits(uvec4 texel) {
   vec2 t2 = vec2(sceneUvs[2u * tri.z], sceneUvs[2u * tri.z + 1u]);
   s.uv = w * t0 + u * t1 + v * t2;
   s.material = sceneInstanceMaterial(s.instance);
+  // The CPU maps the interpolated normal (makeSurfacePoint); zero tangents leave it unchanged.
+  vec4 tg = w * sceneTangent(tri.x) + u * sceneTangent(tri.y) + v * sceneTangent(tri.z);
+  s.shadingNormal = sceneNormalMapped(s.material, s.shadingNormal, tg, s.uv);
   return s;
 }

@@ -124,7 +124,12 @@ TEST(SceneDrivenCulling, SamplesCullExactlyTheSlotsTheyDoNotNeed) {
       if (p.culled) out[p.name] = p.cullReason;
     return out;
   };
-  EXPECT_TRUE(culled("whitted.json").empty());
+  const auto whitted = culled("whitted.json");  // a procedural checker is no colour texture
+  EXPECT_EQ(whitted.size(), 1u);
+  EXPECT_EQ(whitted.at("texture_filtering"), "scene has no colour-textured materials");
+  const auto textures = culled("textures.json");
+  EXPECT_EQ(textures.size(), 1u);
+  EXPECT_EQ(textures.at("transmission"), "scene has no transmissive materials");
   const auto shadowSphere = culled("shadow-sphere.json");
   EXPECT_EQ(shadowSphere.at("reflection"), "scene has no reflective materials");
   EXPECT_EQ(shadowSphere.at("transmission"), "scene has no transmissive materials");
