@@ -27,6 +27,8 @@ void TextureSupersamplePass::execute(PassContext& c) {
   const CpuImage& hits = c.cpuRead(io_.hits);
   CpuImage& out = c.cpuWrite(io_.signal);
   const int n = samples_;
+  // Built (lazily, the first time) here on the calling thread: rtScene() is not thread-safe.
+  const RtScene& rt = world.rtScene();
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       vec4 albedo(-1.f);
@@ -39,8 +41,7 @@ void TextureSupersamplePass::execute(PassContext& c) {
             const float sx = float(x) + (float(i) + 0.5f) / float(n);
             const float sy = float(y) + (float(j) + 0.5f) / float(n);
             const Ray ray = primaryRay(frame.camera, frame.width, frame.height, sx, sy);
-            const auto hit =
-                world.rtScene().intersect(ray, 0.f, std::numeric_limits<float>::infinity());
+            const auto hit = rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
             if (!hit) continue;
             const SurfacePoint p = makeSurfacePoint(
                 scene, world.geometry(),
