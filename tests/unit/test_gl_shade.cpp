@@ -87,8 +87,7 @@ Parity measure(const testing::HybridFrame& f) {
 std::vector<fs::path> sampleScenes() {
   std::vector<fs::path> out;
   for (const auto& e : fs::directory_iterator(fs::path(DIPTYCH_SAMPLES_DIR) / "scenes"))
-    if (e.path().extension() == ".json" || e.path().extension() == ".gltf")
-      out.push_back(e.path());
+    if (e.path().extension() == ".json" || e.path().extension() == ".gltf") out.push_back(e.path());
   std::sort(out.begin(), out.end());
   return out;
 }
