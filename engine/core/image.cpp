@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 
 #include "engine/core/error.h"
+#include "engine/core/exr_header.h"
 #include "engine/core/input_file.h"
 #include "engine/core/tonemap.h"
 
@@ -44,12 +46,19 @@ std::string lowerExtension(const std::filesystem::path& p) {
 }  // namespace
 
 Image readImage(const std::filesystem::path& path) {
-  checkInputFile(path, kMaxBinaryFileBytes);
+  const std::uintmax_t size = checkInputFile(path, kMaxBinaryFileBytes);
+  {
+    std::ifstream file(path, std::ios::binary);
+    if (const std::string problem = exrHeaderProblem(file, size); !problem.empty())
+      throw InputError(path.string(), "", problem);
+  }
   auto in = OIIO::ImageInput::open(path.string());
   return readFrom(in.get(), path.string());
 }
 
 Image readImageFromMemory(const std::string& name, const void* data, std::size_t size) {
+  if (const std::string problem = exrHeaderProblem(data, size); !problem.empty())
+    throw InputError(name, "", problem);
   OIIO::Filesystem::IOMemReader reader(data, size);
   auto in = OIIO::ImageInput::open(name, nullptr, &reader);
   return readFrom(in.get(), name);

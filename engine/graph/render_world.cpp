@@ -20,10 +20,10 @@ RenderWorld::~RenderWorld() {
 }
 
 const RtScene& RenderWorld::rtScene() {
-  if (!rt_) {
+  std::call_once(rtOnce_, [this] {
     device_ = std::make_unique<RtDevice>();
     rt_ = std::make_unique<RtScene>(*device_, world_, scene_);
-  }
+  });
   return *rt_;
 }
 

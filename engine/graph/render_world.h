@@ -4,6 +4,7 @@
 // tracing never builds a BVH, and a CPU-only frame never touches OpenGL).
 #include <map>
 #include <memory>
+#include <mutex>
 #include <typeindex>
 
 #include "engine/rt/rt_device.h"
@@ -27,7 +28,9 @@ class RenderWorld {
   ~RenderWorld();
   const Scene& scene() const { return scene_; }
   const WorldGeometry& geometry() const { return world_; }
-  const RtScene& rtScene();                 // Embree BVH, built on first call
+  // Embree BVH, built on the first call; safe to call from several threads at once (the
+  // first builds it, the others wait), e.g. from inside a TBB loop.
+  const RtScene& rtScene();
   const gl::GlSceneBuffers& glScene();      // uploaded on first call; needs a context
   const gl::GlShadingBuffers& glShading();  // materials, lights, instances; uploaded on first call
   gl::GlContext& glContext();               // throws Error when there is none
@@ -54,6 +57,7 @@ class RenderWorld {
   gl::GlContext* context_ = nullptr;
   std::unique_ptr<RtDevice> device_;
   std::unique_ptr<RtScene> rt_;
+  std::once_flag rtOnce_;
   std::unique_ptr<gl::GlSceneBuffers> glScene_;
   std::unique_ptr<gl::GlShadingBuffers> glShading_;
   std::map<std::type_index, std::shared_ptr<void>> glCache_;

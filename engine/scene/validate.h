@@ -1,6 +1,7 @@
 #pragma once
 // Checks a loaded scene before anything renders it. Errors are InputErrors naming
 // Scene::sourcePath and the element; recoveries are appended to Scene::warnings.
+#include "engine/core/work_limit.h"
 #include "engine/scene/scene.h"
 
 namespace diptych {
@@ -21,7 +22,8 @@ void validateScene(Scene& scene);
 // Lights are looped over per pixel (cost = pixels x lights); meshes are held in memory twice
 // (ours and Embree's or GL's).
 constexpr std::size_t kMaxLights = 1024;
-constexpr std::size_t kMaxTriangles = std::size_t(1) << 23;  // 8.4 million
+constexpr std::size_t kMaxTriangles =
+    std::size_t(double(std::size_t(1) << 23) * kWorkLimitScale);  // 8.4 million
 // World-space coordinates, lengths, radii, near/far: squares of lengths stay below 1e24.
 constexpr float kMaxCoordinate = 1e12f;
 // Emitted quantities: light colour x intensity, emission, ambient, environment colour x

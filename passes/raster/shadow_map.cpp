@@ -13,10 +13,15 @@ void ShadowMapPass::setup(PassBuilder& b) {
 
 void ShadowMapPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
-  const auto frusta = shadowmap::fitLightFrusta(world.scene().lights, world.geometry().bounds,
-                                                {.resolution = settings_.resolution,
-                                                 .pointLightSize = settings_.lightSize,
-                                                 .directionalAngle = settings_.lightAngle});
+  // PCSS's point/spot size is relative to the scene so that penumbrae scale with it (a scene
+  // scaled by s must give the same image: docs/numerics.md).
+  const Aabb& bounds = world.geometry().bounds;
+  const float diagonal = bounds.empty() ? 1.f : glm::length(bounds.hi - bounds.lo);
+  const auto frusta =
+      shadowmap::fitLightFrusta(world.scene().lights, bounds,
+                                {.resolution = settings_.resolution,
+                                 .pointLightSize = settings_.lightFraction * diagonal,
+                                 .directionalAngle = settings_.lightAngle});
   auto& state = world.glCached<shadowmap::ShadowMapGl>();
   const gl::Texture& maps =
       state.maps(settings_.resolution, std::max(1, shadowmap::totalLayers(frusta)));

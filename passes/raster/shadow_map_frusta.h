@@ -30,7 +30,8 @@ struct LightFrustum {
 
 struct FrustumOptions {
   int resolution = 2048;
-  float pointLightSize = 0.1f;       // PCSS world diameter for point and spot lights
+  float pointLightSize = 0.1f;       // PCSS world diameter for point and spot lights (the pass
+                                     // passes light_fraction times the scene diagonal)
   float directionalAngle = 0.0093f;  // PCSS angular diameter for directional lights (the sun)
 };
 

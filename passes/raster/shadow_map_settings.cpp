@@ -64,8 +64,9 @@ ParamSchema schema() {
       P::integer("kernel", 3, 1, 15, "PCF kernel side, odd"),
       P::integer("taps", 16, 1, 64, "Poisson and PCSS taps"),
       P::number("radius", 2.0, 0.0, 256.0, "Poisson radius, texels"),
-      P::number("light_size", 0.1, 0.0, 1e30,
-                "PCSS: point/spot light world diameter (area lights: their own)"),
+      P::number("light_fraction", 0.005, 0.0, 1.0,
+                "PCSS: point/spot light diameter, times the scene diagonal (area lights: their "
+                "own)"),
       P::number("light_angle", 0.0093, 0.0, 1.5,
                 "PCSS: directional light angular diameter, radians (the sun's)"),
       P::number("max_radius", 32.0, 1.0, 256.0,
@@ -87,7 +88,7 @@ Settings readSettings(const PassParams& p) {
   s.kernel = p.integer("kernel");
   s.taps = p.integer("taps");
   s.radius = float(p.number("radius"));
-  s.lightSize = float(p.number("light_size"));
+  s.lightFraction = float(p.number("light_fraction"));
   s.lightAngle = float(p.number("light_angle"));
   s.maxRadius = float(p.number("max_radius"));
   if (s.kernel % 2 == 0)

@@ -18,7 +18,7 @@ struct Settings {
         adaptiveEpsilon = 0;
   Filter filter = Filter::None;
   int kernel = 0, taps = 0;
-  float radius = 0, lightSize = 0, lightAngle = 0, maxRadius = 0;
+  float radius = 0, lightFraction = 0, lightAngle = 0, maxRadius = 0;
 };
 
 // The shadow_map pass's parameters: names, ranges, defaults, doc lines.

@@ -27,7 +27,7 @@ void TextureSupersamplePass::execute(PassContext& c) {
   const CpuImage& hits = c.cpuRead(io_.hits);
   CpuImage& out = c.cpuWrite(io_.signal);
   const int n = samples_;
-  // Built (lazily, the first time) here on the calling thread: rtScene() is not thread-safe.
+  // Fetched once, outside the loop (the first call builds the BVH).
   const RtScene& rt = world.rtScene();
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {

@@ -10,6 +10,7 @@
 
 #include "engine/core/error.h"
 #include "engine/scene/load.h"
+#include "engine/scene/scene_transform.h"
 #include "shadow_map_compare.h"
 #include "tests/support/test_paths.h"
 
@@ -92,8 +93,8 @@ TEST(ShadowMap, EveryBiasAndFilterRunsInRangeAndSoftFiltersAreFractional) {
   for (const char* bias :
        {"none", "constant", "slope", "normal_offset", "receiver_plane", "adaptive"}) {
     for (const char* filter : {"none", "pcf", "poisson", "pcss"}) {
-      const json params = {{"resolution", 512}, {"bias", bias}, {"filter", filter},
-                           {"light_size", 0.5}, {"kernel", 5},  {"radius", 3}};
+      const json params = {{"resolution", 512},       {"bias", bias}, {"filter", filter},
+                           {"light_fraction", 0.025}, {"kernel", 5},  {"radius", 3}};
       const auto c = compareShadows(shadowSphere(), params, kPlane, 160, 120);
       EXPECT_TRUE(c.finiteInUnitRange) << params.dump();
       if (std::string(filter) == "none")
@@ -130,6 +131,24 @@ TEST(ShadowMap, AreaLightUsesItsCentreAndPcssItsSize) {
   const auto soft = compareShadows(quad, {{"bias", "slope"}, {"filter", "pcss"}}, kPlane);
   EXPECT_TRUE(soft.finiteInUnitRange);
   EXPECT_GT(soft.fractional, 100u);
+}
+
+// PCSS's point-light size is a fraction of the scene diagonal (issue 13): the same scene scaled
+// by 1e-3 or 1e3 gives the same soft visibility. With the former absolute 0.1-unit default the
+// 1e-3 scene's light was 100x the sphere's size and its penumbra swallowed the shadow.
+TEST(ShadowMap, PcssPenumbraScalesWithTheScene) {
+  const json params = {
+      {"resolution", 512}, {"bias", "slope"}, {"filter", "pcss"}, {"light_fraction", 0.02}};
+  const auto base = compareShadows(shadowSphere(), params, kPlane, 160, 120);
+  ASSERT_GT(base.fractional, 20u) << "the penumbra is soft";
+  for (double scale : {1e-3, 1e3}) {
+    const Scene scaled = similarityTransformed(shadowSphere(), scale, glm::dvec3(0.0));
+    const auto c = compareShadows(scaled, params, kPlane, 160, 120);
+    ASSERT_EQ(c.map.size(), base.map.size());
+    double diff = 0.0;
+    for (std::size_t i = 0; i < c.map.size(); ++i) diff += std::abs(c.map[i] - base.map[i]);
+    EXPECT_LT(diff / double(c.map.size()), 1e-3) << "scale " << scale;
+  }
 }
 
 TEST(ShadowMap, LightsThatCastNoShadowAreLit) {
