@@ -14,10 +14,13 @@ uniform uint uFirstTriangle;
 uniform int uMaterial;
 uniform vec3 uAmbient;
 uniform int uBlend;   // 1: the output is composited as I = I_m + k_t M_T I
-uniform int uBehind;  // 1: keep only fragments strictly behind the visibility texel's surface
+// Constants of the permutation (ForwardRenderer::surface): llvmpipe runs a uniform branch's body
+// for every fragment, so the visibility-texel path would cost the passes that do not use it.
+// 1: keep only fragments strictly behind the visibility texel's surface.
+const int uBehind = FORWARD_BEHIND;
 // 1 (with uBehind): also drop fragments whose pixel's first surface transmits nothing (k_t = 0):
 // the blend producers zero those pixels afterwards (blend_transmission.frag, the same test).
-uniform int uTransmissiveOnly;
+const int uTransmissiveOnly = FORWARD_TRANSMISSIVE_ONLY;
 layout(binding = 0) uniform usampler2D uHits;
 
 // Dual-source blending (GL 3.3 core, ARB_blend_func_extended): index 1 is the per-fragment

@@ -2,8 +2,10 @@
 // G-buffer, with the same shared code the CPU shade pass runs (common/shading.glsl):
 //   L = M_E + A_G + sum_i V_i S_i L_dir,i + k_ps M_PS L_refl + k_t M_T L_trans
 // Inputs are read with imageLoad (image units 0..5, the pass's own), so that the texture units
-// stay free for the scene's textures. Optional inputs are flagged by uniforms: V_i = 1, L_refl
-// = L_trans = 0 and the material's own C and alpha when unconnected, as in passes/cpu/shade.cpp.
+// stay free for the scene's textures. Which optional inputs are connected, and the light count,
+// are compile-time constants (SHADE_* below, one program per combination and scene in
+// gl_shade.cpp; llvmpipe runs every side of a branch, docs/gl-shade.md): V_i = 1, L_refl =
+// L_trans = 0 and the material's own C and alpha when unconnected, as in passes/cpu/shade.cpp.
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
@@ -15,10 +17,11 @@ layout(binding = 2, r32f) readonly uniform image2DArray uVisibilityLayers;  // a
 layout(binding = 3, rgba32f) readonly uniform image2D uReflection;
 layout(binding = 4, rgba32f) readonly uniform image2D uTransmission;
 layout(binding = 5, rgba32f) readonly uniform image2D uAlbedo;
-uniform int uVisibilityCount;  // layers of light_visibility; 0 when unconnected
-uniform bool uHasReflection;
-uniform bool uHasTransmission;
-uniform bool uHasAlbedo;
+const int kVisibilityCount = SHADE_VISIBILITY;  // layers of light_visibility; 0: unconnected
+const bool kHasReflection = SHADE_REFLECTION != 0;
+const bool kHasTransmission = SHADE_TRANSMISSION != 0;
+const bool kHasAlbedo = SHADE_ALBEDO != 0;
+const int kLightCount = SHADE_LIGHTS;  // the scene's lights (uLightCount, as a constant)
 uniform vec3 uAmbient;  // A_G
 
 // The pixel-centre ray, built as diptych::primaryRay builds it (engine/scene/camera_math.cpp);
@@ -34,8 +37,8 @@ uniform vec2 uViewportSize;
 layout(location = 0) out vec4 outColor;
 
 float lightVisibility(ivec2 p, int i) {
-  if (i >= uVisibilityCount) return 1.0;
-  if (uVisibilityCount == 1) return imageLoad(uVisibility, p).r;
+  if (i >= kVisibilityCount) return 1.0;
+  if (kVisibilityCount == 1) return imageLoad(uVisibility, p).r;
   return imageLoad(uVisibilityLayers, ivec3(p, i)).r;
 }
 
@@ -50,7 +53,7 @@ void main() {
     return;
   }
   ShadingMaterial m = sceneMaterial(s.material, s.uv);
-  if (uHasAlbedo) {
+  if (kHasAlbedo) {
     // The texture-filtering slot's signal replaces the resolved base colour and coverage, as
     // passes/cpu/shade.cpp applyAlbedo: not where it wrote none (a < 0) nor for materials whose
     // metallic-roughness texture re-maps C per texel (docs/textures.md).
@@ -65,12 +68,12 @@ void main() {
   vec3 n = dot(s.faceNormal, eye) <= 0.0 ? s.shadingNormal : -s.shadingNormal;
   vec3 v = -eye;
   vec3 radiance = emittedAndAmbient(m, uAmbient);
-  for (int i = 0; i < uLightCount; ++i) {
+  for (int i = 0; i < kLightCount; ++i) {
     LightSample ls = sampleLight(sceneLight(i), s.position);
     radiance += lightContribution(m, n, v, ls, lightVisibility(p, i));
   }
-  vec3 reflected = uHasReflection ? imageLoad(uReflection, p).rgb : vec3(0.0);
-  vec3 transmitted = uHasTransmission ? imageLoad(uTransmission, p).rgb : vec3(0.0);
+  vec3 reflected = kHasReflection ? imageLoad(uReflection, p).rgb : vec3(0.0);
+  vec3 transmitted = kHasTransmission ? imageLoad(uTransmission, p).rgb : vec3(0.0);
   radiance += secondaryTerms(m, n, v, reflected, transmitted);
   outColor = vec4(radiance, 1.0);
 }

@@ -47,8 +47,7 @@ ForwardView cameraView(const Camera& camera, float aspect) {
 }
 
 ForwardRenderer::ForwardRenderer()
-    : surface_(loadProgram({"forward.vert", "forward.frag"})),
-      background_(loadProgram({"fullscreen.vert", "forward_background.frag"})),
+    : background_(loadProgram({"fullscreen.vert", "forward_background.frag"})),
       framebuffer_(Framebuffer::create()),
       empty_(VertexArray::create()) {}
 
@@ -96,6 +95,18 @@ void setCamera(const Program& p, const ForwardView& view, const mat4& viewProjec
 }
 
 }  // namespace
+
+const Program& ForwardRenderer::surface(const GlShadingBuffers& shading, bool behind,
+                                        bool transmissiveOnly) {
+  const int key = (behind ? 1 : 0) + (transmissiveOnly ? 2 : 0);
+  Program& p = surfaces_[key];
+  if (!p)
+    p = loadProgram({"forward.vert", "forward.frag"},
+                    withDefines(shading.defines,
+                                {{"FORWARD_BEHIND", behind ? "1" : "0"},
+                                 {"FORWARD_TRANSMISSIVE_ONLY", transmissiveOnly ? "1" : "0"}}));
+  return p;
+}
 
 void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
                              const Texture& color, const Texture& depth, const ForwardOptions& o,
@@ -146,25 +157,25 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
     glDisable(GL_BLEND);
   }
   if (o.clipPlane) glEnable(GL_CLIP_DISTANCE0);
-  surface_.set("uViewProjection", viewProjection);
-  setCamera(surface_, view, viewProjection, width, height);
-  surface_.set("uClipPlane", o.clipPlane.value_or(vec4(0.f, 0.f, 0.f, 1.f)));
-  surface_.set("uAmbient", scene.ambient);
-  surface_.set("uLightCount", shading.lightCount);
-  surface_.set("uBlend", o.blend ? 1 : 0);
-  surface_.set("uBehind", o.behindVisibility ? 1 : 0);
-  surface_.set("uTransmissiveOnly", o.behindVisibility && o.transmissiveFirstOnly ? 1 : 0);
+  const Program& program = surface(shading, o.behindVisibility != nullptr,
+                                   o.behindVisibility && o.transmissiveFirstOnly);
+  program.set("uViewProjection", viewProjection);
+  setCamera(program, view, viewProjection, width, height);
+  program.set("uClipPlane", o.clipPlane.value_or(vec4(0.f, 0.f, 0.f, 1.f)));
+  program.set("uAmbient", scene.ambient);
+  program.set("uLightCount", shading.lightCount);
+  program.set("uBlend", o.blend ? 1 : 0);
   if (o.behindVisibility) glBindTextureUnit(0, o.behindVisibility->id());
-  surface_.use();
+  program.use();
   buffers.vertexArray.bind();
   buffers.bindStorage();
   shading.bindStorage();
   for (const int i : drawList(scene, buffers, o)) {
     const GlMeshRange& mesh = buffers.meshes[std::size_t(i)];
     if (mesh.triangleCount == 0 || mesh.instance == o.excludeInstance) continue;
-    surface_.set("uInstance", std::uint32_t(mesh.instance));
-    surface_.set("uFirstTriangle", mesh.firstTriangle);
-    surface_.set("uMaterial", mesh.material);
+    program.set("uInstance", std::uint32_t(mesh.instance));
+    program.set("uFirstTriangle", mesh.firstTriangle);
+    program.set("uMaterial", mesh.material);
     glDrawElements(GL_TRIANGLES, GLsizei(3 * mesh.triangleCount), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));
   }

@@ -17,6 +17,7 @@
 //
 // Depth: reversed-Z (clip control lower-left / zero-to-one, D32F cleared to 0, GL_GREATER), as
 // the G-buffer. Culling is off: both sides of every triangle are drawn.
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -83,7 +84,11 @@ class ForwardRenderer {
 
  private:
   void ensureEnvironment(const Scene& scene);
-  Program surface_, background_;
+  // forward.frag for (behind, transmissive-only) compiled for the scene on first use: constants
+  // instead of uniforms, since llvmpipe would run the visibility-texel path for every fragment.
+  const Program& surface(const GlShadingBuffers& shading, bool behind, bool transmissiveOnly);
+  std::map<int, Program> surfaces_;
+  Program background_;
   Framebuffer framebuffer_;
   VertexArray empty_;
   Texture environment_;

@@ -217,6 +217,7 @@ GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometr
   out.materialCount = int(scene.materials.size() + 1);
   out.instanceCount = int(scene.instances.size());
   out.lightCount = int(scene.lights.size());
+  out.defines = sceneShaderDefines(scene);
   return out;
 }
 

@@ -13,6 +13,7 @@
 #include "engine/gl/objects.h"
 #include "engine/gl/scene_buffers.h"
 #include "engine/gl/scene_textures.h"
+#include "engine/gl/shader_features.h"
 #include "engine/scene/scene.h"
 
 namespace diptych::gl {
@@ -42,6 +43,8 @@ struct GlShadingBuffers {
   GlSceneTextures textures;          // every Scene::textures entry with its mip chain
   std::vector<AlphaDraw> drawModes;  // index material + 1, as `materials`
   int materialCount = 0, instanceCount = 0, lightCount = 0;
+  // The scene's shader permutation (shader_features.h): passes compile with these first.
+  std::vector<ShaderDefine> defines;
 
   // Binds the three buffers to their BINDING_SCENE_* points, alphaMasks to
   // UNIT_SCENE_ALPHA_MASKS and the textures (engine/gl/bindings.h).

@@ -6,6 +6,7 @@
 
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
+#include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 #include "passes/raster/fullscreen_resolve.h"
 
@@ -17,8 +18,8 @@ namespace {
 // G-buffer's depth is not an input of the slot) and the mask that zeroes non-transmissive pixels.
 struct BlendCache {
   gl::Texture depth;
-  FullscreenResolve mask{gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"})};
-  std::vector<Aabb> bounds;  // world bounds per mesh; the world's geometry is fixed
+  std::optional<FullscreenResolve> mask;  // compiled for the world's scene on first use
+  std::vector<Aabb> bounds;               // world bounds per mesh; the world's geometry is fixed
   const std::vector<Aabb>& meshBounds(const WorldGeometry& geometry) {
     if (bounds.size() != geometry.meshes.size()) {
       bounds.assign(geometry.meshes.size(), Aabb{});
@@ -160,7 +161,10 @@ void BlendTransmissionPass::execute(PassContext& c) {
 
   // The slot's contract: 0 where the first surface transmits nothing.
   gl::glBindTextureUnit(0, hits.id());
-  cache.mask.draw(world, out);
+  if (!cache.mask)
+    cache.mask.emplace(
+        gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"}, world.glShading().defines));
+  cache.mask->draw(world, out);
 }
 
 }  // namespace diptych

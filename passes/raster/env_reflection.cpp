@@ -77,13 +77,17 @@ struct EnvReflectionGl {
   std::map<EnvMapKind, gl::Program> programs;
   std::map<std::pair<EnvMapKind, int>, Map> maps;
 
-  const gl::Program& program(EnvMapKind kind) {
+  // Compiled for the world's scene (engine/gl/shader_features.h): the material paths it lacks
+  // are folded away.
+  const gl::Program& program(EnvMapKind kind, const std::vector<gl::ShaderDefine>& scene) {
     auto it = programs.find(kind);
     if (it != programs.end()) return it->second;
     const char* define = kind == EnvMapKind::Cube     ? "ENV_CUBE"
                          : kind == EnvMapKind::Sphere ? "ENV_SPHERE"
                                                       : "ENV_EQUIRECT";
-    return programs.emplace(kind, gl::loadProgram({"env_reflection.comp"}, {{define, ""}}))
+    return programs
+        .emplace(kind,
+                 gl::loadProgram({"env_reflection.comp"}, gl::withDefines(scene, {{define, ""}})))
         .first->second;
   }
 
@@ -123,9 +127,9 @@ void EnvReflectionPass::execute(PassContext& c) {
   EnvReflectionGl& state = world.glCached<EnvReflectionGl>();
   const gl::Texture& map =
       state.map(world.scene().environment, kind_, resolution_, glm::transpose(worldToEye));
-  const gl::Program& program = state.program(kind_);
-
   const gl::GlShadingBuffers& shading = world.glShading();
+  const gl::Program& program = state.program(kind_, shading.defines);
+
   world.glScene().bindStorage();
   shading.bindStorage();
   const gl::Texture& out = c.glTexture(io_.signal);

@@ -16,6 +16,7 @@ class GlEnvironment {
   // Sets uEnvironmentType/uEnvironmentColor on `program` and binds the texels to
   // UNIT_SCENE_ENVIRONMENT.
   void bind(const gl::Program& program) const;
+  int type() const { return type_; }  // a program may take it as SCENE_ENVIRONMENT_TYPE
 
  private:
   int type_ = 0;  // ENVIRONMENT_* of scene_environment.glsl

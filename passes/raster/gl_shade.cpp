@@ -1,6 +1,8 @@
 #include "passes/raster/gl_shade.h"
 
 #include <cmath>
+#include <map>
+#include <string>
 
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
@@ -11,11 +13,39 @@
 namespace diptych {
 namespace {
 
-// GL state of the shade pass, one per RenderWorld (render_world.h: never in the pass).
+// GL state of the shade pass, one per RenderWorld (render_world.h: never in the pass): one
+// program per combination of connected inputs, compiled for the world's scene.
 struct GlShadeState {
-  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "gl_shade.frag"})};
+  std::map<std::string, FullscreenResolve> programs;
   std::unique_ptr<GlEnvironment> environment;  // uploaded on the first frame
 };
+
+// The permutation of gl_shade.frag for these inputs: the scene's features
+// (gl/scene_features.glsl), its light count and environment kind, and which optional inputs are
+// connected, all as constants. llvmpipe executes every side of a branch under a lane mask, so
+// with uniforms every pixel paid for both material models, every texture path, every light
+// type and every environment kind (docs/benchmarks.md has the before/after).
+FullscreenResolve& shadeProgram(GlShadeState& state, RenderWorld& world, int visibilityLayers,
+                                const ShadeIo& io) {
+  const gl::GlShadingBuffers& shading = world.glShading();
+  const std::vector<gl::ShaderDefine> own = {
+      {"SHADE_LIGHTS", std::to_string(shading.lightCount)},
+      {"SHADE_VISIBILITY", std::to_string(visibilityLayers)},
+      {"SHADE_REFLECTION", io.reflection != kNoResource ? "1" : "0"},
+      {"SHADE_TRANSMISSION", io.transmission != kNoResource ? "1" : "0"},
+      {"SHADE_ALBEDO", io.albedo != kNoResource ? "1" : "0"},
+      {"SCENE_ENVIRONMENT_TYPE", std::to_string(state.environment->type())}};
+  std::string key;
+  for (const gl::ShaderDefine& d : own) key += d.value + ",";
+  auto it = state.programs.find(key);
+  if (it == state.programs.end())
+    it =
+        state.programs
+            .emplace(key, FullscreenResolve(gl::loadProgram({"fullscreen.vert", "gl_shade.frag"},
+                                                            gl::withDefines(shading.defines, own))))
+            .first;
+  return it->second;
+}
 
 void bindImage(GLuint unit, const gl::Texture& texture, GLenum format, bool layered) {
   gl::glBindImageTexture(unit, texture.id(), 0, layered ? GL_TRUE : GL_FALSE, 0, GL_READ_ONLY,
@@ -29,7 +59,10 @@ void shadeOnGl(PassContext& c, const ShadeIo& io) {
   GlShadeState& state = world.glCached<GlShadeState>();
   if (!state.environment)
     state.environment = std::make_unique<GlEnvironment>(world.scene().environment);
-  const gl::Program& program = state.resolve.program();
+  const int visibilityLayers =
+      io.lightVisibility != kNoResource ? c.desc(io.lightVisibility).layers : 0;
+  FullscreenResolve& resolve = shadeProgram(state, world, visibilityLayers, io);
+  const gl::Program& program = resolve.program();
   const Camera& camera = c.frame().camera;
   const FrameSettings& frame = c.frame();
 
@@ -43,30 +76,22 @@ void shadeOnGl(PassContext& c, const ShadeIo& io) {
   program.set("uAspect", float(frame.width) / float(frame.height));
   program.set("uTanHalfFov", std::tan(0.5f * camera.verticalFov));
   program.set("uAmbient", world.scene().ambient);
-  program.set("uLightCount", world.glShading().lightCount);
   state.environment->bind(program);
 
   bindImage(0, c.glTexture(io.hits), GL_RGBA32UI, false);
-  int visibilityLayers = 0;
-  if (io.lightVisibility != kNoResource) {
-    visibilityLayers = c.desc(io.lightVisibility).layers;
+  if (visibilityLayers > 0)
     bindImage(visibilityLayers > 1 ? 2 : 1, c.glTexture(io.lightVisibility), GL_R32F,
               visibilityLayers > 1);
-  }
-  program.set("uVisibilityCount", visibilityLayers);
-  const std::pair<ResourceId, const char*> optional[] = {{io.reflection, "uHasReflection"},
-                                                         {io.transmission, "uHasTransmission"},
-                                                         {io.albedo, "uHasAlbedo"}};
+  const ResourceId optional[] = {io.reflection, io.transmission, io.albedo};
   GLuint unit = 3;
-  for (const auto& [id, flag] : optional) {
+  for (ResourceId id : optional) {
     if (id != kNoResource) bindImage(unit, c.glTexture(id), GL_RGBA32F, false);
-    program.set(flag, id != kNoResource ? 1 : 0);
     ++unit;
   }
   // Producers that wrote their signal with imageStore made it visible to image loads only
   // after this barrier (GL 4.5, section 7.12.2).
   gl::glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  state.resolve.draw(world, c.glTexture(io.color));
+  resolve.draw(world, c.glTexture(io.color));
 }
 
 }  // namespace diptych

@@ -6,7 +6,12 @@
 const int ENVIRONMENT_COLOR = 0;
 const int ENVIRONMENT_EQUIRECT = 1;
 const int ENVIRONMENT_CUBE = 2;
+#ifdef SCENE_ENVIRONMENT_TYPE
+// One program per environment kind (gl_shade.cpp): llvmpipe would run every kind's lookup.
+const int uEnvironmentType = SCENE_ENVIRONMENT_TYPE;
+#else
 uniform int uEnvironmentType;
+#endif
 uniform vec3 uEnvironmentColor;  // the constant times the intensity
 // Layer 0: the lat-long image; layers 0..5: cube faces +x,-x,+y,-y,+z,-z. RGB already times
 // the intensity; GL row r holds image row height - 1 - r (engine/gl/transfer.h flips rows).

@@ -96,18 +96,24 @@ ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
   s.specularTint = g.tintRoughness.xyz;
   s.transmission = g.modelTransSpec.y;
   s.specularWeight = g.modelTransSpec.z;
+#if DIPTYCH_SCENE_MODEL >= 0
+  s.model = DIPTYCH_SCENE_MODEL;  // a constant: shading.glsl's model dispatch folds
+#endif
+#if DIPTYCH_SCENE_CHECKER || DIPTYCH_SCENE_TEXTURES
   int colourTex = int(g.texColorEmitMrAo.x);
-  if (g.emissionChecker.w > 0.5) {
+  if (DIPTYCH_SCENE_CHECKER != 0 && g.emissionChecker.w > 0.5) {
     vec2 cell = floor(uv * g.checkerAScale.w);
     bool odd = mod(cell.x + cell.y, 2.0) != 0.0;
     s.color = odd ? g.checkerBCutoff.xyz : g.checkerAScale.xyz;
     s.baseColor = s.color;
-  } else if (sceneTextureValid(colourTex)) {
+  } else if (DIPTYCH_SCENE_TEXTURES != 0 && sceneTextureValid(colourTex)) {
     vec4 c = sceneMaterialTexture(colourTex, uv, uvLod);
     s.color *= c.xyz;
     s.baseColor *= c.xyz;
     s.alpha *= c.w;
   }
+#endif
+#if DIPTYCH_SCENE_TEXTURES
   int emissionTex = int(g.texColorEmitMrAo.y);
   if (sceneTextureValid(emissionTex)) s.emission *= sceneMaterialTexture(emissionTex, uv, uvLod).xyz;
   int mrTex = int(g.texColorEmitMrAo.z);
@@ -125,6 +131,7 @@ ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
     float ao = sceneMaterialTexture(aoTex, uv, uvLod).x;
     s.ka *= 1.0 + g.texNormalScales.z * (ao - 1.0);
   }
+#endif
   return s;
 }
 
@@ -133,6 +140,9 @@ ShadingMaterial sceneMaterial(int m, vec2 uv) { return sceneMaterialLod(m, uv, -
 // glTF 3.9.3 normal map as engine/rt/surface_point.cpp normalMapped: n' = normalize(T x + B y
 // + N z), (x, y, z) = (2 texel - 1) * (scale, scale, 1), T Gram-Schmidt against n, B = w (N x T).
 vec3 sceneNormalMapped(int m, vec3 n, vec4 tangent, vec2 uv) {
+#if !DIPTYCH_SCENE_NORMAL_MAPS
+  return n;
+#endif
   GpuMaterial g = sceneMaterials[m + 1];
   int tex = int(g.texNormalScales.x);
   if (!sceneTextureValid(tex)) return n;
@@ -185,7 +195,11 @@ float sceneMaterialAlphaCutoff(int m) { return sceneMaterials[m + 1].checkerBCut
 ShadingLight sceneLight(int i) {
   GpuLight g = sceneLights[i];
   ShadingLight l;
+#if DIPTYCH_SCENE_LIGHT_TYPE >= 0
+  l.type = DIPTYCH_SCENE_LIGHT_TYPE;  // a constant: sampleLight's type tests fold
+#else
   l.type = int(g.typeRangeCos.x);
+#endif
   l.range = g.typeRangeCos.y;
   l.cosInner = g.typeRangeCos.z;
   l.cosOuter = g.typeRangeCos.w;
@@ -237,7 +251,9 @@ SceneSurface surfaceFromHits(uvec4 texel) {
   s.uv = w * t0 + u * t1 + v * t2;
   s.material = sceneInstanceMaterial(s.instance);
   // The CPU maps the interpolated normal (makeSurfacePoint); zero tangents leave it unchanged.
+#if DIPTYCH_SCENE_NORMAL_MAPS
   vec4 tg = w * sceneTangent(tri.x) + u * sceneTangent(tri.y) + v * sceneTangent(tri.z);
   s.shadingNormal = sceneNormalMapped(s.material, s.shadingNormal, tg, s.uv);
+#endif
   return s;
 }

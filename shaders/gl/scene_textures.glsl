@@ -3,6 +3,7 @@
 // texel indices, texel centres at (i + 0.5) / size, GL's level selection (4.5 core, 8.14) and
 // EXT_texture_filter_anisotropic's probes. Included by scene_shading.glsl.
 #include "common/bindings.glsl"
+#include "gl/scene_features.glsl"
 layout(std430, binding = BINDING_SCENE_TEXTURES) readonly buffer SceneTextures { ivec4 sceneTextureInfo[]; };
 layout(binding = UNIT_SCENE_TEXTURES) uniform sampler2DArray uSceneTextures;
 
@@ -29,6 +30,9 @@ int sceneWrapTexel(int i, int size, int mode) {
 }
 
 bool sceneTextureValid(int tex) {
+#if !DIPTYCH_SCENE_TEXTURES && !DIPTYCH_SCENE_NORMAL_MAPS
+  return false;  // folds every texture path away (scene_features.glsl)
+#endif
   return tex >= 0 && tex < sceneTextureInfo.length() && sceneTextureInfo[tex].z > 0;
 }
 
