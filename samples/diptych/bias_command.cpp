@@ -69,6 +69,8 @@ void addShadowBiasCommand(CLI::App& app, int& exitCode) {
       ->capture_default_str();
   cmd->add_option("--receiver", c->options.receiver, "Measure only this object's pixels");
   cmd->add_option("--light", c->options.light, "The light studied")->capture_default_str();
+  cmd->add_option("--contact", c->options.contact,
+                  "Contact distance, world units (default 1e-3 x the scene's diagonal)");
   cmd->add_option("--frames", c->options.frames, "Measured frames per point")
       ->capture_default_str();
   cmd->add_option("--warmup", c->options.warmup, "Warm-up frames per point")->capture_default_str();

@@ -54,11 +54,13 @@ std::pair<double, double> amountRange(const std::string& mode, const BiasStudyOp
 
 nlohmann::json curveSummary(const std::string& mode, const std::string& key,
                             const std::vector<nlohmann::json>& points) {
-  std::vector<double> amounts, acne;
+  std::vector<double> amounts, acne, predictedAcne;
   const nlohmann::json* best = nullptr;
   for (const auto& p : points) {
     amounts.push_back(key.empty() ? 0.0 : p["params"][key].get<double>());
     acne.push_back(p["signal"]["acne_rate"].get<double>());
+    if (p["geometry"].contains("predicted_acne_rate"))
+      predictedAcne.push_back(p["geometry"]["predicted_acne_rate"].get<double>());
     if (!best || p["signal"]["misclassified"].get<double>() <
                      (*best)["signal"]["misclassified"].get<double>())
       best = &p;
@@ -67,6 +69,11 @@ nlohmann::json curveSummary(const std::string& mode, const std::string& key,
   const double predicted = predictedThreshold(mode, first["geometry"]["texel_world"].get<double>(),
                                               first["geometry"]["incidence_deg"].get<double>());
   const double cross = key.empty() ? 0.0 : crossing(amounts, acne, 0.01);
+  // Where the per-pixel texel model's acne rate drops below 1% (constant bias): the prediction
+  // for receivers whose texel and incidence vary (point and spot lights, curved receivers).
+  const double predictedCross = !key.empty() && predictedAcne.size() == points.size()
+                                    ? crossing(amounts, predictedAcne, 0.01)
+                                    : 0.0;
   nlohmann::json c = {
       {"resolution", first["params"].value("resolution", 2048)},
       {"elevation", first["params"].value("elevation", nlohmann::json())},
@@ -78,6 +85,10 @@ nlohmann::json curveSummary(const std::string& mode, const std::string& key,
       {"acne_crossing_1pct", cross},
       {"crossing_over_predicted",
        predicted > 0 && cross > 0 ? nlohmann::json(cross / predicted) : nlohmann::json()},
+      {"predicted_crossing_1pct",
+       predictedCross > 0 ? nlohmann::json(predictedCross) : nlohmann::json()},
+      {"crossing_over_predicted_crossing",
+       predictedCross > 0 && cross > 0 ? nlohmann::json(cross / predictedCross) : nlohmann::json()},
       {"max_acne_rate", *std::max_element(acne.begin(), acne.end())},
       {"best",
        {{"amount", key.empty() ? nlohmann::json() : (*best)["params"][key]},
@@ -202,6 +213,7 @@ nlohmann::json runBiasStudy(const BiasStudyOptions& o) {
     s.warmup = o.warmup;
     s.light = o.light;
     s.receiver = o.receiver;
+    s.contact = o.contact;
     s.out = o.out / mode;
     s.label = "shadow-bias";
     if (directional && !o.elevations.empty())
