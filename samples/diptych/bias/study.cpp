@@ -34,9 +34,21 @@ std::pair<double, double> amountRange(const std::string& mode, const BiasStudyOp
   if (mode == "receiver_plane" || mode == "adaptive") return {1e-8, 1e-1};
   const WorldGeometry world = flattenScene(scene);
   const Light& light = scene.lights.at(std::size_t(o.light));
-  if (light.type != LightType::Directional) {  // no closed form before rendering: by scene size
-    const double diagonal = glm::length(world.bounds.hi - world.bounds.lo);
-    return {diagonal * 1e-5, diagonal * 5e-2};
+  if (light.type != LightType::Directional) {
+    // Perspective and cube maps: the texel at the scene's centre (texelScale per unit of axis
+    // depth, times the distance), at a 60 degree incidence; the rendered receivers refine it.
+    double lo = 1e30, hi = 0;
+    const double distance =
+        glm::length(0.5f * (world.bounds.lo + world.bounds.hi) - light.position);
+    for (int res : o.resolutions) {
+      shadowmap::FrustumOptions fo;
+      fo.resolution = res;
+      const double w =
+          shadowmap::fitLightFrusta(scene.lights, world.bounds, fo)[o.light].texelScale * distance;
+      lo = std::min(lo, predictedThreshold("constant", w, 60.0));
+      hi = std::max(hi, predictedThreshold("constant", w, 60.0));
+    }
+    return {lo / 10, hi * 20};
   }
   double lo = 1e30, hi = 0;
   for (int res : o.resolutions)
