@@ -1,5 +1,6 @@
 #include "samples/diptych/sweep_command.h"
 
+#include <cmath>
 #include <cstdio>
 #include <tuple>
 
@@ -61,7 +62,18 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
                   "Peter-panning reach from a contact, px (farther: leak)")
       ->capture_default_str();
   cmd->add_option("--contact", c->options.contact,
-                  "Contact distance, world units (default 1e-3 x the scene's diagonal)");
+                  "Contact distance, world units (default 1e-3 x the scene's diagonal)")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            double d = -1;
+            try {
+              d = std::stod(v);
+            } catch (const std::exception&) {
+            }
+            return d >= 0 && std::isfinite(d) ? std::string()
+                                              : "'" + v + "' is not a finite distance >= 0";
+          },
+          "WORLD"));
   cmd->add_option("--frames", c->options.frames, "Measured frames per point (median)")
       ->capture_default_str();
   cmd->add_option("--warmup", c->options.warmup, "Warm-up frames per point")->capture_default_str();

@@ -18,3 +18,8 @@ foreach(case contact room)
   endif()
   message(STATUS "${out}")
 endforeach()
+expect_failure(contact-negative EXPECT "--contact" "finite distance"
+               ARGS sweep "${SOURCE_DIR}/samples/scenes/contact-slab.json"
+                    --slot visibility=shadow_map --vary resolution=64 --contact -1 --out bad)
+expect_failure(contact-nan EXPECT "--contact" "finite distance" ARGS shadow-bias --contact nan
+               --out bad)
