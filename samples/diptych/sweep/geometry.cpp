@@ -86,8 +86,9 @@ void measureGeometry(StateReference& s, const FrameSettings& frame, int light,
   s.receivers.clear();
   const double pixelAngle = 2.0 * std::tan(frame.camera.verticalFov / 2.0) / h;
   const Light* l = light < int(s.scene->lights.size()) ? &s.scene->lights[light] : nullptr;
+  const CpuImage& signal = s.exact.outputs.at(s.exactSignal);
   const std::vector<float> exact =
-      l ? layer(s.exact.outputs.at(s.exactSignal), light) : std::vector<float>(n, 1.f);
+      l ? layer(signal, std::min(light, signal.desc.layers - 1)) : std::vector<float>(n, 1.f);
   const WorldGeometry& world = s.world->geometry();
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
