@@ -148,6 +148,15 @@ std::vector<std::string> writeBiasReport(const std::filesystem::path& dir,
           pct(p["signal"]["acne_rate"]), pct(p["signal"]["peter_panning_rate"]),
           pct(p["signal"]["light_leak_rate"]), mode, p["files"]["classes"].get<std::string>());
     }
+    // The contacts that tell peter-panning from leak (the same for every amount of the curve).
+    const auto& first = m["points"][std::size_t(idx.front().get<int>())];
+    if (first["files"].contains("contacts"))
+      page += fmt::format(
+          "<div><div class=\"caption\">{}: contacts (red), {} px of them</div>"
+          "<img class=\"cls\" "
+          "src=\"{}/{}\" alt=\"contacts\"></div>",
+          htmlEscape(curveName(c)), first["signal"].value("contact_pixels", 0LL), mode,
+          first["files"]["contacts"].get<std::string>());
     page += "</div>\n" + std::string(kLegend);
   }
   page +=
