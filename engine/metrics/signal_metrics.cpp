@@ -109,10 +109,13 @@ double ShadowArtifacts::misclassified() const {
 
 ShadowArtifacts classifyShadows(const std::vector<float>& approx, const std::vector<float>& exact,
                                 const std::vector<std::uint8_t>& mask, int w, int h,
-                                const std::vector<float>& footprint, int band, int reach) {
+                                const std::vector<float>& footprint, int band, int reach,
+                                const ShadowContacts* contacts) {
   const std::size_t n = std::size_t(w) * h;
   if (!footprint.empty() && footprint.size() != n)
     throw Error("classifyShadows: the footprint must have width x height values");
+  if (contacts && (contacts->contact.size() != n || contacts->object.size() != n))
+    throw Error("classifyShadows: the contacts must have width x height values");
   // The band and the displacement are compareVisibility's (one definition of both).
   const VisibilityConfusion c = compareVisibility(approx, exact, mask, w, h, band);
   auto lit = [](float v) { return v >= 0.5f; };
@@ -121,13 +124,14 @@ ShadowArtifacts classifyShadows(const std::vector<float>& approx, const std::vec
   // receiver (peter-panning vs leak): two-pass chamfer transforms with unit 8-neighbour steps,
   // which are exact for the Chebyshev metric.
   const int far = w + h;
-  auto distanceTo = [&](auto&& seed) {
+  // `joined(i, j)`: whether a step between neighbouring pixels i and j may be taken.
+  auto distanceTo = [&](auto&& seed, auto&& joined) {
     std::vector<int> d(n, far);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) d[at(x, y)] = seed(x, y) ? 0 : far;
     auto relax = [&](int x, int y, int dx, int dy) {
       const int xx = x + dx, yy = y + dy;
-      if (xx >= 0 && yy >= 0 && xx < w && yy < h)
+      if (xx >= 0 && yy >= 0 && xx < w && yy < h && joined(at(x, y), at(xx, yy)))
         d[at(x, y)] = std::min(d[at(x, y)], d[at(xx, yy)] + 1);
     };
     for (int y = 0; y < h; ++y)
@@ -138,17 +142,28 @@ ShadowArtifacts classifyShadows(const std::vector<float>& approx, const std::vec
         for (auto [dx, dy] : {std::pair{1, 0}, {1, 1}, {0, 1}, {-1, 1}}) relax(x, y, dx, dy);
     return d;
   };
-  const std::vector<int> toBoundary = distanceTo([&](int x, int y) {
-    if (!mask[at(x, y)]) return false;
-    const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
-    for (int k = 0; k < 4; ++k)
-      if (nx[k] >= 0 && ny[k] >= 0 && nx[k] < w && ny[k] < h && mask[at(nx[k], ny[k])] &&
-          lit(exact[at(nx[k], ny[k])]) != lit(exact[at(x, y)]))
-        return true;
-    return false;
-  });
-  const std::vector<int> toLit =
-      distanceTo([&](int x, int y) { return mask[at(x, y)] && lit(exact[at(x, y)]); });
+  const auto anyStep = [](std::size_t, std::size_t) { return true; };
+  const std::vector<int> toBoundary = distanceTo(
+      [&](int x, int y) {
+        if (!mask[at(x, y)]) return false;
+        const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
+        for (int k = 0; k < 4; ++k)
+          if (nx[k] >= 0 && ny[k] >= 0 && nx[k] < w && ny[k] < h && mask[at(nx[k], ny[k])] &&
+              lit(exact[at(nx[k], ny[k])]) != lit(exact[at(x, y)]))
+            return true;
+        return false;
+      },
+      anyStep);
+  // Peter-panning vs leak: the distance to a contact pixel, walking only over pixels of the same
+  // object (a chamfer transform with barriers: approximate around concave outlines); without
+  // contacts, the distance to an exactly lit pixel.
+  const std::vector<int> toContact =
+      contacts ? distanceTo([&](int x, int y) { return contacts->contact[at(x, y)] != 0; },
+                            [&](std::size_t i, std::size_t j) {
+                              return contacts->object[i] == contacts->object[j];
+                            })
+               : distanceTo([&](int x, int y) { return mask[at(x, y)] && lit(exact[at(x, y)]); },
+                            anyStep);
 
   ShadowArtifacts a;
   a.band = band;
@@ -174,7 +189,8 @@ ShadowArtifacts classifyShadows(const std::vector<float>& approx, const std::vec
     else if (e)
       k = ShadowClass::Acne;
     else
-      k = toLit[i] <= reach ? ShadowClass::PeterPanning : ShadowClass::LightLeak;
+      k = toContact[i] <= reach ? ShadowClass::PeterPanning : ShadowClass::LightLeak;
+    a.contacts += contacts && contacts->contact[i];
     a.acne += k == ShadowClass::Acne;
     a.peterPanning += k == ShadowClass::PeterPanning;
     a.lightLeak += k == ShadowClass::LightLeak;

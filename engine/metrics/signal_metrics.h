@@ -38,9 +38,11 @@ VisibilityConfusion compareVisibility(const std::vector<float>& approximate,
 
 // Shadow artifacts of one light (docs/shadow-bias.md): each receiver pixel (mask true) is put in
 // one class against the exact visibility (lit = visibility >= 0.5). Acne: false shadow farther
-// than `band` pixels from an exact boundary. Peter-panning: false light outside the band but
-// within `reach` pixels (Chebyshev) of an exactly lit pixel, i.e. a shadow edge that came loose
-// from its caster. Light leak: false light farther than `reach` from any exactly lit pixel.
+// than `band` pixels from an exact boundary. False light outside the band is peter-panning when
+// it lies next to a contact (within `reach` pixels of a contact pixel on the same object: the
+// shadow came loose where the caster touches the receiver) and a light leak otherwise (light
+// through a thin caster, or a whole shadow gone, far from any contact). Without contacts (a
+// caller with no rays) the proxy is distance: within `reach` of an exactly lit pixel.
 // Inside the band a wrong pixel is a boundary error (the boundary moved, see displacement).
 enum class ShadowClass : std::uint8_t {
   Background = 0,
@@ -56,6 +58,7 @@ struct ShadowArtifacts {
   int band = 2, reach = 16;
   long long receivers = 0, litOutside = 0, shadowOutside = 0;  // exact classes, outside the band
   long long acne = 0, peterPanning = 0, lightLeak = 0, boundaryErrors = 0;
+  long long contacts = 0;  // contact pixels (ShadowContacts), 0 without contacts
   // Mean |approximate - exact| of the visibility values over receivers: soft filters (PCF,
   // PCSS) are scored on their value, not only after the 0.5 threshold.
   double meanAbsError = 0;
@@ -70,12 +73,22 @@ struct ShadowArtifacts {
   double misclassified() const;     // (acne + peterPanning + lightLeak) / outside-band receivers
 };
 
+// Contacts of one light, per pixel: `contact` 1 where the exact answer is shadow and the exact
+// shadow ray meets its occluder within a small world distance (the caster touches the receiver
+// there); `object` the receiver's id (G-buffer instance), so that false light counts as
+// peter-panning only next to a contact on its own surface, not next to another object's.
+struct ShadowContacts {
+  std::vector<std::uint8_t> contact;
+  std::vector<std::int32_t> object;
+};
+
 // `footprint`: world size of each pixel on its receiver (empty: world displacement stays 0).
+// `contacts`: null for the distance proxy (see ShadowClass).
 ShadowArtifacts classifyShadows(const std::vector<float>& approximate,
                                 const std::vector<float>& exact,
                                 const std::vector<std::uint8_t>& mask, int width, int height,
                                 const std::vector<float>& footprint = {}, int band = 2,
-                                int reach = 16);
+                                int reach = 16, const ShadowContacts* contacts = nullptr);
 // The class map as an RGB image (linear values of a fixed palette; see docs/shadow-bias.md).
 Image shadowClassImage(const ShadowArtifacts& artifacts, int width, int height);
 

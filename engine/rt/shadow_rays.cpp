@@ -136,6 +136,15 @@ float lightVisibility(const RtScene& rt, const Light& light, const ShadowReceive
   return float(visible) / float(count);
 }
 
+float occluderDistance(const RtScene& rt, const Light& light, const ShadowReceiver& receiver) {
+  const OcclusionRay r = makeShadowRay(light, receiver);
+  const float inf = std::numeric_limits<float>::infinity();
+  if (r.tnear > r.tfar) return inf;
+  const float len = glm::length(r.direction);
+  const auto hit = rt.intersect(Ray{r.origin, r.direction / len}, r.tnear * len, r.tfar * len);
+  return hit ? hit->t : inf;
+}
+
 std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lights,
                                    std::span<const ShadowReceiver> receivers, int areaSamples,
                                    std::span<const std::uint32_t> seeds) {

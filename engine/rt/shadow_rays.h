@@ -54,6 +54,11 @@ OcclusionRay makeShadowSample(const Light& light, const ShadowReceiver& receiver
 float lightVisibility(const RtScene& rt, const Light& light, const ShadowReceiver& receiver,
                       int areaSamples, std::uint32_t seed);
 
+// Distance from the receiver to the first occluder along its shadow ray toward the light's
+// centre (makeShadowRay), in world units; +infinity when nothing occludes it or the ray is
+// inactive. The contact test of the shadow-bias classes (docs/shadow-bias.md §3) reads it.
+float occluderDistance(const RtScene& rt, const Light& light, const ShadowReceiver& receiver);
+
 // visibility[l * receivers.size() + p] in {0, 1} for light l and receiver p (fractions once
 // area lights are sampled). One ray per receiver per light, traced in parallel tiles through
 // RtScene::occludedBatch (Embree ray streams, TBB).

@@ -1,5 +1,6 @@
 #include "samples/diptych/sweep_command.h"
 
+#include <cmath>
 #include <cstdio>
 #include <tuple>
 
@@ -57,8 +58,22 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
   addShadingOption(cmd, c->options.shading);
   cmd->add_option("--receiver", c->options.receiver, "Measure only this object's pixels");
   cmd->add_option("--band", c->options.band, "Boundary band, px")->capture_default_str();
-  cmd->add_option("--reach", c->options.reach, "Peter-panning reach, px (farther: leak)")
+  cmd->add_option("--reach", c->options.reach,
+                  "Peter-panning reach from a contact, px (farther: leak)")
       ->capture_default_str();
+  cmd->add_option("--contact", c->options.contact,
+                  "Contact distance, world units (default 1e-3 x the scene's diagonal)")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            double d = -1;
+            try {
+              d = std::stod(v);
+            } catch (const std::exception&) {
+            }
+            return d >= 0 && std::isfinite(d) ? std::string()
+                                              : "'" + v + "' is not a finite distance >= 0";
+          },
+          "WORLD"));
   cmd->add_option("--frames", c->options.frames, "Measured frames per point (median)")
       ->capture_default_str();
   cmd->add_option("--warmup", c->options.warmup, "Warm-up frames per point")->capture_default_str();

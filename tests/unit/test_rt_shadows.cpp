@@ -114,3 +114,26 @@ TEST(ShadowRays, AreaLightsAreTracedTowardTheirCentre) {
   EXPECT_LT(glm::length(end - quad.position), 1e-4f);
   EXPECT_GT(glm::length(end - quad.position), 0.f);  // stops short
 }
+
+// The contact test's distance (docs/shadow-bias.md §3): along the shadow ray to the first
+// occluder. Under a sun overhead, the ground point below the sphere's centre meets the sphere's
+// bottom at kC - kR; a point off the sphere's shadow, and a disabled light, meet nothing.
+TEST(ShadowRays, OccluderDistanceIsTheHitDistanceAlongTheShadowRay) {
+  SphereOverPlane s;
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = vec3(0.f, -1.f, 0.f);
+  const ShadowReceiver under{vec3(0.f), vec3(0, 1, 0), vec3(0.f)};
+  const ShadowReceiver beside{vec3(3.f * kR, 0.f, 0.f), vec3(0, 1, 0), vec3(0.f)};
+  // The tessellated sphere's lowest vertex is its pole: kC - kR up to float rounding.
+  EXPECT_NEAR(occluderDistance(*s.rt, sun, under), kC - kR, 1e-4f);
+  EXPECT_TRUE(std::isinf(occluderDistance(*s.rt, sun, beside)));
+  Light off = sun;
+  off.castsShadows = false;
+  EXPECT_TRUE(std::isinf(occluderDistance(*s.rt, off, under)));
+  // A point light: the distance is along the segment to the light, which stops short of it.
+  Light point;
+  point.type = LightType::Point;
+  point.position = vec3(0.f, kH, 0.f);
+  EXPECT_NEAR(occluderDistance(*s.rt, point, under), kC - kR, 1e-4f);
+}

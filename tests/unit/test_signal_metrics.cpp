@@ -91,6 +91,41 @@ TEST(ShadowArtifacts, ClassesCountsErrorAndDisplacement) {
   EXPECT_EQ(shadowClassImage(a, w, h).width, w);
 }
 
+// Contacts decide peter-panning vs leak (docs/shadow-bias.md §3). Exact shadow on columns 0..29
+// of a 40 x 10 frame; object 1 covers columns 0..9, object 0 the rest; column 20 is a contact
+// (the caster touches the receiver there). False light in column 14 (object 0, 6 px from the
+// contact) is peter-panning; in column 8 (12 px away, but on object 1: the walk may not cross to
+// another object) it is a leak; with a reach of 4 px the column-14 light is a leak too.
+TEST(ShadowArtifacts, ContactsSeparatePeterPanningFromLeaks) {
+  const int w = 40, h = 10;
+  const auto exact = halfShadow(w, h, 30);
+  auto approx = exact;
+  ShadowContacts contacts;
+  contacts.contact.assign(w * h, 0);
+  contacts.object.assign(w * h, 0);
+  for (int y = 0; y < h; ++y) {
+    approx[y * w + 14] = approx[y * w + 8] = 1.f;
+    contacts.contact[y * w + 20] = 1;
+    for (int x = 0; x < 10; ++x) contacts.object[y * w + x] = 1;
+  }
+  const std::vector<std::uint8_t> mask(w * h, 1);
+  const ShadowArtifacts a = classifyShadows(approx, exact, mask, w, h, {}, 2, 16, &contacts);
+  EXPECT_EQ(a.contacts, h);
+  EXPECT_EQ(a.peterPanning, h);
+  EXPECT_EQ(a.lightLeak, h);
+  EXPECT_EQ(a.classes[5 * w + 14], ShadowClass::PeterPanning);
+  EXPECT_EQ(a.classes[5 * w + 8], ShadowClass::LightLeak);
+  // Without contacts the distance proxy calls both peter-panning (within 22 px of exact light).
+  const ShadowArtifacts proxy = classifyShadows(approx, exact, mask, w, h, {}, 2, 22);
+  EXPECT_EQ(proxy.peterPanning, 2 * h);
+  const ShadowArtifacts near = classifyShadows(approx, exact, mask, w, h, {}, 2, 4, &contacts);
+  EXPECT_EQ(near.peterPanning, 0);
+  EXPECT_EQ(near.lightLeak, 2 * h);
+  ShadowContacts wrong = contacts;
+  wrong.object.pop_back();
+  EXPECT_THROW(classifyShadows(approx, exact, mask, w, h, {}, 2, 16, &wrong), Error);
+}
+
 // A soft (PCF-like) signal is scored on its value: 0.4 where the exact answer is 0 is no
 // classification error (below 0.5) but a mean absolute error of 0.4 on those pixels.
 TEST(ShadowArtifacts, SoftValuesCountInTheMeanAbsoluteError) {

@@ -4,7 +4,8 @@
 usage: plot_shadow_bias.py summary.json OUT_DIR
 Writes OUT_DIR/MODE.svg/.png for every swept mode: acne % (left) and peter-panning % and light
 leak % (right) against the mode's amount, one curve per (resolution, elevation, filter), the
-predicted acne threshold of each curve as a dashed vertical line in the curve's colour; and
+predicted acne threshold of each curve as a dashed vertical line in the curve's colour, and for
+constant bias the predicted acne rate (per-pixel texel model) as a dash-dot curve; and
 OUT_DIR/time.svg/.png: misclassified % against the producer's time, one colour per mode.
 """
 import json
@@ -38,6 +39,10 @@ def mode_plot(mode, out_dir):
         s = [r["signal"] for r in rows]
         acne_ax.plot(x, [100 * v["acne_rate"] for v in s], "o-", ms=3, color=colour,
                      label=label(curve))
+        predicted = [r["geometry"].get("predicted_acne_rate") for r in rows]
+        if all(p is not None for p in predicted):
+            acne_ax.plot(x, [100 * p for p in predicted], "-.", linewidth=1, color=colour,
+                         label=label(curve) + " predicted")
         pp_ax.plot(x, [100 * v["peter_panning_rate"] for v in s], "o-", ms=3, color=colour,
                    label=label(curve) + " peter-panning")
         pp_ax.plot(x, [100 * v["light_leak_rate"] for v in s], "x:", ms=4, color=colour,
@@ -53,7 +58,10 @@ def mode_plot(mode, out_dir):
         ax.grid(True, which="both", alpha=0.3)
     acne_ax.set_ylabel("% of pixels outside the boundary band")
     acne_ax.legend(fontsize=7, loc="upper right")
-    fig.suptitle("%s bias: dashed lines = predicted acne threshold" % mode["mode"], fontsize=11)
+    title = "%s bias: dashed lines = predicted acne threshold (w/2) tan θ" % mode["mode"]
+    if mode["mode"] == "constant":
+        title += "; dash-dot = predicted acne rate"
+    fig.suptitle(title, fontsize=11)
     fig.tight_layout()
     for ext in ("svg", "png"):
         fig.savefig(os.path.join(out_dir, "%s.%s" % (mode["mode"], ext)))

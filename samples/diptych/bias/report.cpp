@@ -27,20 +27,23 @@ std::string curveName(const nlohmann::json& c) {
 std::string csvOf(const nlohmann::json& summary) {
   std::string csv =
       "mode,key,resolution,elevation,filter,texel_world,incidence_deg,predicted_threshold,"
-      "acne_crossing_1pct,crossing_over_predicted,max_acne_rate,best_amount,best_misclassified,"
+      "acne_crossing_1pct,crossing_over_predicted,predicted_crossing_1pct,max_acne_rate,best_"
+      "amount,best_misclassified,"
       "best_acne_rate,best_peter_panning_rate,best_light_leak_rate,best_mean_abs_error,"
       "best_producer_ms\n";
   for (const auto& m : summary["modes"])
     for (const auto& c : m["curves"]) {
       const auto& b = c["best"];
       csv += fmt::format(
-          "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", m["mode"].get<std::string>(),
-          m["key"].get<std::string>(), c["resolution"].dump(), c["elevation"].dump(),
-          c["filter"].get<std::string>(), c["texel_world"].dump(), c["incidence_deg"].dump(),
-          c["predicted_threshold"].dump(), c["acne_crossing_1pct"].dump(),
-          c["crossing_over_predicted"].dump(), c["max_acne_rate"].dump(), b["amount"].dump(),
-          b["misclassified"].dump(), b["acne_rate"].dump(), b["peter_panning_rate"].dump(),
-          b["light_leak_rate"].dump(), b["mean_abs_error"].dump(), b["producer_ms"].dump());
+          "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+          m["mode"].get<std::string>(), m["key"].get<std::string>(), c["resolution"].dump(),
+          c["elevation"].dump(), c["filter"].get<std::string>(), c["texel_world"].dump(),
+          c["incidence_deg"].dump(), c["predicted_threshold"].dump(),
+          c["acne_crossing_1pct"].dump(), c["crossing_over_predicted"].dump(),
+          c.value("predicted_crossing_1pct", nlohmann::json()).dump(), c["max_acne_rate"].dump(),
+          b["amount"].dump(), b["misclassified"].dump(), b["acne_rate"].dump(),
+          b["peter_panning_rate"].dump(), b["light_leak_rate"].dump(), b["mean_abs_error"].dump(),
+          b["producer_ms"].dump());
     }
   return csv;
 }
@@ -79,8 +82,10 @@ std::vector<std::string> writeBiasReport(const std::filesystem::path& dir,
       "<h1>Shadow-map bias: {}</h1>\n<p>{}x{} pixels. Every point: the <code>shadow_map</code> "
       "visibility beside the exact <code>rt_shadows</code> visibility on the same G-buffer{}. "
       "Acne = false shadow outside the 2-pixel boundary band, as a share of exactly lit pixels; "
-      "peter-panning = false light outside the band within 16 px of exact light, leak = farther, "
-      "both as shares of exactly shadowed pixels (docs/shadow-bias.md). Best = least "
+      "peter-panning = false light outside the band within 16 px of a contact (an exactly "
+      "shadowed pixel whose exact shadow ray meets its occluder within the contact distance) on "
+      "the same object, leak = other false light, both as shares of exactly shadowed pixels "
+      "(docs/shadow-bias.md). Best = least "
       "misclassified (acne + peter-panning + leak over all pixels outside the band). Files: <a "
       "href=\"summary.json\">summary.json</a>, <a href=\"summary.csv\">summary.csv</a>, each "
       "mode's MODE/results.json and results.csv.</p>\n",
@@ -93,8 +98,9 @@ std::vector<std::string> writeBiasReport(const std::filesystem::path& dir,
   // The best of every mode per configuration: the table the docs quote.
   page +=
       "<h2>Best amount per mode</h2>\n<table id=\"best\"><tr><th>mode</th><th>curve</th>"
-      "<th>texel (world)</th><th>incidence</th><th>predicted threshold</th><th>measured acne "
-      "&lt; 1% from</th><th>ratio</th><th>best amount</th><th>misclassified</th><th>acne</th>"
+      "<th>texel (world)</th><th>incidence</th><th>predicted threshold</th><th>texel model: acne "
+      "&lt; 1% from</th><th>measured acne &lt; 1% from</th><th>ratio</th><th>best "
+      "amount</th><th>misclassified</th><th>acne</th>"
       "<th>peter-panning</th><th>leak</th><th>MAE</th><th>ms</th></tr>\n";
   for (const auto& m : summary["modes"])
     for (const auto& c : m["curves"]) {
@@ -102,9 +108,11 @@ std::vector<std::string> writeBiasReport(const std::filesystem::path& dir,
       const double cross = c["acne_crossing_1pct"].get<double>();
       page += fmt::format(
           "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}°</td><td>{}</td><td>{}</td><td>{}</td>"
-          "<td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+          "<td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
+          "</tr>\n",
           htmlEscape(m["mode"].get<std::string>()), htmlEscape(curveName(c)), num(c["texel_world"]),
           num(c["incidence_deg"], "{:.1f}"), num(c["predicted_threshold"]),
+          num(c.value("predicted_crossing_1pct", nlohmann::json())),
           cross > 0 ? num(cross) : (cross == 0 ? "never acne" : "never below"),
           num(c["crossing_over_predicted"], "{:.2f}"), num(b["amount"]), pct(b["misclassified"]),
           pct(b["acne_rate"]), pct(b["peter_panning_rate"]), pct(b["light_leak_rate"]),
@@ -140,6 +148,15 @@ std::vector<std::string> writeBiasReport(const std::filesystem::path& dir,
           pct(p["signal"]["acne_rate"]), pct(p["signal"]["peter_panning_rate"]),
           pct(p["signal"]["light_leak_rate"]), mode, p["files"]["classes"].get<std::string>());
     }
+    // The contacts that tell peter-panning from leak (the same for every amount of the curve).
+    const auto& first = m["points"][std::size_t(idx.front().get<int>())];
+    if (first["files"].contains("contacts"))
+      page += fmt::format(
+          "<div><div class=\"caption\">{}: contacts (red), {} px of them</div>"
+          "<img class=\"cls\" "
+          "src=\"{}/{}\" alt=\"contacts\"></div>",
+          htmlEscape(curveName(c)), first["signal"].value("contact_pixels", 0LL), mode,
+          first["files"]["contacts"].get<std::string>());
     page += "</div>\n" + std::string(kLegend);
   }
   page +=

@@ -34,9 +34,21 @@ std::pair<double, double> amountRange(const std::string& mode, const BiasStudyOp
   if (mode == "receiver_plane" || mode == "adaptive") return {1e-8, 1e-1};
   const WorldGeometry world = flattenScene(scene);
   const Light& light = scene.lights.at(std::size_t(o.light));
-  if (light.type != LightType::Directional) {  // no closed form before rendering: by scene size
-    const double diagonal = glm::length(world.bounds.hi - world.bounds.lo);
-    return {diagonal * 1e-5, diagonal * 5e-2};
+  if (light.type != LightType::Directional) {
+    // Perspective and cube maps: the texel at the scene's centre (texelScale per unit of axis
+    // depth, times the distance), at a 60 degree incidence; the rendered receivers refine it.
+    double lo = 1e30, hi = 0;
+    const double distance =
+        glm::length(0.5f * (world.bounds.lo + world.bounds.hi) - light.position);
+    for (int res : o.resolutions) {
+      shadowmap::FrustumOptions fo;
+      fo.resolution = res;
+      const double w =
+          shadowmap::fitLightFrusta(scene.lights, world.bounds, fo)[o.light].texelScale * distance;
+      lo = std::min(lo, predictedThreshold("constant", w, 60.0));
+      hi = std::max(hi, predictedThreshold("constant", w, 60.0));
+    }
+    return {lo / 10, hi * 20};
   }
   double lo = 1e30, hi = 0;
   for (int res : o.resolutions)
@@ -54,11 +66,13 @@ std::pair<double, double> amountRange(const std::string& mode, const BiasStudyOp
 
 nlohmann::json curveSummary(const std::string& mode, const std::string& key,
                             const std::vector<nlohmann::json>& points) {
-  std::vector<double> amounts, acne;
+  std::vector<double> amounts, acne, predictedAcne;
   const nlohmann::json* best = nullptr;
   for (const auto& p : points) {
     amounts.push_back(key.empty() ? 0.0 : p["params"][key].get<double>());
     acne.push_back(p["signal"]["acne_rate"].get<double>());
+    if (p["geometry"].contains("predicted_acne_rate"))
+      predictedAcne.push_back(p["geometry"]["predicted_acne_rate"].get<double>());
     if (!best || p["signal"]["misclassified"].get<double>() <
                      (*best)["signal"]["misclassified"].get<double>())
       best = &p;
@@ -67,6 +81,11 @@ nlohmann::json curveSummary(const std::string& mode, const std::string& key,
   const double predicted = predictedThreshold(mode, first["geometry"]["texel_world"].get<double>(),
                                               first["geometry"]["incidence_deg"].get<double>());
   const double cross = key.empty() ? 0.0 : crossing(amounts, acne, 0.01);
+  // Where the per-pixel texel model's acne rate drops below 1% (constant bias): the prediction
+  // for receivers whose texel and incidence vary (point and spot lights, curved receivers).
+  const double predictedCross = !key.empty() && predictedAcne.size() == points.size()
+                                    ? crossing(amounts, predictedAcne, 0.01)
+                                    : 0.0;
   nlohmann::json c = {
       {"resolution", first["params"].value("resolution", 2048)},
       {"elevation", first["params"].value("elevation", nlohmann::json())},
@@ -78,6 +97,10 @@ nlohmann::json curveSummary(const std::string& mode, const std::string& key,
       {"acne_crossing_1pct", cross},
       {"crossing_over_predicted",
        predicted > 0 && cross > 0 ? nlohmann::json(cross / predicted) : nlohmann::json()},
+      {"predicted_crossing_1pct",
+       predictedCross > 0 ? nlohmann::json(predictedCross) : nlohmann::json()},
+      {"crossing_over_predicted_crossing",
+       predictedCross > 0 && cross > 0 ? nlohmann::json(cross / predictedCross) : nlohmann::json()},
       {"max_acne_rate", *std::max_element(acne.begin(), acne.end())},
       {"best",
        {{"amount", key.empty() ? nlohmann::json() : (*best)["params"][key]},
@@ -202,6 +225,7 @@ nlohmann::json runBiasStudy(const BiasStudyOptions& o) {
     s.warmup = o.warmup;
     s.light = o.light;
     s.receiver = o.receiver;
+    s.contact = o.contact;
     s.out = o.out / mode;
     s.label = "shadow-bias";
     if (directional && !o.elevations.empty())

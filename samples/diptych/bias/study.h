@@ -21,6 +21,7 @@ struct BiasStudyOptions {
   int points = 13;  // amounts per mode, log spaced
   int width = 320, height = 240, frames = 1, warmup = 0, light = 0;
   std::string receiver;
+  double contact = -1;  // SweepOptions::contact
   std::filesystem::path out = "shadow-bias";
 };
 

@@ -1,5 +1,7 @@
 #include "samples/diptych/sweep/sweep.h"
 
+#include "samples/diptych/sweep/geometry.h"
+
 #include "samples/diptych/shading_option.h"
 
 #include <fmt/format.h>
@@ -16,11 +18,8 @@
 #include "engine/core/output_file.h"
 #include "engine/gl/context.h"
 #include "engine/metrics/signal_metrics.h"
-#include "engine/rt/surface_point.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
-#include "passes/common/hits_texel.h"
-#include "passes/raster/shadow_map_frusta.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
 #include "samples/diptych/compare/runner.h"
@@ -82,81 +81,6 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// One scene state: its world, the exact signal, the receiver mask and per-pixel geometry.
-struct StateReference {
-  std::unique_ptr<Scene> scene;
-  std::unique_ptr<RenderWorld> world;
-  GraphRun exact;
-  std::string exactSignal;
-  std::vector<std::uint8_t> mask;
-  std::vector<float> footprint;  // world size of a pixel on its receiver (sqrt of its area)
-  std::vector<double> incidence, lightDepth;  // per receiver pixel (degrees; see texelWorld)
-  std::vector<double> receiverFootprints;
-  std::vector<vec3> slopeDirections;  // per receiver pixel: unit direction of steepest light depth
-};
-
-// Geometry of the receiver pixels against the camera and the swept light.
-void measureGeometry(StateReference& s, const FrameSettings& frame, int light) {
-  const CpuImage& gb = s.exact.outputs.at("gbuffer.hits");
-  const int w = gb.desc.width, h = gb.desc.height;
-  s.footprint.assign(std::size_t(w) * h, 0.f);
-  const double pixelAngle = 2.0 * std::tan(frame.camera.verticalFov / 2.0) / h;
-  const Light* l = light < int(s.scene->lights.size()) ? &s.scene->lights[light] : nullptr;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = std::size_t(y) * w + x;
-      if (!s.mask[i]) continue;
-      const auto hit = hitsTexel(gb, x, y);
-      const vec3 eye = frame.camera.position;
-      SurfacePoint p = makeSurfacePoint(*s.scene, s.world->geometry(), *hit, vec3(0.f));
-      const vec3 view = p.position - eye;
-      const double d = glm::length(view);
-      const double cosView = std::abs(glm::dot(glm::normalize(view), p.faceNormal));
-      s.footprint[i] = float(d * pixelAngle / std::sqrt(std::max(cosView, 1e-3)));
-      s.receiverFootprints.push_back(s.footprint[i]);
-      if (!l) continue;
-      const vec3 toLight = l->type == LightType::Directional
-                               ? -glm::normalize(l->direction)
-                               : glm::normalize(l->position - p.position);
-      vec3 n = p.faceNormal;
-      if (glm::dot(n, toLight) < 0) n = -n;  // the light's side, as shadow rays and maps do
-      const vec3 t = n - glm::dot(n, toLight) * toLight;  // n's part across the light ray
-      s.slopeDirections.push_back(glm::length(t) > 1e-6f ? glm::normalize(t) : vec3(0.f));
-      s.incidence.push_back(std::acos(std::clamp(double(glm::dot(n, toLight)), -1.0, 1.0)) /
-                            kDegrees);
-      const vec3 rel = p.position - l->position;
-      s.lightDepth.push_back(
-          l->type == LightType::Spot
-              ? double(glm::dot(rel, glm::normalize(l->direction)))
-              : double(std::max({std::abs(rel.x), std::abs(rel.y), std::abs(rel.z)})));
-    }
-}
-
-// World size w of one shadow-map texel at the receivers (median), for the point's resolution.
-// Orthographic maps: the texel's extent along the receiver's steepest light-depth direction t,
-// |t.u| w_u + |t.v| w_v (texels need not be square in world units: the fit is to the light-space
-// box of the scene), so that (w/2) tan(theta) bounds the depth change over half a texel.
-// Perspective and cube maps: the isotropic footprint at the receivers' light depth.
-double texelWorld(const StateReference& s, int resolution, int light) {
-  if (light >= int(s.scene->lights.size())) return 0;
-  shadowmap::FrustumOptions options;
-  options.resolution = resolution;
-  const auto frusta =
-      shadowmap::fitLightFrusta(s.scene->lights, s.world->geometry().bounds, options);
-  const auto& f = frusta[light];
-  if (f.kind == shadowmap::ViewKind::Unshadowed) return 0;
-  if (f.kind != shadowmap::ViewKind::Ortho) return f.texelScale * median(s.lightDepth);
-  const mat4& m = f.viewProj[0];  // column-major: row r is (m[0][r], m[1][r], m[2][r])
-  const vec3 du(m[0][0], m[1][0], m[2][0]), dv(m[0][1], m[1][1], m[2][1]);
-  const double wu = 2.0 / (resolution * glm::length(du)), wv = 2.0 / (resolution * glm::length(dv));
-  std::vector<double> w;
-  for (const vec3& t : s.slopeDirections)
-    w.push_back(glm::length(t) > 0.f ? std::abs(glm::dot(t, glm::normalize(du))) * wu +
-                                           std::abs(glm::dot(t, glm::normalize(dv))) * wv
-                                     : std::max(wu, wv));
-  return median(w);
-}
-
 std::string csvOf(const nlohmann::json& results) {
   std::vector<std::string> keys, signal;
   for (const auto& a : results["spec"]["axes"]) keys.push_back(a["key"]);
@@ -212,6 +136,8 @@ nlohmann::json runSweep(const SweepOptions& o) {
     throw InputError("--band", std::to_string(o.band), "must be in 0..width + height");
   if (o.reach < 0 || o.reach > o.width + o.height)
     throw InputError("--reach", std::to_string(o.reach), "must be in 0..width + height");
+  if (!std::isfinite(o.contact))
+    throw InputError("--contact", std::to_string(o.contact), "must be a finite world distance");
   const SlotOverride base = parseSlotOverride(o.producer);
   const std::vector<nlohmann::json> points = cartesianProduct(o.axes);
   checkShadingOption(o.shading);
@@ -266,6 +192,7 @@ nlohmann::json runSweep(const SweepOptions& o) {
                          {"light", o.light},
                          {"band_px", o.band},
                          {"reach_px", o.reach},
+                         {"contact_world", o.contact},
                          {"receiver", o.receiver},
                          {"axes", nlohmann::json::array()}};
   for (const SweepAxis& a : o.axes)
@@ -331,7 +258,11 @@ nlohmann::json runSweep(const SweepOptions& o) {
             m = m && std::count(receivers.begin(), receivers.end(), int(gb.u(x, y, 0)) - 1);
           }
       }
-      measureGeometry(*state, frame, o.light);
+      measureGeometry(*state, frame, o.light, o.contact);
+      if (!state->contacts.contact.empty()) {  // the contacts of this state, for the docs/report
+        state->contactFile = fmt::format("classes/contacts-p{:04d}.png", i);
+        writeImage(o.out / state->contactFile, contactImage(*state, width, height));
+      }
       stateKey = statePart.dump();
     }
     const Recipe recipe = pointRecipe(base, passPart);
@@ -347,8 +278,9 @@ nlohmann::json runSweep(const SweepOptions& o) {
     nlohmann::json measured = nlohmann::json::object();
     if (base.slot == "visibility") {
       const int l = std::min(o.light, mine.desc.layers - 1);
-      const ShadowArtifacts a = classifyShadows(layer(mine, l), layer(exact, l), state->mask, width,
-                                                height, state->footprint, o.band, o.reach);
+      const ShadowArtifacts a = classifyShadows(
+          layer(mine, l), layer(exact, l), state->mask, width, height, state->footprint, o.band,
+          o.reach, state->contacts.contact.empty() ? nullptr : &state->contacts);
       measured = {{"acne_rate", a.acneRate()},
                   {"peter_panning_rate", a.peterPanningRate()},
                   {"light_leak_rate", a.lightLeakRate()},
@@ -361,22 +293,33 @@ nlohmann::json runSweep(const SweepOptions& o) {
                   {"light_leak", a.lightLeak},
                   {"boundary_errors", a.boundaryErrors},
                   {"lit_outside", a.litOutside},
-                  {"shadow_outside", a.shadowOutside}};
+                  {"shadow_outside", a.shadowOutside},
+                  {"contact_pixels", a.contacts}};
       const std::string classFile = fmt::format("classes/p{:04d}.png", i);
       writeImage(o.out / classFile, shadowClassImage(a, width, height));
       row["files"] = {{"classes", classFile}};
+      if (!state->contactFile.empty()) row["files"]["contacts"] = state->contactFile;
     } else {
       const SignalError e = compareRadiance(mine.toImage(), exact.toImage(), state->mask);
       measured = {{"pixels", e.pixels}, {"rmse", e.rmse}, {"relative_rmse", e.relativeRmse}};
     }
     row["signal"] = measured;
-    // The receivers' geometry for the analytic predictions (docs/shadow-bias.md).
+    // The receivers' geometry for the analytic predictions (docs/shadow-bias.md §4); the acne
+    // rate is predicted for constant bias (and none, b = 0) only.
     nlohmann::json params = base.params;
     params.update(passPart);
-    row["geometry"] = {
-        {"texel_world", texelWorld(*state, params.value("resolution", 2048), o.light)},
-        {"incidence_deg", median(state->incidence)},
-        {"pixel_world", median(state->receiverFootprints)}};
+    const std::string mode = params.value("bias", std::string());
+    const double bias = mode == "none" ? 0.0
+                        : mode == "constant" && params.contains("constant_bias")
+                            ? params["constant_bias"].get<double>()
+                            : -1.0;
+    const TexelPrediction t = predictTexel(*state, params.value("resolution", 2048), o.light, bias);
+    std::vector<double> footprints = state->receiverFootprints;
+    row["geometry"] = {{"texel_world", t.texelWorld},
+                       {"incidence_deg", t.incidenceDeg},
+                       {"pixel_world", median(std::move(footprints))},
+                       {"contact_world", state->contactDistance}};
+    if (t.acneRate >= 0) row["geometry"]["predicted_acne_rate"] = t.acneRate;
     results["points"].push_back(row);
     writeTextFile(resultsFile, results.dump(1));
     writeTextFile(o.out / "results.csv", csvOf(results));

@@ -21,6 +21,7 @@ struct SweepOptions {
   int width = 320, height = 240, frames = 1, warmup = 0;
   int light = 0;             // the light whose visibility is classified and --vary-light moves
   int band = 2, reach = 16;  // classifyShadows (engine/metrics/signal_metrics.h)
+  double contact = -1;       // contact distance, world (< 0: 1e-3 x the scene's diagonal)
   std::string shading;       // --shading lecture|gltf (empty: each material its own)
   std::string receiver;      // restrict the measurement to this object's pixels (empty: all)
   std::filesystem::path out = "sweep";

@@ -11,6 +11,7 @@
 #include "passes/registry.h"
 #include "samples/diptych/compare/runner.h"
 #include "samples/diptych/compare/variants.h"
+#include "samples/diptych/sweep/geometry.h"
 #include "samples/diptych/view/camera_control.h"
 #include "samples/diptych/view/recipe_json.h"
 
@@ -257,9 +258,15 @@ void Session::measure() {
   auto exact = probe(exactRecipe, world_, frame, {hits, exactSignal});
   const std::string signal = cli::slotSignal(mine, "visibility");
   auto approx = probe(mine, world_, frame, {signal});
-  const ShadowArtifacts a =
-      classifyShadows(cli::layer(approx.at(signal), 0), cli::layer(exact.at(exactSignal), 0),
-                      cli::coverage(exact.at(hits)), frame.width, frame.height);
+  const std::vector<float> exactVisibility = cli::layer(exact.at(exactSignal), 0);
+  double contactDistance = -1;  // the sweep's default (docs/shadow-bias.md §3)
+  const ShadowContacts contacts = world_.scene().lights.empty()
+                                      ? ShadowContacts{}
+                                      : cli::shadowContacts(world_, exact.at(hits), camera_, 0,
+                                                            exactVisibility, contactDistance);
+  const ShadowArtifacts a = classifyShadows(
+      cli::layer(approx.at(signal), 0), exactVisibility, cli::coverage(exact.at(hits)), frame.width,
+      frame.height, {}, 2, 16, contacts.contact.empty() ? nullptr : &contacts);
   figures_.visibility = true;
   figures_.acneRate = a.acneRate();
   figures_.peterPanningRate = a.peterPanningRate();
