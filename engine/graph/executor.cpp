@@ -105,6 +105,7 @@ void GraphExecutor::runFrame() {
       timed.push_back(n);
     }
     Stopwatch clock;
+    const ProcessCpuClock cpuClock;
     auto slotOf = [&](int storage) { return graph_.storages[storage].poolSlot; };
     switch (node.kind) {
       case NodeKind::Pass: {
@@ -132,6 +133,7 @@ void GraphExecutor::runFrame() {
     }
     if (glWork) gl_->endTimer();
     timing.cpuMs.push_back(clock.milliseconds());
+    timing.processCpuMs.push_back(cpuClock.milliseconds());
   }
   if (timed.empty()) return;
   // Reading a result waits only if the frame ended without a readback. A node's GL time lies

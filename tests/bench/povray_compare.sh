@@ -13,6 +13,11 @@
 #    program. Diptych's includes the OSMesa context, scene load and BVH build; POV-Ray's its
 #    parsing and setup. The timed Diptych run above renders 6 frames (1 warm-up + 5), so it
 #    is not used for this; a separate `--frames 1 --warmup 0` run is.
+#  - CPU time of the render phase: Diptych's per frame is (CPU seconds of the 6-frame process -
+#    CPU seconds of the 1-frame process) / 5 (user + sys, /usr/bin/time: load, tessellation and
+#    BVH build cancel out); POV-Ray's is the "CPU-seconds total" it reports for its Trace Time.
+#    On a loaded machine (other builds sharing the cores) wall times stretch with whatever else
+#    runs, CPU seconds much less: this ratio is the one to trust there.
 # Threads: both use every core (TBB's default for Diptych; POV-Ray is given +WT$(nproc),
 # which is also its default).
 # Usage: tests/bench/povray_compare.sh [BUILD_DIR] [RUNS] [OUT_DIR]   (from the repository root)
@@ -40,13 +45,17 @@ diptych_pass=()   # ms, median of 5 frames of the reference node, one value per 
 diptych_proc=()   # ms, whole process rendering one frame
 pov_trace=()      # ms, POV-Ray's reported Trace Time
 pov_proc=()       # ms, whole POV-Ray process
+diptych_cpu=()    # ms of CPU (all threads) per frame of the reference pass
+pov_cpu=()        # ms of CPU (all threads) of POV-Ray's trace
+cpu_of() { awk '{ printf "%d", ($1 + $2) * 1000 }' "$1"; }  # /usr/bin/time -f "%U %S" -> ms
 
 # Interleaved (Diptych, POV-Ray, Diptych, ...) rather than all of one then all of the other, so
 # that a change in the machine's load during the run hits both programs alike.
 for ((r = 1; r <= runs; ++r)); do
   # 1) Render-phase timing: 1 warm-up frame (BVH build, allocations) then 5 measured frames.
   # --out is given only so that the default out.png does not land in the working directory.
-  "$diptych" render samples/scenes/whitted.json --recipe samples/graphs/whitted.json \
+  /usr/bin/time -f "%U %S" -o "$out/cpu6-$r.txt" \
+    "$diptych" render samples/scenes/whitted.json --recipe samples/graphs/whitted.json \
     --size 640x480 --frames 5 --warmup 1 --timings "$out/t-$r.json" \
     --out "$out/ours-timed.png" >"$out/diptych-$r.log"
   diptych_pass+=("$(python3 -c '
@@ -57,10 +66,12 @@ print(next(n["timing"]["cpu_ms"]["median"] for n in nodes if n["name"] == "refer
 
   # 2) Whole-process timing of Diptych: one frame, no warm-up, PNG written (as POV-Ray does).
   t0=$(now_ns)
-  "$diptych" render samples/scenes/whitted.json --recipe samples/graphs/whitted.json \
+  /usr/bin/time -f "%U %S" -o "$out/cpu1-$r.txt" \
+    "$diptych" render samples/scenes/whitted.json --recipe samples/graphs/whitted.json \
     --size 640x480 --frames 1 --warmup 0 --out "$out/ours.png" >"$out/diptych-proc-$r.log"
   t1=$(now_ns)
   diptych_proc+=("$(( (t1 - t0) / 1000000 ))")
+  diptych_cpu+=("$(( ($(cpu_of "$out/cpu6-$r.txt") - $(cpu_of "$out/cpu1-$r.txt")) / 5 ))")
 
   # 3) POV-Ray. -A: antialiasing off, one ray per pixel (3.7 rejects +A0 as an option);
   # -D: no display; -J: no jitter; +Q9: full quality (reflection, refraction, shadows); +FN:
@@ -73,22 +84,29 @@ print(next(n["timing"]["cpu_ms"]["median"] for n in nodes if n["name"] == "refer
   # "  Trace Time:       0 hours  0 minutes  0 seconds (0.558 seconds)" -> 558
   pov_trace+=("$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$out/pov-$r.log" |
     python3 -c 'import sys; print(float(sys.stdin.read()) * 1000)')")
+  # "              using 2 thread(s) with 0.180 CPU-seconds total", the line after Trace Time
+  pov_cpu+=("$(sed -n '/Trace Time:/{n;s/.* with \([0-9.]*\) CPU-seconds.*/\1/p}' "$out/pov-$r.log" |
+    python3 -c 'import sys; print(float(sys.stdin.read()) * 1000)')")
   echo "run $r: diptych pass ${diptych_pass[-1]} ms, process ${diptych_proc[-1]} ms;" \
-    "povray trace ${pov_trace[-1]} ms, process ${pov_proc[-1]} ms" \
+    "povray trace ${pov_trace[-1]} ms, process ${pov_proc[-1]} ms;" \
+    "CPU per frame: diptych ${diptych_cpu[-1]} ms, povray ${pov_cpu[-1]} ms" \
     "(load $(cut -d' ' -f1 /proc/loadavg))"
 done
 
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 
 # Medians and ratios (> 1: Diptych is slower).
-python3 - "${diptych_pass[*]}" "${pov_trace[*]}" "${diptych_proc[*]}" "${pov_proc[*]}" <<'PY'
+python3 - "${diptych_pass[*]}" "${pov_trace[*]}" "${diptych_proc[*]}" "${pov_proc[*]}" \
+  "${diptych_cpu[*]}" "${pov_cpu[*]}" <<'PY'
 import statistics, sys
-dp, pt, dw, pw = ([float(x) for x in a.split()] for a in sys.argv[1:5])
+dp, pt, dw, pw, dc, pc = ([float(x) for x in a.split()] for a in sys.argv[1:7])
 m = statistics.median
 print(f"render phase  : diptych reference {m(dp):8.1f} ms | povray trace   {m(pt):8.1f} ms"
       f" | ratio diptych/povray {m(dp) / m(pt):.2f}")
 print(f"whole process : diptych (1 frame) {m(dw):8.1f} ms | povray process {m(pw):8.1f} ms"
       f" | ratio diptych/povray {m(dw) / m(pw):.2f}")
+print(f"render CPU    : diptych per frame {m(dc):8.1f} ms | povray trace   {m(pc):8.1f} ms"
+      f" | ratio diptych/povray {m(dc) / m(pc):.2f}")
 PY
 
 # How different the pictures are (different shading models: see the header of whitted.pov).

@@ -6,16 +6,23 @@
 //   diptych_rt_bench build SCENE [REPS]     builds the Embree scene REPS times (default 5) with
 //       instancing of repeated meshes off and on; prints the median build time, Embree's peak
 //       allocation during a build (rtcSetDeviceMemoryMonitorFunction) and the geometry's bytes.
+//   diptych_rt_bench bandwidth [MB]         memcpy bandwidth of this machine on MB-megabyte
+//       buffers (default 256: far past the caches), one thread and all threads (TBB, as the
+//       per-pixel passes run); counts bytes read + bytes written, as the passes' figure does.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "engine/rt/rt_scene.h"
 #include "engine/scene/load.h"
@@ -105,6 +112,40 @@ int timeBuild(const std::string& scenePath, int reps) {
   return 0;
 }
 
+// Median of 9 copies of `mb` MB (after one warm-up that faults the pages in), in GB/s of
+// read + written bytes. Chunks of 1 MB spread over TBB's threads when `parallel`.
+double copyBandwidth(std::size_t mb, bool parallel) {
+  const std::size_t bytes = mb << 20, chunk = std::size_t(1) << 20;
+  std::vector<char> src(bytes, 1), dst(bytes, 0);
+  const auto copy = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c)
+      std::memcpy(dst.data() + c * chunk, src.data() + c * chunk, chunk);
+  };
+  std::vector<double> gbs;
+  for (int rep = 0; rep < 10; ++rep) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (parallel)
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, bytes / chunk),
+          [&](const tbb::blocked_range<std::size_t>& r) { copy(r.begin(), r.end()); });
+    else
+      copy(0, bytes / chunk);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (rep > 0) gbs.push_back(2.0 * double(bytes) / s / 1e9);
+  }
+  std::sort(gbs.begin(), gbs.end());
+  return gbs[gbs.size() / 2];
+}
+
+int timeBandwidth(std::size_t mb) {
+  const double one = copyBandwidth(mb, false), all = copyBandwidth(mb, true);
+  std::printf(
+      "memcpy %zu MB (read + write bytes, median of 9): 1 thread %.2f GB/s, all threads "
+      "%.2f GB/s\n",
+      mb, one, all);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -113,7 +154,10 @@ int main(int argc, char** argv) {
     if (mode == "obj" && argc == 4) return writeObj(argv[2], argv[3]);
     if (mode == "build" && (argc == 3 || argc == 4))
       return timeBuild(argv[2], argc == 4 ? std::max(1, std::atoi(argv[3])) : 5);
-    std::fprintf(stderr, "usage: %s obj SCENE OUT.obj | build SCENE [REPS]\n", argv[0]);
+    if (mode == "bandwidth" && argc <= 3)
+      return timeBandwidth(argc == 3 ? std::size_t(std::max(1, std::atoi(argv[2]))) : 256);
+    std::fprintf(stderr, "usage: %s obj SCENE OUT.obj | build SCENE [REPS] | bandwidth [MB]\n",
+                 argv[0]);
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "diptych_rt_bench: %s\n", e.what());
