@@ -1,7 +1,6 @@
 #pragma once
 // Wall-clock timing and the summary statistics every reported figure uses.
 #include <chrono>
-#include <ctime>
 #include <vector>
 
 namespace diptych {
@@ -17,23 +16,6 @@ class Stopwatch {
  private:
   using Clock = std::chrono::steady_clock;
   Clock::time_point start_;
-};
-
-// CPU time of every thread of the process (CLOCK_PROCESS_CPUTIME_ID) since construction. The
-// executor runs one node at a time, so over a CPU node this is the node's work on all cores;
-// unlike wall time it hardly grows when other processes load the machine (docs/benchmarks.md).
-class ProcessCpuClock {
- public:
-  ProcessCpuClock() : start_(now()) {}
-  double milliseconds() const { return now() - start_; }
-
- private:
-  static double now() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-  }
-  double start_;
 };
 
 struct TimingStats {

@@ -14,7 +14,6 @@ namespace diptych {
 
 struct NodeTiming {
   std::vector<double> cpuMs;               // wall time on the CPU, one sample per frame
-  std::vector<double> processCpuMs;        // CPU time of all the process's threads, per frame
   std::vector<double> gpuMs;               // GL nodes and transfers only
   std::map<std::string, double> counters;  // last frame's counters (e.g. rays)
 };

@@ -12,11 +12,6 @@ nlohmann::json timingJson(const NodeTiming& t) {
   const TimingStats cpu = summarize(t.cpuMs);
   j["cpu_ms"] = {
       {"median", cpu.median}, {"min", cpu.min}, {"max", cpu.max}, {"samples", cpu.samples}};
-  if (!t.processCpuMs.empty()) {  // all threads' CPU time (ProcessCpuClock)
-    const TimingStats p = summarize(t.processCpuMs);
-    j["process_cpu_ms"] = {
-        {"median", p.median}, {"min", p.min}, {"max", p.max}, {"samples", p.samples}};
-  }
   if (!t.gpuMs.empty()) {
     const TimingStats gpu = summarize(t.gpuMs);
     j["gpu_ms"] = {

@@ -10,7 +10,10 @@
 #    --timings export: passes[].reads/writes, resources[].bytes); a default fill writes its one
 #    image. Scene data (meshes, materials, the BVH) is not counted: for these scenes it is a few
 #    kB to MB that stay in cache, and counting it would only raise the nodes' figures;
-#  - time: the node's median cpu_ms over 5 frames after 1 warm-up;
+#  - time: the node's median cpu_ms (wall) over 5 frames after 1 warm-up, and, because other
+#    processes stretch wall time on a loaded machine, also its process_cpu_ms counter (CPU time
+#    of all threads over the node, last frame) divided by nproc: the wall time it would take
+#    with the cores to itself;
 #  - slowdown = bandwidth / (bytes / time): 1 is a node that runs at memcpy's speed; the goal
 #    is <= 2. A node far above it is bound by its arithmetic (or its rays), not by memory.
 # Usage: tests/bench/cpu_bandwidth.sh [BUILD_DIR] [SCENE] [RECIPE] [SIZE] [OUT_DIR]
@@ -49,8 +52,11 @@ size = {r["name"]: r["bytes"] for r in t["resources"]}
 passes = {p["name"]: p for p in t["passes"]}
 print(f"\nbandwidth: {bandwidth:.2f} GB/s (memcpy, all threads; before/after "
       f"{gbs[0]:.2f}/{gbs[1]:.2f})")
-print("\n| node | kind | bytes touched (MB) | median ms | GB/s | slowdown vs memcpy |")
-print("|---|---|---:|---:|---:|---:|")
+import os
+cores = os.cpu_count()
+print("\n| node | kind | bytes touched (MB) | median ms | GB/s | slowdown vs memcpy |"
+      f" CPU ms / {cores} | GB/s (CPU) | slowdown (CPU) |")
+print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
 for n in t["schedule"]:
     if n.get("domain") != "cpu" or n["kind"] not in ("pass", "default"):
         continue
@@ -60,7 +66,9 @@ for n in t["schedule"]:
     else:  # "default:RESOURCE": a fill of one image
         touched = size.get(n["name"].split(":", 1)[1], 0)
     ms = n["timing"]["cpu_ms"]["median"]
+    cpu = n["timing"].get("counters", {}).get("process_cpu_ms", float("nan")) / cores
     rate = touched / (ms * 1e-3) / 1e9 if ms > 0 else float("inf")
+    rate_cpu = touched / (cpu * 1e-3) / 1e9 if cpu > 0 else float("inf")
     print(f"| {n['name']} | {n['kind']} | {touched / 1e6:.1f} | {ms:.2f} | {rate:.2f} | "
-          f"{bandwidth / rate:.1f}x |")
+          f"{bandwidth / rate:.1f}x | {cpu:.2f} | {rate_cpu:.2f} | {bandwidth / rate_cpu:.1f}x |")
 PY

@@ -13,9 +13,9 @@
 #    program. Diptych's includes the OSMesa context, scene load and BVH build; POV-Ray's its
 #    parsing and setup. The timed Diptych run above renders 6 frames (1 warm-up + 5), so it
 #    is not used for this; a separate `--frames 1 --warmup 0` run is.
-#  - CPU time of the render phase: Diptych's per frame is (CPU seconds of the 6-frame process -
-#    CPU seconds of the 1-frame process) / 5 (user + sys, /usr/bin/time: load, tessellation and
-#    BVH build cancel out); POV-Ray's is the "CPU-seconds total" it reports for its Trace Time.
+#  - CPU time of the render phase: Diptych's is the `reference` node's process_cpu_ms counter
+#    (CPU time of all the process's threads over the node, last timed frame); POV-Ray's is the
+#    "CPU-seconds total" it reports for its Trace Time.
 #    On a loaded machine (other builds sharing the cores) wall times stretch with whatever else
 #    runs, CPU seconds much less: this ratio is the one to trust there.
 # Threads: both use every core (TBB's default for Diptych; POV-Ray is given +WT$(nproc),
@@ -47,15 +47,13 @@ pov_trace=()      # ms, POV-Ray's reported Trace Time
 pov_proc=()       # ms, whole POV-Ray process
 diptych_cpu=()    # ms of CPU (all threads) per frame of the reference pass
 pov_cpu=()        # ms of CPU (all threads) of POV-Ray's trace
-cpu_of() { awk '{ printf "%d", ($1 + $2) * 1000 }' "$1"; }  # /usr/bin/time -f "%U %S" -> ms
 
 # Interleaved (Diptych, POV-Ray, Diptych, ...) rather than all of one then all of the other, so
 # that a change in the machine's load during the run hits both programs alike.
 for ((r = 1; r <= runs; ++r)); do
   # 1) Render-phase timing: 1 warm-up frame (BVH build, allocations) then 5 measured frames.
   # --out is given only so that the default out.png does not land in the working directory.
-  /usr/bin/time -f "%U %S" -o "$out/cpu6-$r.txt" \
-    "$diptych" render samples/scenes/whitted.json --recipe samples/graphs/whitted.json \
+  "$diptych" render samples/scenes/whitted.json --recipe samples/graphs/whitted.json \
     --size 640x480 --frames 5 --warmup 1 --timings "$out/t-$r.json" \
     --out "$out/ours-timed.png" >"$out/diptych-$r.log"
   diptych_pass+=("$(python3 -c '
@@ -63,15 +61,18 @@ import json, sys
 nodes = json.load(open(sys.argv[1]))["schedule"]
 print(next(n["timing"]["cpu_ms"]["median"] for n in nodes if n["name"] == "reference"))
 ' "$out/t-$r.json")")
+  diptych_cpu+=("$(python3 -c '
+import json, sys
+nodes = json.load(open(sys.argv[1]))["schedule"]
+print(next(n["timing"]["counters"]["process_cpu_ms"] for n in nodes if n["name"] == "reference"))
+' "$out/t-$r.json")")
 
   # 2) Whole-process timing of Diptych: one frame, no warm-up, PNG written (as POV-Ray does).
   t0=$(now_ns)
-  /usr/bin/time -f "%U %S" -o "$out/cpu1-$r.txt" \
-    "$diptych" render samples/scenes/whitted.json --recipe samples/graphs/whitted.json \
+  "$diptych" render samples/scenes/whitted.json --recipe samples/graphs/whitted.json \
     --size 640x480 --frames 1 --warmup 0 --out "$out/ours.png" >"$out/diptych-proc-$r.log"
   t1=$(now_ns)
   diptych_proc+=("$(( (t1 - t0) / 1000000 ))")
-  diptych_cpu+=("$(( ($(cpu_of "$out/cpu6-$r.txt") - $(cpu_of "$out/cpu1-$r.txt")) / 5 ))")
 
   # 3) POV-Ray. -A: antialiasing off, one ray per pixel (3.7 rejects +A0 as an option);
   # -D: no display; -J: no jitter; +Q9: full quality (reflection, refraction, shadows); +FN:
