@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <exception>
 #include <fstream>
 #include <numbers>
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include <tbb/blocked_range.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
 #include "engine/rt/rt_scene.h"
@@ -112,17 +114,31 @@ int timeBuild(const std::string& scenePath, int reps) {
   return 0;
 }
 
+double processCpuSeconds() {  // all threads of the process (CLOCK_PROCESS_CPUTIME_ID)
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
+}
+
+struct Bandwidth {
+  double wall = 0, cpu = 0;  // GB/s of read + written bytes; cpu: per CPU-second x threads
+};
+
 // Median of 9 copies of `mb` MB (after one warm-up that faults the pages in), in GB/s of
-// read + written bytes. Chunks of 1 MB spread over TBB's threads when `parallel`.
-double copyBandwidth(std::size_t mb, bool parallel) {
+// read + written bytes. Chunks of 1 MB spread over TBB's threads when `parallel`. The CPU
+// figure divides by (process CPU time / threads), the wall time the copy would take with the
+// cores to itself: on a loaded machine the wall figure measures the load, not the memory.
+Bandwidth copyBandwidth(std::size_t mb, bool parallel) {
   const std::size_t bytes = mb << 20, chunk = std::size_t(1) << 20;
+  const double threads = parallel ? double(tbb::info::default_concurrency()) : 1.0;
   std::vector<char> src(bytes, 1), dst(bytes, 0);
   const auto copy = [&](std::size_t begin, std::size_t end) {
     for (std::size_t c = begin; c < end; ++c)
       std::memcpy(dst.data() + c * chunk, src.data() + c * chunk, chunk);
   };
-  std::vector<double> gbs;
+  std::vector<double> wall, cpu;
   for (int rep = 0; rep < 10; ++rep) {
+    const double c0 = processCpuSeconds();
     const auto t0 = std::chrono::steady_clock::now();
     if (parallel)
       tbb::parallel_for(
@@ -131,18 +147,22 @@ double copyBandwidth(std::size_t mb, bool parallel) {
     else
       copy(0, bytes / chunk);
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (rep > 0) gbs.push_back(2.0 * double(bytes) / s / 1e9);
+    const double c = processCpuSeconds() - c0;
+    if (rep == 0) continue;
+    wall.push_back(2.0 * double(bytes) / s / 1e9);
+    cpu.push_back(2.0 * double(bytes) / (c / threads) / 1e9);
   }
-  std::sort(gbs.begin(), gbs.end());
-  return gbs[gbs.size() / 2];
+  std::sort(wall.begin(), wall.end());
+  std::sort(cpu.begin(), cpu.end());
+  return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
 }
 
 int timeBandwidth(std::size_t mb) {
-  const double one = copyBandwidth(mb, false), all = copyBandwidth(mb, true);
+  const Bandwidth one = copyBandwidth(mb, false), all = copyBandwidth(mb, true);
   std::printf(
       "memcpy %zu MB (read + write bytes, median of 9): 1 thread %.2f GB/s, all threads "
-      "%.2f GB/s\n",
-      mb, one, all);
+      "%.2f GB/s; per CPU time: 1 thread %.2f GB/s, all threads %.2f GB/s\n",
+      mb, one.wall, all.wall, one.cpu, all.cpu);
   return 0;
 }
 
