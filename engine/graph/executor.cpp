@@ -1,6 +1,7 @@
 #include "engine/graph/executor.h"
 
 #include <algorithm>
+#include <ctime>
 #include <optional>
 
 #include "engine/core/error.h"
@@ -10,6 +11,18 @@
 #include "engine/graph/render_world.h"
 
 namespace diptych {
+namespace {
+
+// CPU time of every thread of the process (CLOCK_PROCESS_CPUTIME_ID), in ms. Nodes run one at
+// a time, so over a CPU node the difference is that node's work on all cores; unlike its wall
+// time it hardly grows when other processes load the machine (docs/benchmarks.md, Method).
+double processCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+}  // namespace
 
 // The PassContext of one pass node: resolves handles to pooled storage and refuses any
 // resource the pass did not declare in setup.
@@ -105,6 +118,7 @@ void GraphExecutor::runFrame() {
       timed.push_back(n);
     }
     Stopwatch clock;
+    const double cpuStart = processCpuMs();
     auto slotOf = [&](int storage) { return graph_.storages[storage].poolSlot; };
     switch (node.kind) {
       case NodeKind::Pass: {
@@ -132,6 +146,8 @@ void GraphExecutor::runFrame() {
     }
     if (glWork) gl_->endTimer();
     timing.cpuMs.push_back(clock.milliseconds());
+    // A counter, so the last frame's value (counters are per frame): "process_cpu_ms".
+    timing.counters["process_cpu_ms"] = processCpuMs() - cpuStart;
   }
   if (timed.empty()) return;
   // Reading a result waits only if the frame ended without a readback. A node's GL time lies

@@ -55,8 +55,10 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
         intersectAnalyticPart(a, part, r.origin, r.direction, r.tnear, r.tfar, data.sdfStats.get());
     if (!hit) continue;
     // SDF hits carry their object-space point: x, y as (u, v), z's bits as the primitive id
-    // (SurfaceHit's encoding, engine/rt/surface_point.h).
-    const vec3 normal = a.sdf ? sdfNormal(a, hit->point) : analyticNormal(a, part, hit->uv);
+    // (SurfaceHit's encoding, engine/rt/surface_point.h). A quadric's Ng is left at 0 here:
+    // RtScene::intersect computes it from (u, v) for the closest hit only, when asked (the
+    // tracers rebuild the normal themselves), instead of two sincos per candidate hit.
+    const vec3 normal = a.sdf ? sdfNormal(a, hit->point) : vec3(0.f);
     const unsigned primitive = a.sdf ? std::bit_cast<unsigned>(float(hit->point.z)) : args->primID;
     RTCRayN_tfar(rays, n, i) = float(hit->t);
     RTCHitN_Ng_x(hits, n, i) = normal.x;

@@ -180,7 +180,7 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
   Ray ray = cameraRay;
   for (int depth = 1;; ++depth) {
     ++out.rays;
-    const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
+    const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), false);
     if (!hit) {
       out.radiance += throughput * sampleEnvironment(scene_.environment, ray.direction);
       break;

@@ -169,7 +169,8 @@ RtScene::~RtScene() {
   for (RTCScene proto : prototypes_) rtcReleaseScene(proto);
 }
 
-std::optional<Hit> RtScene::intersect(const Ray& ray, float tnear, float tfar) const {
+std::optional<Hit> RtScene::intersect(const Ray& ray, float tnear, float tfar,
+                                      bool wantNormal) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
@@ -190,7 +191,11 @@ std::optional<Hit> RtScene::intersect(const Ray& ray, float tnear, float tfar) c
   hit.t = rh.ray.tfar;
   hit.Ng = vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
   if (instanced) hit.Ng = geometry_[id].normalToWorld * hit.Ng;
-  hit.analytic = geometry_[id].analytic != nullptr;
+  const AnalyticInstance* analytic = geometry_[id].analytic;
+  hit.analytic = analytic != nullptr;
+  // The intersect callback leaves a quadric's Ng to here (analytic_geometry.cpp).
+  if (wantNormal && analytic && !analytic->sdf)
+    hit.Ng = analyticNormal(*analytic, int(hit.primitive), vec2(hit.u, hit.v));
   return hit;
 }
 

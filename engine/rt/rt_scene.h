@@ -79,8 +79,11 @@ class RtScene {
   RtScene(const RtScene&) = delete;
   RtScene& operator=(const RtScene&) = delete;
 
-  // Closest hit of ray.origin + t * ray.direction for t in [tnear, tfar].
-  std::optional<Hit> intersect(const Ray& ray, float tnear, float tfar) const;
+  // Closest hit of ray.origin + t * ray.direction for t in [tnear, tfar]. wantNormal false:
+  // Hit::Ng of an analytic quadric is left 0 (callers that rebuild the surface point from
+  // (u, v), as makeSurfacePoint does, skip its two sincos).
+  std::optional<Hit> intersect(const Ray& ray, float tnear, float tfar,
+                               bool wantNormal = true) const;
   // Any hit in [tnear, tfar].
   bool occluded(const vec3& origin, const vec3& direction, float tnear, float tfar) const;
 

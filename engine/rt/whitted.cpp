@@ -20,7 +20,8 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed,
                              const RayCone* cone) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
   rays_.add(1);
-  const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
+  // Hit::Ng only for an observer: the shading rebuilds the normal (makeSurfacePoint).
+  const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), bool(observer_));
   if (observer_) observer_({ray, depth, hit});
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
   SurfacePoint p = makeSurfacePoint(scene_, world_,

@@ -20,14 +20,18 @@ inline std::optional<SurfaceHit> hitsTexel(const CpuImage& hits, int x, int y) {
 // (quadric or SDF) is moved onto the exact surface along the pixel-centre ray the G-buffer traced
 // (liftToAnalytic), so rt_shadows, rt_reflection, rt_transmission and the CPU shade pass shade the
 // point the Whitted reference finds; raster producers keep reading hitsTexel (the triangles).
+// `pinhole`: the camera frame at the hits image's size, built once per image by per-pixel loops
+// (primaryRay would rebuild it for every lifted texel; the ray is the same bit for bit).
+inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeometry& world,
+                                            const PinholeFrame& pinhole, int x, int y) {
+  auto hit = hitsTexel(hits, x, y);
+  if (hit && world.meshes.at(std::size_t(hit->instance)).analytic)
+    hit = liftToAnalytic(world, *hit, pinhole.ray(x + 0.5f, y + 0.5f));
+  return hit;
+}
 inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeometry& world,
                                             const Camera& camera, int x, int y) {
-  auto hit = hitsTexel(hits, x, y);
-  if (hit && world.meshes.at(std::size_t(hit->instance)).analytic) {
-    const int w = hits.desc.width, h = hits.desc.height;
-    hit = liftToAnalytic(world, *hit, primaryRay(camera, w, h, x + 0.5f, y + 0.5f));
-  }
-  return hit;
+  return exactTexel(hits, world, PinholeFrame(camera, hits.desc.width, hits.desc.height), x, y);
 }
 
 }  // namespace diptych

@@ -65,10 +65,13 @@ void ShadePass::execute(PassContext& c) {
     return s ? vec3(s->f(x, y, 0), s->f(x, y, 1), s->f(x, y, 2)) : vec3(0.f);
   };
 
+  // The camera frame once per image (PinholeFrame::ray == primaryRay bit for bit).
+  const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
+  const PinholeFrame hitsPinhole(frame.camera, hits.desc.width, hits.desc.height);
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
-      const Ray eye = primaryRay(frame.camera, frame.width, frame.height, x + 0.5f, y + 0.5f);
-      const auto hit = exactTexel(hits, world.geometry(), frame.camera, x, y);
+      const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
+      const auto hit = exactTexel(hits, world.geometry(), hitsPinhole, x, y);
       vec3 radiance;
       if (!hit) {
         radiance = sampleEnvironment(scene.environment, eye.direction);

@@ -59,15 +59,17 @@ void RtDistributedPass::execute(PassContext& c) {
       // The same pixel pattern and seeds as rt_whitted, so that the two differ only by the lens.
       const std::uint32_t pixelSeed = pcgHash(pixel);
       const std::uint32_t lensSeed = pcgHash(pixel ^ 0x4c454e53u);  // "LENS"
-      shuffle(lensStratum, lensSeed);
+      // A pinhole (rt_whitted) never reads the lens sample: skip its shuffle and strata.
+      const bool lens = camera.aperture > 0.f;
+      if (lens) shuffle(lensStratum, lensSeed);
       vec3 sum(0.f);
       for (int s = 0; s < spp_; ++s) {
         const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pixelSeed);
-        const vec2 lens = stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed);
         const float px = float(x) + offset.x, py = float(y) + offset.y;
-        const Ray ray = camera.aperture > 0.f
-                            ? thinLensRay(camera, frame.width, frame.height, px, py, lens)
-                            : pinhole.ray(px, py);  // == thinLensRay with no aperture
+        const Ray ray =
+            lens ? thinLensRay(camera, frame.width, frame.height, px, py,
+                               stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed))
+                 : pinhole.ray(px, py);  // == thinLensRay with no aperture
         sum +=
             tracer.radiance(ray, 1, spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s)));
       }

@@ -38,6 +38,7 @@ void RtSecondaryPass::execute(PassContext& c) {
   const bool reflection = kind_ == Kind::Reflection;
 
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
+  const PinholeFrame hitsPinhole(frame.camera, hits.desc.width, hits.desc.height);
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
@@ -48,7 +49,7 @@ void RtSecondaryPass::execute(PassContext& c) {
                       scene.meshes[scene.instances.at(std::size_t(texel->instance)).mesh].material)
                 : nullptr;
       if (m && (reflection ? m->kps > 0.f : m->kt > 0.f)) {
-        if (const auto hit = exactTexel(hits, world.geometry(), frame.camera, x, y)) {
+        if (const auto hit = exactTexel(hits, world.geometry(), hitsPinhole, x, y)) {
           const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
           const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
           const std::uint32_t seed = std::uint32_t(y * frame.width + x);

@@ -36,10 +36,11 @@ void RtShadowsPass::execute(PassContext& c) {
   const std::size_t n = std::size_t(rowCount[h]);
   std::vector<std::uint32_t> pixelOf(n);  // pixel index: also the area-light sample seed
   std::vector<ShadowReceiver> receivers(n);
+  const PinholeFrame pinhole(c.frame().camera, w, h);
   tbb::parallel_for(0, h, [&](int y) {
     std::size_t i = std::size_t(rowCount[y]);
     for (int x = 0; x < w; ++x) {
-      const auto hit = exactTexel(hits, world.geometry(), c.frame().camera, x, y);
+      const auto hit = exactTexel(hits, world.geometry(), pinhole, x, y);
       if (!hit) continue;
       receivers[i] = shadowReceiver(world.geometry(), *hit);
       pixelOf[i++] = std::uint32_t(y * w + x);

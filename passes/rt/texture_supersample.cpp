@@ -29,10 +29,13 @@ void TextureSupersamplePass::execute(PassContext& c) {
   const int n = samples_;
   // Fetched once, outside the loop (the first call builds the BVH).
   const RtScene& rt = world.rtScene();
+  // The camera frames once per image (PinholeFrame::ray == primaryRay bit for bit).
+  const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
+  const PinholeFrame hitsPinhole(frame.camera, hits.desc.width, hits.desc.height);
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       vec4 albedo(-1.f);
-      if (exactTexel(hits, world.geometry(), frame.camera, x, y)) {
+      if (exactTexel(hits, world.geometry(), hitsPinhole, x, y)) {
         vec4 sum(0.f);
         int count = 0;
         for (int j = 0; j < n; ++j) {
@@ -40,8 +43,8 @@ void TextureSupersamplePass::execute(PassContext& c) {
             // Stratum centres: deterministic, so N = 1 is exactly the pixel centre.
             const float sx = float(x) + (float(i) + 0.5f) / float(n);
             const float sy = float(y) + (float(j) + 0.5f) / float(n);
-            const Ray ray = primaryRay(frame.camera, frame.width, frame.height, sx, sy);
-            const auto hit = rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
+            const Ray ray = pinhole.ray(sx, sy);
+            const auto hit = rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), false);
             if (!hit) continue;
             const SurfacePoint p = makeSurfacePoint(
                 scene, world.geometry(),

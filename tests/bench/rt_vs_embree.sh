@@ -15,6 +15,11 @@
 #    instanced) against `buildbench` on the same triangles (OBJ), CREATE_STATIC_STATIC (medium
 #    quality, static scene: what Diptych builds), and Embree's peak allocation.
 # Runs are interleaved (Diptych, tutorials, POV-Ray, Diptych, ...) so a change of load hits all.
+# Two rates per program: rays per wall-clock second (what each prints), and rays per CPU-second
+# of all its threads, which hardly moves when other processes load the machine: Diptych's node
+# process_cpu_ms counter (--timings: CPU time of all threads over the node, last frame), a tutorial's rays (its Mrays/s over its fps, times the 18 frames
+# of --benchmark 2 16, or 10 of 2 8) over its process user + sys seconds (/usr/bin/time; OBJ
+# loading and BVH build included, which only lowers the tutorial's figure, by < 5% here).
 # Usage (from the repository root, after building diptych_cli and diptych_rt_bench):
 #   tests/bench/rt_vs_embree.sh [BUILD_DIR] [RUNS] [OUT_DIR]
 set -euo pipefail
@@ -58,10 +63,13 @@ for ((r = 1; r <= runs; ++r)); do
   render distributed whitted distributed
   render path whitted path
   render cornell cornell hybrid
-  triangle_geometry --size "${size[@]}" --benchmark 2 16 >"$out/tg-$r.log" 2>&1
-  pathtracer -i "$out/whitted.obj" "${whitted_view[@]}" --size "${size[@]}" \
+  /usr/bin/time -f "%U %S" -o "$out/tg-$r.cpu" \
+    triangle_geometry --size "${size[@]}" --benchmark 2 16 >"$out/tg-$r.log" 2>&1
+  /usr/bin/time -f "%U %S" -o "$out/pt1-$r.cpu" \
+    pathtracer -i "$out/whitted.obj" "${whitted_view[@]}" --size "${size[@]}" \
     --max-path-length 1 --benchmark 2 8 >"$out/pt1-$r.log" 2>&1
-  pathtracer -i "$out/whitted.obj" "${whitted_view[@]}" --size "${size[@]}" \
+  /usr/bin/time -f "%U %S" -o "$out/pt5-$r.cpu" \
+    pathtracer -i "$out/whitted.obj" "${whitted_view[@]}" --size "${size[@]}" \
     --max-path-length 5 --benchmark 2 8 >"$out/pt5-$r.log" 2>&1
   povray -D +W"${size[0]}" +H"${size[1]}" -A -J +Q9 +FN +WT"$(nproc)" +O"$out/pov.png" \
     tests/bench/whitted.pov >"$out/pov-$r.log" 2>&1
@@ -80,21 +88,41 @@ out, runs = sys.argv[1], int(sys.argv[2])
 R = range(1, runs + 1)
 med = statistics.median
 
-def node(name, node_name, r):  # (ms, rays) of a node in run r
+def node(name, node_name, r, cpu=False):  # (ms, rays) of a node in run r
     for n in json.load(open(f"{out}/{name}-{r}.json"))["schedule"]:
         if n["name"] == node_name:
-            t = n["timing"]
-            return t["cpu_ms"]["median"], t.get("counters", {}).get("rays", 0.0)
+            t, counters = n["timing"], n["timing"].get("counters", {})
+            ms = counters["process_cpu_ms"] if cpu else t["cpu_ms"]["median"]
+            return ms, counters.get("rays", 0.0)
     raise SystemExit(f"{name}-{r}.json has no node {node_name}")
 
 def mrays(name, node_name, r):
     ms, rays = node(name, node_name, r)
     return rays / ms / 1e3
 
+def mrays_cpu(name, node_name, r):  # Mrays per CPU-second of all threads
+    ms, rays = node(name, node_name, r, cpu=True)
+    return rays / ms / 1e3
+
 def tutorial(prefix, r):
     m = re.search(r"^BENCHMARK_RENDER_MRAYPS_AVG ([0-9.e+-]+)",
                   open(f"{out}/{prefix}-{r}.log").read(), re.M)
     return float(m.group(1)) if m else float("nan")
+
+def tutorial_cpu(prefix, r):  # Mrays per CPU-second (user + sys of the whole process)
+    log = open(f"{out}/{prefix}-{r}.log").read()
+    rate = re.search(r"^BENCHMARK_RENDER_MRAYPS_AVG ([0-9.e+-]+)", log, re.M)
+    fps = re.search(r"^BENCHMARK_RENDER_AVG ([0-9.e+-]+)", log, re.M)
+    if not (rate and fps):
+        return float("nan")
+    frames = 18 if prefix == "tg" else 10  # --benchmark 2 16 / 2 8: skipped + measured
+    mrays = float(rate.group(1)) / float(fps.group(1)) * frames
+    cpu = sum(float(x) for x in open(f"{out}/{prefix}-{r}.cpu").read().split()[:2])
+    return mrays / cpu
+
+def pov_cpu_ms(r):  # "using 2 thread(s) with 0.180 CPU-seconds total" after Trace Time
+    m = re.search(r"Trace Time:.*\n.*with ([0-9.]+) CPU-seconds", open(f"{out}/pov-{r}.log").read())
+    return float(m.group(1)) * 1e3 if m else float("nan")
 
 def pov_ms(r):
     m = re.search(r"Trace Time:.*\(([0-9.]+) seconds\)", open(f"{out}/pov-{r}.log").read())
@@ -115,8 +143,10 @@ rows = [("rt_shadows", "whitted", "hybrid", "shadows", "coherent"),
         ("rt_distributed (4 spp)", "whitted", "distributed", "distributed", "incoherent"),
         ("rt_path (4 spp)", "whitted", "path", "path", "incoherent")]
 print(f"\nMedian over {runs} runs (range); ratio = Diptych / peer of the same run, then median.")
-print("\n| pass | scene | Diptych Mrays/s | peer | peer Mrays/s | ratio |")
-print("|---|---|---:|---|---:|---:|")
+print("Per wall-clock second, and per CPU-second of all threads (load-robust).")
+print("\n| pass | scene | Diptych Mrays/s | peer | peer Mrays/s | ratio | Diptych Mrays/CPU-s |"
+      " peer Mrays/CPU-s | ratio (CPU) |")
+print("|---|---|---:|---|---:|---:|---:|---:|---:|")
 for pass_name, scene, run_name, node_name, kind in rows:
     d = [mrays(run_name, node_name, r) for r in R]
     names = (["triangle_geometry", "pathtracer depth 1"] if kind == "coherent"
@@ -124,13 +154,22 @@ for pass_name, scene, run_name, node_name, kind in rows:
     for peer in names:
         p = [tutorial(peers[peer], r) for r in R]
         ratio = [d[i] / p[i] for i in range(runs)]
-        print(f"| {pass_name} | {scene} | {fmt(d)} | {peer} | {fmt(p)} | {fmt(ratio)}x |")
+        dc = [mrays_cpu(run_name, node_name, r) for r in R]
+        pc = [tutorial_cpu(peers[peer], r) for r in R]
+        rc = [dc[i] / pc[i] for i in range(runs)]
+        print(f"| {pass_name} | {scene} | {fmt(d)} | {peer} | {fmt(p)} | {fmt(ratio)}x |"
+              f" {fmt(dc)} | {fmt(pc)} | {fmt(rc)}x |")
 
 ref = [node("whitted", "reference", r)[0] for r in R]
 pov = [pov_ms(r) for r in R]
 ratio = [ref[i] / pov[i] for i in range(runs)]
 print(f"\nWhitted reference vs POV-Ray 3.7, 640x480, depth 5, no AA: diptych reference "
       f"{fmt(ref)} ms, povray Trace Time {fmt(pov)} ms, ratio diptych/povray {fmt(ratio)}")
+ref_cpu = [node("whitted", "reference", r, cpu=True)[0] for r in R]
+pov_cpu = [pov_cpu_ms(r) for r in R]
+ratio_cpu = [ref_cpu[i] / pov_cpu[i] for i in range(runs)]
+print(f"  in CPU time of all threads: diptych {fmt(ref_cpu)} ms, povray {fmt(pov_cpu)} ms, "
+      f"ratio diptych/povray {fmt(ratio_cpu)}")
 PY
 
 echo

@@ -229,6 +229,15 @@ TEST(AnalyticQuadrics, EmbreeUserGeometryWithNonUniformMirroredTransform) {
   EXPECT_GT(glm::dot(glm::dvec3(p.faceNormal), gradient), 1.0 - 1e-5);
   EXPECT_TRUE(p.frontFacing);
   EXPECT_GT(glm::dot(glm::normalize(hit->Ng), p.faceNormal), 1.f - 1e-5f);
+  // Without the normal (the tracers' call): the same hit bit for bit, Ng left 0.
+  const auto bare = rt.intersect({vec3(o), d}, 0.f, 1e30f, /*wantNormal=*/false);
+  ASSERT_TRUE(bare);
+  EXPECT_EQ(bare->instance, hit->instance);
+  EXPECT_EQ(bare->primitive, hit->primitive);
+  EXPECT_EQ(bare->u, hit->u);
+  EXPECT_EQ(bare->v, hit->v);
+  EXPECT_EQ(bare->t, hit->t);
+  EXPECT_EQ(bare->Ng, vec3(0.f));
   // Occlusion through the same callbacks.
   EXPECT_TRUE(rt.occluded(vec3(o), d, 0.f, 1e30f));
   EXPECT_FALSE(rt.occluded(vec3(o), d, 0.f, 0.5f * hit->t));

@@ -349,6 +349,9 @@ TEST(FrameGraph, ExportsDotAndJsonWithCullReasonsMemoryAndTimings) {
   EXPECT_EQ(j["schedule"][1]["kind"], "default");  // just before its first reader
   EXPECT_EQ(j["schedule"][1]["name"], "default:glass.out");
   EXPECT_EQ(j["schedule"].back()["timing"]["cpu_ms"]["samples"], 2);
+  // Every node reports the CPU time of all the process's threads over it (benchmarks.md).
+  for (const auto& node : j["schedule"])
+    EXPECT_GE(node["timing"]["counters"]["process_cpu_ms"].get<double>(), 0.0) << node["name"];
   EXPECT_GT(j["memory"]["bytes_without_reuse"].get<std::size_t>(), 0u);
   EXPECT_EQ(j["edges"].size(), 2u);
   const std::string dot = graphToDot(g, &ex.timings());

@@ -6,16 +6,25 @@
 //   diptych_rt_bench build SCENE [REPS]     builds the Embree scene REPS times (default 5) with
 //       instancing of repeated meshes off and on; prints the median build time, Embree's peak
 //       allocation during a build (rtcSetDeviceMemoryMonitorFunction) and the geometry's bytes.
+//   diptych_rt_bench bandwidth [MB]         memcpy bandwidth of this machine on MB-megabyte
+//       buffers (default 256: far past the caches), one thread and all threads (TBB, as the
+//       per-pixel passes run); counts bytes read + bytes written, as the passes' figure does.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <ctime>
 #include <exception>
 #include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
 
 #include "engine/rt/rt_scene.h"
 #include "engine/scene/load.h"
@@ -105,6 +114,58 @@ int timeBuild(const std::string& scenePath, int reps) {
   return 0;
 }
 
+double processCpuSeconds() {  // all threads of the process (CLOCK_PROCESS_CPUTIME_ID)
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
+}
+
+struct Bandwidth {
+  double wall = 0, cpu = 0;  // GB/s of read + written bytes; cpu: per CPU-second x threads
+};
+
+// Median of 9 copies of `mb` MB (after one warm-up that faults the pages in), in GB/s of
+// read + written bytes. Chunks of 1 MB spread over TBB's threads when `parallel`. The CPU
+// figure divides by (process CPU time / threads), the wall time the copy would take with the
+// cores to itself: on a loaded machine the wall figure measures the load, not the memory.
+Bandwidth copyBandwidth(std::size_t mb, bool parallel) {
+  const std::size_t bytes = mb << 20, chunk = std::size_t(1) << 20;
+  const double threads = parallel ? double(tbb::info::default_concurrency()) : 1.0;
+  std::vector<char> src(bytes, 1), dst(bytes, 0);
+  const auto copy = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c)
+      std::memcpy(dst.data() + c * chunk, src.data() + c * chunk, chunk);
+  };
+  std::vector<double> wall, cpu;
+  for (int rep = 0; rep < 10; ++rep) {
+    const double c0 = processCpuSeconds();
+    const auto t0 = std::chrono::steady_clock::now();
+    if (parallel)
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, bytes / chunk),
+          [&](const tbb::blocked_range<std::size_t>& r) { copy(r.begin(), r.end()); });
+    else
+      copy(0, bytes / chunk);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double c = processCpuSeconds() - c0;
+    if (rep == 0) continue;
+    wall.push_back(2.0 * double(bytes) / s / 1e9);
+    cpu.push_back(2.0 * double(bytes) / (c / threads) / 1e9);
+  }
+  std::sort(wall.begin(), wall.end());
+  std::sort(cpu.begin(), cpu.end());
+  return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+}
+
+int timeBandwidth(std::size_t mb) {
+  const Bandwidth one = copyBandwidth(mb, false), all = copyBandwidth(mb, true);
+  std::printf(
+      "memcpy %zu MB (read + write bytes, median of 9): 1 thread %.2f GB/s, all threads "
+      "%.2f GB/s; per CPU time: 1 thread %.2f GB/s, all threads %.2f GB/s\n",
+      mb, one.wall, all.wall, one.cpu, all.cpu);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -113,7 +174,10 @@ int main(int argc, char** argv) {
     if (mode == "obj" && argc == 4) return writeObj(argv[2], argv[3]);
     if (mode == "build" && (argc == 3 || argc == 4))
       return timeBuild(argv[2], argc == 4 ? std::max(1, std::atoi(argv[3])) : 5);
-    std::fprintf(stderr, "usage: %s obj SCENE OUT.obj | build SCENE [REPS]\n", argv[0]);
+    if (mode == "bandwidth" && argc <= 3)
+      return timeBandwidth(argc == 3 ? std::size_t(std::max(1, std::atoi(argv[2]))) : 256);
+    std::fprintf(stderr, "usage: %s obj SCENE OUT.obj | build SCENE [REPS] | bandwidth [MB]\n",
+                 argv[0]);
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "diptych_rt_bench: %s\n", e.what());
