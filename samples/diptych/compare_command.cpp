@@ -173,7 +173,8 @@ void runCompare(const CompareOptions& o) {
   int step = 0;
 
   // The reference, cached by scene contents + settings.
-  progress("compare", step, steps, "reference " + reference.text);
+  progress("compare", step, steps,
+           "reference " + reference.text + (bumped ? " on the displaced surfaces" : ""));
   const auto cached = dir / "cache" / ("reference-" + cacheKey(scene, reference, frame) + ".exr");
   Image referenceImage;
   double referenceMs = 0;
@@ -295,7 +296,11 @@ void runCompare(const CompareOptions& o) {
   const nlohmann::json header = {
       {"scene", sceneFile},
       {"size", {{"width", width}, {"height", height}}},
-      {"reference", {{"spec", reference.text}, {"ms", referenceMs}, {"cached", referenceCached}}},
+      {"reference",
+       {{"spec", reference.text},
+        {"ms", referenceMs},
+        {"cached", referenceCached},
+        {"surfaces", bumped ? "displaced" : "as authored"}}},
       {"frames", o.frames},
       {"warmup", o.warmup},
       {"pareto_metric", o.metric},

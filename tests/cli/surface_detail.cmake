@@ -10,7 +10,7 @@ include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
 expect_success(surface-detail ARGS compare "${SOURCE_DIR}/samples/scenes/surface-detail.json"
                --variants detail-flat,detail-bump,detail-normal-map,detail-displaced
                --size 200x150 --frames 1 --warmup 0 --out cmp FILES cmp/results.json)
-string(FIND "${LAST_STDERR}" "reference traces the bump-mapped surfaces displaced" pos)
+string(FIND "${LAST_STDERR}" "reference whitted on the displaced surfaces" pos)
 if(pos EQUAL -1)
   message(FATAL_ERROR "the reference did not say it traces the displaced surfaces:\n${LAST_STDERR}")
 endif()
@@ -22,6 +22,8 @@ for name, mode in (("detail-flat", "flat"), ("detail-bump", "bump"),
                    ("detail-normal-map", "normal_map"), ("detail-displaced", "displaced")):
     if v[name]["surface_detail"] != mode:
         sys.exit(f"{name}: surface_detail {v[name]['surface_detail']!r}, expected {mode!r}")
+if results["reference"]["surfaces"] != "displaced":
+    sys.exit(f"reference surfaces: {results['reference']['surfaces']!r}")
 if not results["one_time_ms"].get("displaced_reference_build_ms", 0) > 0:
     sys.exit("one_time_ms lacks displaced_reference_build_ms")
 for metric in ("flip_mean", "rmse"):
