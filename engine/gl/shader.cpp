@@ -5,6 +5,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "engine/core/error.h"
 
@@ -146,8 +147,21 @@ std::string mapShaderLog(const std::string& log, const ShaderSource& source) {
   return out;
 }
 
-Program loadProgram(const std::vector<fs::path>& stages, const std::vector<ShaderDefine>& defines,
-                    const fs::path& root) {
+namespace {
+thread_local std::vector<ShaderDefine> tScopedDefines;  // ScopedShaderDefines
+}  // namespace
+
+ScopedShaderDefines::ScopedShaderDefines(std::vector<ShaderDefine> defines)
+    : previous_(std::exchange(tScopedDefines, std::move(defines))) {}
+
+ScopedShaderDefines::~ScopedShaderDefines() {
+  tScopedDefines = std::move(previous_);
+}
+
+Program loadProgram(const std::vector<fs::path>& stages,
+                    const std::vector<ShaderDefine>& ownDefines, const fs::path& root) {
+  std::vector<ShaderDefine> defines = ownDefines;
+  defines.insert(defines.end(), tScopedDefines.begin(), tScopedDefines.end());
   Program program(glCreateProgram());
   std::vector<GLuint> shaders;
   auto cleanup = [&] {

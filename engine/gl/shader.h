@@ -44,6 +44,22 @@ ShaderSource preprocessShader(const std::filesystem::path& file,
 // Rewrites "S:L(C)" (Mesa) and "S(L)" (NVIDIA, AMD) locations in a driver log to "file:line".
 std::string mapShaderLog(const std::string& log, const ShaderSource& source);
 
+// Defines that every program compiled on this thread gets, after its own, while one of these is
+// alive (nested: the innermost's replace the outer ones). GraphExecutor::runFrame sets the
+// scene's feature defines with it, e.g. DIPTYCH_NO_BUMP when no material has a bump map: llvmpipe
+// executes both sides of every branch, so code the scene cannot reach is compiled out rather
+// than branched over. Programs compiled outside a frame keep all code (correct, only slower).
+class ScopedShaderDefines {
+ public:
+  explicit ScopedShaderDefines(std::vector<ShaderDefine> defines);
+  ~ScopedShaderDefines();
+  ScopedShaderDefines(const ScopedShaderDefines&) = delete;
+  ScopedShaderDefines& operator=(const ScopedShaderDefines&) = delete;
+
+ private:
+  std::vector<ShaderDefine> previous_;
+};
+
 // Stage files are relative to `root` (or absolute): loadProgram({"gbuffer.vert",
 // "gbuffer.frag"}). The stage is taken from the extension (.vert, .frag, .comp, .geom).
 Program loadProgram(const std::vector<std::filesystem::path>& stages,

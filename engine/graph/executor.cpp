@@ -7,6 +7,7 @@
 #include "engine/core/timing.h"
 #include "engine/gl/context.h"
 #include "engine/gl/debug.h"
+#include "engine/gl/shader.h"
 #include "engine/graph/render_world.h"
 
 namespace diptych {
@@ -85,7 +86,18 @@ void GraphExecutor::clearTimings() {
   for (NodeTiming& t : timings_) t = NodeTiming{};
 }
 
+namespace {
+// Scene features the GL shaders compile out when the scene lacks them (gl::ScopedShaderDefines).
+std::vector<gl::ShaderDefine> sceneShaderDefines(const Scene& scene) {
+  const bool bump = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                [](const Material& m) { return m.bump.has_value(); });
+  if (bump) return {};
+  return {{"DIPTYCH_NO_BUMP", ""}};
+}
+}  // namespace
+
 void GraphExecutor::runFrame() {
+  const gl::ScopedShaderDefines sceneDefines(sceneShaderDefines(world_.scene()));
   // GL timer queries are begun and ended around each GL node and read only after the frame's
   // last node (normally its final readbacks, which wait for the GL anyway), so no node waits on
   // its own query: a GL node's CPU time is the time to issue its commands, and the GL work

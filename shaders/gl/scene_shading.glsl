@@ -195,10 +195,13 @@ void sceneTriangleTangents(vec3 p0, vec3 p1, vec3 p2, vec2 t0, vec2 t1, vec2 t2,
 vec3 sceneDetailNormal(int m, vec3 n, vec4 tangent, vec3 p0, vec3 p1, vec3 p2, vec2 t0, vec2 t1,
                        vec2 t2, vec2 uv) {
   n = sceneNormalMapped(m, n, tangent, uv);
+#ifndef DIPTYCH_NO_BUMP  // set for scenes without bump maps (engine/gl/shader.h ScopedShaderDefines)
   if (!(sceneMaterials[m + 1].bumpKindTexKDelta.x > 0.5)) return n;
   vec3 tu, tv;
   sceneTriangleTangents(p0, p1, p2, t0, t1, t2, tu, tv);
-  return sceneBumpMapped(m, n, tu, tv, uv);
+  n = sceneBumpMapped(m, n, tu, tv, uv);
+#endif
+  return n;
 }
 
 // Coverage of material m at uv: its alpha times its colour texture's alpha (nearest or

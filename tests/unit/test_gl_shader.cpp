@@ -140,6 +140,34 @@ TEST_F(ShaderFiles, ComputeShaderWritesInvocationIds) {
   EXPECT_EQ(glDebugErrorCount(), errors);
 }
 
+// The executor's scene defines (ScopedShaderDefines): programs compiled while one is alive get
+// them after their own; nested scopes replace the outer ones and restore them; none outlives its
+// scope (ids.comp needs OFFSET, so compiling it outside every scope fails).
+TEST_F(ShaderFiles, ScopedDefinesReachProgramsCompiledInTheirScopeOnly) {
+  testing::osmesaContext();
+  write("ids.comp", kComputeMain);
+  const auto offsetOf = [&](const Program& program) {
+    Buffer out = Buffer::create(8 * 4 * 2 * 4);
+    out.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    program.use();
+    glDispatchCompute(2, 2, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::uint32_t first[2] = {0, 0};
+    out.download(0, sizeof first, first);
+    return first[1];  // invocation (0, 0): 0 + OFFSET
+  };
+  {
+    const ScopedShaderDefines outer(std::vector<ShaderDefine>{{"OFFSET", "7u"}});
+    EXPECT_EQ(offsetOf(loadProgram({"ids.comp"}, {}, root_)), 7u);
+    {
+      const ScopedShaderDefines inner(std::vector<ShaderDefine>{{"OFFSET", "9u"}});
+      EXPECT_EQ(offsetOf(loadProgram({"ids.comp"}, {}, root_)), 9u);
+    }
+    EXPECT_EQ(offsetOf(loadProgram({"ids.comp"}, {}, root_)), 7u);
+  }
+  EXPECT_THROW(loadProgram({"ids.comp"}, {}, root_), Error);
+}
+
 TEST(ShaderDirectory, EnvironmentOverridesTheSourceDirectory) {
   const char* previous = std::getenv("DIPTYCH_SHADER_DIR");
   const std::string saved = previous ? previous : "";
