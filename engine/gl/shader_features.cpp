@@ -5,13 +5,14 @@
 namespace diptych::gl {
 
 std::vector<ShaderDefine> sceneShaderDefines(const Scene& scene) {
-  bool textures = false, normalMaps = false, checker = false;
+  bool textures = false, normalMaps = false, bump = false, checker = false;
   int model = -2;  // none seen yet
   auto visit = [&](const Material& m) {
     // As packMaterial: a checker replaces the colour texture.
     textures |= (!m.checker && m.colorTexture >= 0) || m.emissionTexture >= 0 ||
                 m.metallicRoughnessTexture >= 0 || m.occlusionTexture >= 0;
     normalMaps |= m.normalTexture >= 0;
+    bump |= m.bump.has_value();
     checker |= m.checker.has_value();
     if (model == -2) model = int(m.model);
     if (int(m.model) != model) model = -1;
@@ -31,6 +32,7 @@ std::vector<ShaderDefine> sceneShaderDefines(const Scene& scene) {
   return {{"DIPTYCH_SCENE_FEATURES", ""},
           {"DIPTYCH_SCENE_TEXTURES", flag(textures)},
           {"DIPTYCH_SCENE_NORMAL_MAPS", flag(normalMaps)},
+          {"DIPTYCH_SCENE_BUMP", flag(bump)},
           {"DIPTYCH_SCENE_CHECKER", flag(checker)},
           {"DIPTYCH_SCENE_MODEL", std::to_string(model)},
           {"DIPTYCH_SCENE_LIGHT_TYPE", std::to_string(lightType)}};

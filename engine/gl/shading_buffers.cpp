@@ -101,6 +101,11 @@ void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& 
               m.transmissionFactor, m.baseColorFactor.x, m.baseColorFactor.y, m.baseColorFactor.z,
               m.metallicFactor, m.roughnessFactor, 0.f, 0.f, 0.f});
   // --- end textures ---
+  // The lecture's bump map (scene_shading.glsl sceneBumpMapped): kind, texture, k, delta; wave.
+  const BumpMap b = m.bump.value_or(BumpMap{});
+  const float kind = !m.bump ? 0.f : b.texture >= 0 ? 1.f : 2.f;
+  out.insert(out.end(), {kind, float(b.texture), b.k, b.delta, b.amplitude, b.frequency.x,
+                         b.frequency.y, 0.f});
 }
 
 void packLight(const Light& l, std::vector<float>& out) {

@@ -8,6 +8,7 @@
 
 #include "engine/core/error.h"
 #include "engine/rt/ray_offset.h"
+#include "engine/scene/analytic_tangents.h"
 #include "engine/scene/gltf_pbr.h"
 #include "engine/shading/bump.h"
 #include "engine/shading/texture_sampling.h"
@@ -125,9 +126,24 @@ SurfacePoint makeAnalyticPoint(const Scene& scene, const WorldMesh& mesh, const 
   s.positionMagnitude = a.magnitude;
   s.frontFacing = glm::dot(s.faceNormal, incoming) <= 0.f;
   s.geometricNormal = s.frontFacing ? s.faceNormal : -s.faceNormal;
-  s.shadingNormal = s.geometricNormal;  // exact: the gradient is the shading normal
   s.material = mesh.material;
-  s.resolved = resolveMaterial(scene, scene.material(mesh.material), s.uv);
+  const Material& material = scene.material(mesh.material);
+  // Exact: the gradient is the shading normal, unless a normal or bump map perturbs it; t_u and
+  // t_v come from the shape's own parameterisation (analyticTangents).
+  vec3 n = s.faceNormal;
+  if ((material.bump || material.normalTexture >= 0) && !a.sdf) {
+    vec3 tu, tv;
+    analyticTangents(a, part, s.uv, tu, tv);
+    if (material.normalTexture >= 0 && material.normalTexture < int(scene.textures.size())) {
+      // The frame computeVertexTangents would give: T along dp/du, B = -dp/dv (glTF's v).
+      const float w = glm::dot(glm::cross(n, tu), -tv) < 0.f ? -1.f : 1.f;
+      n = normalMapped(scene.textures[material.normalTexture], material.normalScale, n, vec4(tu, w),
+                       s.uv);
+    }
+    if (material.bump) n = bumpMapNormal(scene, *material.bump, s.uv, tu, tv, n);
+  }
+  s.shadingNormal = s.frontFacing ? n : -n;
+  s.resolved = resolveMaterial(scene, material, s.uv);
   return s;
 }
 

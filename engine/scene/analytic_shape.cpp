@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/scene/analytic_tangents.h"
+
 namespace diptych {
 namespace {
 
@@ -261,6 +263,34 @@ dvec3 shapeTangent(const AnalyticShape& s, int part, vec2 uv) {
   if (isPlanar(s, part)) return dvec3(1.0, 0.0, 0.0);
   const double phi = kTwoPi * double(uv.x);
   return dvec3(-std::sin(phi), 0.0, -std::cos(phi));  // d around(phi) / d phi
+}
+
+void shapeDerivatives(const AnalyticShape& s, int part, vec2 uv, dvec3& du, dvec3& dv) {
+  const double r = s.radius, h = s.height;
+  if (isPlanar(s, part)) {  // p = ((u - 1/2) 2r, y, (v - 1/2) 2r)
+    du = dvec3(2.0 * r, 0.0, 0.0);
+    dv = dvec3(0.0, 0.0, 2.0 * r);
+    return;
+  }
+  const double phi = kTwoPi * double(uv.x);
+  const dvec3 dir = around(phi);
+  const dvec3 dDir = kTwoPi * dvec3(-std::sin(phi), 0.0, -std::cos(phi));  // d around / du
+  switch (s.type) {
+    case ShapeType::Sphere: {  // p = r (sin(pi v) around(2 pi u) + cos(pi v) y)
+      const double theta = std::numbers::pi * double(uv.y);
+      du = r * std::sin(theta) * dDir;
+      dv = r * std::numbers::pi * (std::cos(theta) * dir - dvec3(0.0, std::sin(theta), 0.0));
+      return;
+    }
+    case ShapeType::Cylinder:  // p = r around(2 pi u) + (v - 1/2) h y
+      du = r * dDir;
+      dv = dvec3(0.0, h, 0.0);
+      return;
+    default:  // cone: p = r (1 - v) around(2 pi u) + (v - 1/2) h y
+      du = r * (1.0 - double(uv.y)) * dDir;
+      dv = -r * dir + dvec3(0.0, h, 0.0);
+      return;
+  }
 }
 
 }  // namespace diptych

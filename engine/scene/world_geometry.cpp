@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include "engine/scene/analytic_tangents.h"
 #include "engine/scene/sdf.h"
 
 namespace diptych {
@@ -189,6 +190,14 @@ void analyticPositionAndNormal(const AnalyticInstance& a, int part, vec2 uv, vec
   shapePointAndNormal(a.shape, part, uv, p, n);
   position = toWorldPoint(a, p);
   normal = toWorldNormal(a, n);
+}
+
+void analyticTangents(const AnalyticInstance& a, int part, vec2 uv, vec3& tu, vec3& tv) {
+  dvec3 du, dv;
+  shapeDerivatives(a.shape, part, uv, du, dv);
+  const glm::dmat3 linear(a.toWorld);
+  tu = vec3(linear * du);
+  tv = vec3(linear * dv);
 }
 
 std::size_t WorldGeometry::triangleCount() const {

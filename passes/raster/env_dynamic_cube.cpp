@@ -1,7 +1,10 @@
 #include "passes/raster/env_dynamic_cube.h"
 
+#include <optional>
+
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
+#include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 #include "passes/raster/fullscreen_resolve.h"
 
@@ -11,7 +14,7 @@ namespace {
 
 struct CubeCache {
   gl::Texture cube, depth;
-  FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "env_dynamic_cube.frag"})};
+  std::optional<FullscreenResolve> resolve;  // built on first use, with the scene's defines
   void ensure(int size) {
     if (cube && cube.width() == size) return;
     cube = gl::Texture::createCube(gl::TextureFormat::RGBA32F, size);
@@ -39,6 +42,9 @@ void EnvDynamicCubePass::execute(PassContext& c) {
   const gl::Texture& out = c.glTexture(io_.signal);
   auto& cache = world.glCached<CubeCache>();
   cache.ensure(resolution_);
+  if (!cache.resolve)
+    cache.resolve.emplace(
+        gl::loadProgram({"fullscreen.vert", "env_dynamic_cube.frag"}, world.glShading().defines));
   auto& renderer = world.glCached<gl::ForwardRenderer>();
   // Reversed-Z keeps precision at any near distance; a near plane at a small fraction of the
   // scene size only clips what touches the centre (the excluded object surrounds it anyway).
@@ -59,9 +65,9 @@ void EnvDynamicCubePass::execute(PassContext& c) {
     gl::glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     gl::glBindTextureUnit(0, hits.id());
     gl::glBindTextureUnit(1, cache.cube.id());
-    cache.resolve.program().set("uInstance", mesh.instance);
-    cache.resolve.program().set("uEye", c.frame().camera.position);
-    cache.resolve.draw(world, out);
+    cache.resolve->program().set("uInstance", mesh.instance);
+    cache.resolve->program().set("uEye", c.frame().camera.position);
+    cache.resolve->draw(world, out);
   }
 }
 

@@ -38,7 +38,8 @@ class ShadowMapGl {
   void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);
   // The lookup program for one (light kind, bias, filter, kernel, interior-only variant),
   // compiled on first use.
-  const gl::Program& lookupProgram(ViewKind kind, const Settings& settings, bool interior);
+  const gl::Program& lookupProgram(RenderWorld& world, ViewKind kind, const Settings& settings,
+                                   bool interior);
   gl::Program depth_;
   std::map<std::array<int, 5>, gl::Program> lookups_;
   gl::Texture lookupDepth_;  // marks pixels the interior cube pass has written

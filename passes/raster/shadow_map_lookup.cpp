@@ -8,6 +8,7 @@
 #include "engine/gl/bindings.h"
 #include "engine/gl/debug.h"
 #include "engine/gl/shader.h"
+#include "engine/gl/shader_features.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 #include "passes/raster/shadow_map_gl.h"
@@ -74,7 +75,8 @@ void ShadowMapGl::uploadFrusta(const std::vector<LightFrustum>& frusta, const Se
   uploadArray(lights_, lights);
 }
 
-const gl::Program& ShadowMapGl::lookupProgram(ViewKind kind, const Settings& s, bool interior) {
+const gl::Program& ShadowMapGl::lookupProgram(RenderWorld& world, ViewKind kind, const Settings& s,
+                                              bool interior) {
   const int kernel = s.filter == Filter::Pcf ? s.kernel : 1;  // only PCF reads the kernel
   gl::Program& program = lookups_[{int(kind), int(s.bias), int(s.filter), kernel, int(interior)}];
   if (!program) {
@@ -83,7 +85,8 @@ const gl::Program& ShadowMapGl::lookupProgram(ViewKind kind, const Settings& s, 
                                              {"DIPTYCH_FILTER", std::to_string(int(s.filter))},
                                              {"DIPTYCH_KERNEL", std::to_string(kernel)}};
     if (interior) defines.push_back({"DIPTYCH_INTERIOR", ""});
-    program = gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"}, defines);
+    program = gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"},
+                              gl::withDefines(world.glShading().defines, defines));
   }
   return program;
 }
@@ -151,7 +154,7 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
     // and with the split its visibility moved (MSE 2e-5 on whitted), so it is left exact.
     if (kind != ViewKind::Cube || s.bias == Bias::ReceiverPlane) {
       gl::glDisable(GL_DEPTH_TEST);
-      draw(lookupProgram(kind, s, false));
+      draw(lookupProgram(world, kind, s, false));
       continue;
     }
     // Cube maps: the interior variant (no cube-edge path) writes every pixel whose taps all
@@ -162,10 +165,10 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
     gl::glEnable(GL_DEPTH_TEST);
     gl::glDepthMask(GL_TRUE);
     gl::glDepthFunc(GL_ALWAYS);
-    draw(lookupProgram(kind, s, true));
+    draw(lookupProgram(world, kind, s, true));
     gl::glDepthMask(GL_FALSE);
     gl::glDepthFunc(GL_LESS);  // the full-screen triangle is at depth 0
-    draw(lookupProgram(kind, s, false));
+    draw(lookupProgram(world, kind, s, false));
     gl::glDepthMask(GL_TRUE);
     gl::glDisable(GL_DEPTH_TEST);
   }

@@ -6,6 +6,7 @@
 
 #include "engine/gl/objects.h"
 #include "engine/gl/shader.h"
+#include "engine/gl/shader_features.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 
@@ -17,12 +18,14 @@ namespace {
 // under a mask (the anisotropic loop included) for every pixel, about 4x the cost.
 struct TextureFilterGl {
   std::map<TextureFilterKind, gl::Program> programs;
-  const gl::Program& get(TextureFilterKind kind) {
+  const gl::Program& get(TextureFilterKind kind, const std::vector<gl::ShaderDefine>& scene) {
     auto it = programs.find(kind);
     if (it != programs.end()) return it->second;
     return programs
-        .emplace(kind, gl::loadProgram({"texture_filter.comp"},
-                                       {{"TEXTURE_FILTER_MODE", std::to_string(int(kind))}}))
+        .emplace(kind,
+                 gl::loadProgram(
+                     {"texture_filter.comp"},
+                     gl::withDefines(scene, {{"TEXTURE_FILTER_MODE", std::to_string(int(kind))}})))
         .first->second;
   }
 };
@@ -55,7 +58,8 @@ void TextureFilterPass::execute(PassContext& c) {
   const vec3 up = glm::cross(right, forward);
   const float tanHalf = std::tan(0.5f * camera.verticalFov);
   const float aspect = float(out.width()) / float(out.height());
-  const gl::Program& program = world.glCached<TextureFilterGl>().get(kind_);
+  const gl::Program& program =
+      world.glCached<TextureFilterGl>().get(kind_, world.glShading().defines);
   program.use();
   program.set("uMaxAnisotropy", maxAnisotropy_);
   program.set("uEye", camera.position);

@@ -21,6 +21,7 @@
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/load.h"
 #include "engine/scene/primitives.h"
+#include "engine/shading/surface_detail.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
 #include "samples/diptych/compare/report.h"
@@ -138,6 +139,15 @@ void runCompare(const CompareOptions& o) {
       recipes.push_back(v.build(registry));
     }
   }
+  // And the surface-detail axis where it has bump maps; their exact answer, the reference, is
+  // the displaced surface (docs/materials.md#bump-vs-normal-maps).
+  const bool bumped = hasBumpMaps(scene);
+  if (o.variants.empty() && bumped) {
+    for (const Variant& v : surfaceDetailVariants()) {
+      variants.push_back(v);
+      recipes.push_back(v.build(registry));
+    }
+  }
   const FrameSettings frame{width, height,
                             scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
   if (auto line = applyLighting(scene, frame.camera, {})) log().warn("{}", *line);
@@ -163,7 +173,8 @@ void runCompare(const CompareOptions& o) {
   int step = 0;
 
   // The reference, cached by scene contents + settings.
-  progress("compare", step, steps, "reference " + reference.text);
+  progress("compare", step, steps,
+           "reference " + reference.text + (bumped ? " on the displaced surfaces" : ""));
   const auto cached = dir / "cache" / ("reference-" + cacheKey(scene, reference, frame) + ".exr");
   Image referenceImage;
   double referenceMs = 0;
@@ -175,7 +186,19 @@ void runCompare(const CompareOptions& o) {
         nlohmann::json::parse(std::ifstream(cached.string() + ".json"))["ms"].get<double>();
   } else {
     const Recipe recipe = reference.recipe();
-    const GraphRun ref = runGraph(recipe, world, frame, recipe.outputs, o.warmup, o.frames);
+    std::unique_ptr<Scene> displaced;
+    std::unique_ptr<RenderWorld> displacedWorld;
+    if (bumped) {
+      clock.restart();
+      displaced = std::make_unique<Scene>(withSurfaceDetail(scene, SurfaceDetail::Displaced));
+      displacedWorld = std::make_unique<RenderWorld>(*displaced, context.get());
+      displacedWorld->rtScene();
+      oneTime["displaced_reference_build_ms"] = clock.milliseconds();
+      log().info("reference traces the bump-mapped surfaces displaced ({} triangles)",
+                 displacedWorld->geometry().triangleCount());
+    }
+    const GraphRun ref = runGraph(recipe, displacedWorld ? *displacedWorld : world, frame,
+                                  recipe.outputs, o.warmup, o.frames);
     referenceImage = ref.outputs.at("reference.color").toImage();
     referenceMs = ref.totalMs;
     oneTime["reference_first_frame_ms"] = ref.firstFrameMs;
@@ -219,8 +242,8 @@ void runCompare(const CompareOptions& o) {
     // A geometry variant runs on its own world: the scene with the quadrics tessellated.
     std::unique_ptr<Scene> tessellated;
     std::unique_ptr<RenderWorld> tessellatedWorld;
-    if (v.tessellation > 0) {
-      tessellated = std::make_unique<Scene>(tessellateAnalytic(scene, v.tessellation));
+    if (auto own = variantScene(scene, v)) {
+      tessellated = std::make_unique<Scene>(std::move(*own));
       for (std::size_t w = scene.warnings.size(); w < tessellated->warnings.size(); ++w)
         log().warn("{}: {}", v.name, tessellated->warnings[w]);
       tessellatedWorld = std::make_unique<RenderWorld>(*tessellated, context.get());
@@ -243,6 +266,7 @@ void runCompare(const CompareOptions& o) {
                  {"recipe", v.recipeFile.empty() ? "<built-in hybrid>" : v.recipeFile},
                  {"slots", v.slots},
                  {"tessellation", v.tessellation},
+                 {"surface_detail", v.surfaceDetail.empty() ? "as authored" : v.surfaceDetail},
                  {"traced_triangles", tracedTriangles},
                  {"total_ms", run.totalMs},
                  {"first_frame_ms", run.firstFrameMs},
@@ -272,7 +296,11 @@ void runCompare(const CompareOptions& o) {
   const nlohmann::json header = {
       {"scene", sceneFile},
       {"size", {{"width", width}, {"height", height}}},
-      {"reference", {{"spec", reference.text}, {"ms", referenceMs}, {"cached", referenceCached}}},
+      {"reference",
+       {{"spec", reference.text},
+        {"ms", referenceMs},
+        {"cached", referenceCached},
+        {"surfaces", bumped ? "displaced" : "as authored"}}},
       {"frames", o.frames},
       {"warmup", o.warmup},
       {"pareto_metric", o.metric},

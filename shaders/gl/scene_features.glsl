@@ -10,6 +10,7 @@
 #ifndef DIPTYCH_SCENE_FEATURES
 #define DIPTYCH_SCENE_TEXTURES 1     // some material samples a colour/emission/MR/AO texture
 #define DIPTYCH_SCENE_NORMAL_MAPS 1  // some material has a normal texture
+#define DIPTYCH_SCENE_BUMP 1         // some material has a bump map (texture or procedural)
 #define DIPTYCH_SCENE_CHECKER 1      // some material has the procedural checker
 #define DIPTYCH_SCENE_MODEL -1       // SHADING_MODEL_* of every material, -1 when mixed
 #define DIPTYCH_SCENE_LIGHT_TYPE -1  // LIGHT_* of every light, -1 when mixed or none

@@ -3,6 +3,7 @@
 // (engine/rt/surface_point.cpp). Include after common/shading.glsl and gl/scene_buffers.glsl.
 #include "common/bindings.glsl"
 #include "gl/scene_textures.glsl"
+#include "common/bump.glsl"
 struct GpuMaterial {
   vec4 colorKa;         // C, k_a
   vec4 kdKsExpKps;      // k_d, k_s, e, k_ps
@@ -22,6 +23,8 @@ struct GpuMaterial {
   vec4 baseFactorMetallic;    // glTF baseColorFactor.rgb, metallicFactor
   vec4 roughnessFactor;       // glTF roughnessFactor, 0, 0, 0
   // --- end textures ---
+  vec4 bumpKindTexKDelta;     // bump: 0 none, 1 height texture, 2 sinusoid; texture, k, delta
+  vec4 bumpWave;              // sinusoid amplitude, frequency u, frequency v, unused
 };
 layout(std430, binding = BINDING_SCENE_MATERIALS) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
 layout(std430, binding = BINDING_SCENE_INSTANCES) readonly buffer SceneInstances { ivec2 sceneInstances[]; };
@@ -161,6 +164,56 @@ vec3 sceneNormalMapped(int m, vec3 n, vec4 tangent, vec2 uv) {
 }
 // --- end textures ---
 
+// The lecture's bump mapping as engine/shading/bump.cpp bumpMapNormal: f_h from the height
+// texture's first channel (bilinear, level 0, its wrap modes) or the sinusoid
+// A sin(2 pi f_u u) cos(2 pi f_v v); d_u, d_v by central differences (common/bump.glsl).
+float sceneBumpHeight(GpuMaterial g, vec2 uv) {
+  if (g.bumpKindTexKDelta.x > 1.5) {
+    const float kTwoPi = 6.28318530717959;
+    return g.bumpWave.x * sin(kTwoPi * g.bumpWave.y * uv.x) * cos(kTwoPi * g.bumpWave.z * uv.y);
+  }
+  int tex = int(g.bumpKindTexKDelta.y);
+  return sceneTextureValid(tex) ? sceneSampleLevel(tex, 0, uv, true).x : 0.0;
+}
+
+// n' of material m at uv from t_u = dP/du, t_v = dP/dv; n unchanged without a bump map.
+vec3 sceneBumpMapped(int m, vec3 n, vec3 tu, vec3 tv, vec2 uv) {
+  GpuMaterial g = sceneMaterials[m + 1];
+  if (!(g.bumpKindTexKDelta.x > 0.5)) return n;
+  float k = g.bumpKindTexKDelta.z, d = g.bumpKindTexKDelta.w;
+  float du = bumpSlope(sceneBumpHeight(g, uv + vec2(d, 0.0)), sceneBumpHeight(g, uv - vec2(d, 0.0)), k, d);
+  float dv = bumpSlope(sceneBumpHeight(g, uv + vec2(0.0, d)), sceneBumpHeight(g, uv - vec2(0.0, d)), k, d);
+  return bumpNormal(tu, tv, n, du, dv);
+}
+
+// dP/du, dP/dv of a triangle (engine/shading/bump.cpp triangleTangents); zero when its uv
+// triangle is degenerate.
+void sceneTriangleTangents(vec3 p0, vec3 p1, vec3 p2, vec2 t0, vec2 t1, vec2 t2, out vec3 tu,
+                           out vec3 tv) {
+  vec3 e1 = p1 - p0, e2 = p2 - p0;
+  vec2 d1 = t1 - t0, d2 = t2 - t0;
+  float det = d1.x * d2.y - d2.x * d1.y;
+  tu = vec3(0.0);
+  tv = vec3(0.0);
+  if (!(abs(det) > 0.0) || isinf(det)) return;
+  float r = 1.0 / det;
+  tu = (e1 * d2.y - e2 * d1.y) * r;
+  tv = (e2 * d1.x - e1 * d2.x) * r;
+}
+
+// Surface detail on a triangle, in makeSurfacePoint's order: the normal map, then the bump map.
+vec3 sceneDetailNormal(int m, vec3 n, vec4 tangent, vec3 p0, vec3 p1, vec3 p2, vec2 t0, vec2 t1,
+                       vec2 t2, vec2 uv) {
+  n = sceneNormalMapped(m, n, tangent, uv);
+#if DIPTYCH_SCENE_BUMP  // gl/scene_features.glsl
+  if (!(sceneMaterials[m + 1].bumpKindTexKDelta.x > 0.5)) return n;
+  vec3 tu, tv;
+  sceneTriangleTangents(p0, p1, p2, t0, t1, t2, tu, tv);
+  n = sceneBumpMapped(m, n, tu, tv, uv);
+#endif
+  return n;
+}
+
 // Coverage of material m at uv: its alpha times its colour texture's alpha (nearest or
 // bilinear by the texture's magnification filter), as resolveMaterial computes it on the CPU.
 float sceneMaterialAlpha(int m, vec2 uv) {
@@ -251,9 +304,9 @@ SceneSurface surfaceFromHits(uvec4 texel) {
   s.uv = w * t0 + u * t1 + v * t2;
   s.material = sceneInstanceMaterial(s.instance);
   // The CPU maps the interpolated normal (makeSurfacePoint); zero tangents leave it unchanged.
-#if DIPTYCH_SCENE_NORMAL_MAPS
+#if DIPTYCH_SCENE_NORMAL_MAPS || DIPTYCH_SCENE_BUMP
   vec4 tg = w * sceneTangent(tri.x) + u * sceneTangent(tri.y) + v * sceneTangent(tri.z);
-  s.shadingNormal = sceneNormalMapped(s.material, s.shadingNormal, tg, s.uv);
+  s.shadingNormal = sceneDetailNormal(s.material, s.shadingNormal, tg, p0, p1, p2, t0, t1, t2, s.uv);
 #endif
   return s;
 }

@@ -62,6 +62,23 @@ inline std::unique_ptr<HybridFrame> renderHybridFrame(
   return renderHybridFrame(loadScene(file), width, height, outputs, recipe);
 }
 
+// `recipe` with its shade pass duplicated: shade_gl forced to GL and shade_cpu to the CPU, both
+// reading the same resources, so one frame gives both sides the same inputs.
+inline Recipe withShadeInBothDomains(Recipe recipe) {
+  RecipePass shade;
+  for (const RecipePass& p : recipe.passes)
+    if (p.type == "shade") shade = p;
+  std::erase_if(recipe.passes, [](const RecipePass& p) { return p.type == "shade"; });
+  for (const char* domain : {"gl", "cpu"}) {
+    RecipePass p = shade;
+    p.name = std::string("shade_") + domain;
+    p.params["domain"] = domain;
+    recipe.passes.push_back(p);
+  }
+  recipe.outputs = {"shade_gl.color", "shade_cpu.color", "gbuffer.hits"};
+  return recipe;
+}
+
 // The node of the compiled schedule called `name` ("default:shadows.visibility"), or null.
 inline const GraphNode* scheduledNode(const CompiledGraph& graph, const std::string& name) {
   for (const GraphNode& n : graph.nodes)

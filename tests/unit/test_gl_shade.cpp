@@ -37,23 +37,6 @@ Recipe recipeFile(const std::string& name) {
   return loadRecipe(fs::path(DIPTYCH_SAMPLES_DIR) / "graphs" / (name + ".json"));
 }
 
-// `recipe` with its shade pass duplicated: shade_gl forced to GL and shade_cpu to the CPU, both
-// reading the same resources, so one frame gives both sides the same inputs.
-Recipe withShadeInBothDomains(Recipe recipe) {
-  RecipePass shade;
-  for (const RecipePass& p : recipe.passes)
-    if (p.type == "shade") shade = p;
-  std::erase_if(recipe.passes, [](const RecipePass& p) { return p.type == "shade"; });
-  for (const char* domain : {"gl", "cpu"}) {
-    RecipePass p = shade;
-    p.name = std::string("shade_") + domain;
-    p.params["domain"] = domain;
-    recipe.passes.push_back(p);
-  }
-  recipe.outputs = {"shade_gl.color", "shade_cpu.color", "gbuffer.hits"};
-  return recipe;
-}
-
 struct Parity {
   double relativeRmse = 0, analyticShare = 0, relativeRmseAll = 0;
 };
@@ -97,7 +80,7 @@ TEST(GlShade, MatchesCpuShadeOnEverySampleWithTheSameProducers) {
   ASSERT_GE(scenes.size(), 5u);
   double worst = 0;
   for (const char* recipeName : {"raster", "hybrid"}) {
-    const Recipe recipe = withShadeInBothDomains(recipeFile(recipeName));
+    const Recipe recipe = testing::withShadeInBothDomains(recipeFile(recipeName));
     for (const fs::path& scene : scenes) {
       SCOPED_TRACE(scene.filename().string() + " / " + recipeName);
       auto f = testing::renderHybridFrame(scene, 160, 120, {}, recipe);
@@ -117,7 +100,7 @@ TEST(GlShade, MatchesCpuShadeOnEverySampleWithTheSameProducers) {
 // A frame whose inputs differ must not pass: the bound is not vacuous. Dropping the light
 // visibility of the GL side lights every shadowed pixel of cornell.
 TEST(GlShade, ParityMeasureSeesAMissingInput) {
-  Recipe recipe = withShadeInBothDomains(recipeFile("raster"));
+  Recipe recipe = testing::withShadeInBothDomains(recipeFile("raster"));
   for (RecipePass& p : recipe.passes)
     if (p.name == "shade_gl") p.inputs.erase("light_visibility");
   auto f = testing::renderHybridFrame(fs::path(DIPTYCH_SAMPLES_DIR) / "scenes/cornell.json", 160,
@@ -143,7 +126,7 @@ TEST(GlShade, ReadsOneVisibilityLayerPerLight) {
   for (const char* recipeName : {"raster", "hybrid"}) {
     SCOPED_TRACE(recipeName);
     auto f = testing::renderHybridFrame(scene, 160, 120, {},
-                                        withShadeInBothDomains(recipeFile(recipeName)));
+                                        testing::withShadeInBothDomains(recipeFile(recipeName)));
     EXPECT_EQ(f->graph.resources[*f->graph.findResource("shadows.visibility")].desc.layers, 3);
     const Parity p = measure(*f);
     std::printf("three lights, %s: relative RMSE %.3g\n", recipeName, p.relativeRmse);
@@ -157,7 +140,7 @@ TEST(GlShade, ReadsOneVisibilityLayerPerLight) {
 // fallback 0, i.e. C = 0 everywhere. A third shade without albedo shows that the input changes
 // the frame (the diffuse and ambient terms vanish).
 TEST(GlShade, AlbedoInputReplacesTheBaseColourOnBothSides) {
-  Recipe recipe = withShadeInBothDomains(recipeFile("raster"));
+  Recipe recipe = testing::withShadeInBothDomains(recipeFile("raster"));
   RecipePass plain;
   for (RecipePass& p : recipe.passes)
     if (p.name == "shade_gl") plain = p;
@@ -196,7 +179,7 @@ TEST(GlShade, BackgroundIsTheExactEnvironment) {
     if (type == EnvironmentType::Equirect) scene.environment.equirect = randomImage(37, 19, 3);
     for (Image& face : scene.environment.cubeFaces) face = randomImage(9, 9, 3);
     auto f = testing::renderHybridFrame(std::move(scene), 160, 120, {},
-                                        withShadeInBothDomains(recipeFile("raster")));
+                                        testing::withShadeInBothDomains(recipeFile("raster")));
     const CpuImage& g = f->output("shade_gl.color");
     const CpuImage& c = f->output("shade_cpu.color");
     const CpuImage& hits = f->output("gbuffer.hits");

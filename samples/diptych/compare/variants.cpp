@@ -10,6 +10,8 @@
 #include "engine/core/input_file.h"
 #include "engine/core/json_text.h"
 #include "engine/core/known.h"
+#include "engine/scene/primitives.h"
+#include "engine/shading/surface_detail.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
 
@@ -51,6 +53,25 @@ std::vector<Variant> geometryVariants() {
   return out;
 }
 
+std::vector<Variant> surfaceDetailVariants() {
+  std::vector<Variant> out;
+  for (const char* mode : {"flat", "bump", "normal_map", "displaced"}) {
+    std::string name = std::string("detail-") + mode;
+    std::replace(name.begin(), name.end(), '_', '-');
+    out.push_back({name, "", {}, 0, mode});
+  }
+  return out;
+}
+
+std::optional<Scene> variantScene(const Scene& scene, const Variant& variant) {
+  const auto detail = parseSurfaceDetail(variant.surfaceDetail);
+  const bool changesDetail = detail && *detail != SurfaceDetail::Bump && hasBumpMaps(scene);
+  if (variant.tessellation <= 0 && !changesDetail) return std::nullopt;
+  Scene out = variant.tessellation > 0 ? tessellateAnalytic(scene, variant.tessellation) : scene;
+  if (changesDetail) out = withSurfaceDetail(out, *detail);
+  return out;
+}
+
 std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& registry) {
   if (std::filesystem::path(spec).extension() == ".json") {
     nlohmann::json j = parseJsonText(readInputFile(spec, kMaxJsonFileBytes), spec);
@@ -66,7 +87,8 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
       if (!v.is_object() || !v.contains("name") || !v["name"].is_string())
         throw InputError(spec, place, "expected an object with a \"name\"");
       for (const auto& [key, value] : v.items())
-        if (key != "name" && key != "recipe" && key != "slots" && key != "tessellation")
+        if (key != "name" && key != "recipe" && key != "slots" && key != "tessellation" &&
+            key != "surface_detail")
           throw InputError(spec, place + "." + key, "unknown key");
       Variant variant{v["name"].get<std::string>(), "", {}};
       if (!names.insert(variant.name).second)
@@ -90,12 +112,20 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
           throw InputError(spec, place + ".tessellation", "expected an integer in 3..4096");
         variant.tessellation = t.get<int>();
       }
+      if (v.contains("surface_detail")) {
+        const auto& d = v["surface_detail"];
+        if (!d.is_string() || !parseSurfaceDetail(d.get<std::string>()))
+          throw InputError(spec, place + ".surface_detail",
+                           "expected \"flat\", \"bump\", \"normal_map\" or \"displaced\"");
+        variant.surfaceDetail = d.get<std::string>();
+      }
       out.push_back(variant);
     }
     return out;
   }
   std::vector<Variant> all = defaultVariants(registry);
   for (const Variant& v : geometryVariants()) all.push_back(v);
+  for (const Variant& v : surfaceDetailVariants()) all.push_back(v);
   std::vector<Variant> out;
   std::size_t start = 0;
   while (start <= spec.size()) {

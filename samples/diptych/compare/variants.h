@@ -2,11 +2,13 @@
 // Variants of a comparison: a recipe plus slot overrides. The default set covers every
 // registered producer of every slot (docs/compare.md).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/graph/recipe.h"
 #include "engine/graph/registry.h"
+#include "engine/scene/scene.h"
 
 namespace diptych::cli {
 
@@ -17,6 +19,9 @@ struct Variant {
   // > 0: the scene's analytic quadrics are traced as tessellations of this many segments
   // (tessellateAnalytic), the "geometry" axis; 0: as the scene says.
   int tessellation = 0;
+  // "flat", "bump", "normal_map" or "displaced": how bump-mapped materials are rendered, the
+  // "surface detail" axis (engine/shading/surface_detail.h); empty: as the scene says (bump).
+  std::string surfaceDetail;
   Recipe build(const PassRegistry& registry) const;  // recipe with the overrides applied
 };
 
@@ -24,6 +29,12 @@ std::vector<Variant> defaultVariants(const PassRegistry& registry);
 // The geometry axis, added to the defaults when the scene has analytic quadrics: the all-exact
 // hybrid with them tessellated at 16, 64 and 256 segments.
 std::vector<Variant> geometryVariants();
+// The surface-detail axis, added to the defaults when the scene has bump maps: the all-exact
+// hybrid with them flat, bump-mapped, normal-mapped (baked from the same height) and displaced.
+std::vector<Variant> surfaceDetailVariants();
+// The scene a variant runs on: tessellated (geometry axis), then with its surface detail
+// rendered as the variant says; std::nullopt when that is the scene itself.
+std::optional<Scene> variantScene(const Scene& scene, const Variant& variant);
 // A .json file ({"variants": [{"name", "recipe"?, "slots"?}]}) or comma-separated names from
 // the default set. Throws InputError naming the file/element or the unknown name.
 std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& registry);
