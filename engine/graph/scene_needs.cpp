@@ -1,4 +1,5 @@
 #include "engine/graph/scene_needs.h"
+
 #include "engine/shading/shading.h"
 
 namespace diptych {

@@ -186,11 +186,12 @@ void EnvReflectionPass::execute(PassContext& c) {
   const gl::Texture& map = state.map(world.scene().environment, kind_, resolution_,
                                      glm::transpose(worldToEye), prefilter_, prefilterMs);
   if (prefilterMs >= 0.0) {  // a one-time cost per environment (and per view for env_sphere)
+    const char* name = kind_ == EnvMapKind::Cube     ? "env_cube"
+                       : kind_ == EnvMapKind::Sphere ? "env_sphere"
+                                                     : "env_equirect";
     c.count("prefilter_ms", prefilterMs);
-    log().info("{}: GGX-prefiltered {} levels in {:.1f} ms (once per environment{})",
-               kind_ == EnvMapKind::Cube     ? "env_cube"
-               : kind_ == EnvMapKind::Sphere ? "env_sphere"
-                                             : "env_equirect",
+    world.oneTimeMs[std::string(name) + " prefilter"] += prefilterMs;
+    log().info("{}: GGX-prefiltered {} levels in {:.1f} ms (once per environment{})", name,
                map.levels() - 1, prefilterMs, kind_ == EnvMapKind::Sphere ? " and view" : "");
   }
   const gl::Program& program = state.program(kind_);
