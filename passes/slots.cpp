@@ -54,7 +54,8 @@ const std::vector<TechniqueSlot>& techniqueSlots() {
        .exact = "rt_reflection",
        .raster = "env_cube",
        .meaning = "L_refl: radiance arriving at the G-buffer point along r = reflect(-v, "
-                  "n_shading); 0 where k_ps = 0"},
+                  "n_shading) (alpha 1), or a glTF lobe's prefiltered radiance (alpha 2); 0 "
+                  "where the material's model has no reflection"},
       {.name = "transmission",
        .signal = "transmission",
        .format = Format::RGBA32F,
@@ -65,7 +66,8 @@ const std::vector<TechniqueSlot>& techniqueSlots() {
        .exact = "rt_transmission",
        .raster = "sorted_blend",
        .meaning = "L_trans: radiance arriving through the surface (refracted for ray tracing, "
-                  "along the view ray for blending); 0 where k_t = 0"},
+                  "along the view ray for blending), after any volume attenuation; 0 where the "
+                  "material's model has no transmission"},
       {.name = "texture_filtering",
        .signal = "albedo",
        .format = Format::RGBA32F,

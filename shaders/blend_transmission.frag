@@ -1,15 +1,21 @@
-// Blend producers, last step: pixels whose first visible surface has k_t = 0 (or none) get 0,
-// the others keep the composited transmission (discarded here).
+// Blend producers, last step, drawn with multiplicative blending (dst * src): pixels whose first
+// visible surface has no transmission (or none) get 0; the others keep the composited
+// transmission, times the first surface's volume transmittance over its thickness when the view
+// enters through a front face (KHR_materials_volume, docs/materials.md).
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
 
 uniform vec2 uViewportSize;
+uniform vec3 uEye;  // the camera centre
 layout(binding = 0) uniform usampler2D uHits;
 layout(location = 0) out vec4 outColor;
 
 void main() {
   SceneSurface s = surfaceFromHits(texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
-  if (s.hit && sceneMaterial(s.material, s.uv).kt > 0.0) discard;
   outColor = vec4(0.0);
+  if (s.hit && hasTransmission(sceneMaterial(s.material, s.uv))) {
+    bool front = dot(s.faceNormal, s.position - uEye) <= 0.0;
+    outColor = vec4(front ? sceneVolumeTransmittance(s.material) : vec3(1.0), 1.0);
+  }
 }

@@ -36,7 +36,7 @@ void main() {
   if (uBehind != 0) {
     texel = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
     first = surfaceFromHits(texel);
-    if (uTransmissiveOnly != 0 && !(first.hit && sceneMaterial(first.material, first.uv).kt > 0.0))
+    if (uTransmissiveOnly != 0 && !(first.hit && hasTransmission(sceneMaterial(first.material, first.uv))))
       discard;
     // "Behind the first visible surface": the first surface itself (same instance and
     // primitive) is excluded by identity, everything else by its distance along the same ray.
@@ -77,5 +77,7 @@ void main() {
   // Alpha: 1 for a replaced pixel; blended pixels keep the destination's alpha (0 + 1 * a).
   outColor = vec4(radiance, uBlend != 0 ? 0.0 : 1.0);
   // The transmission factor of the material's model (k_t M_T, or the glTF model's Fresnel-weighted one).
-  outTransmit = vec4(secondaryWeights(m, n, v).transmission, 1.0);
+  // KHR_materials_volume: entering through a front face, Beer-Lambert over the thickness.
+  vec3 volume = dot(face, dir) <= 0.0 ? sceneVolumeTransmittance(uMaterial) : vec3(1.0);
+  outTransmit = vec4(secondaryWeights(m, n, v).transmission * volume, 1.0);
 }

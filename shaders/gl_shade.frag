@@ -72,8 +72,9 @@ void main() {
     LightSample ls = sampleLight(sceneLight(i), s.position);
     radiance += lightContribution(m, n, v, ls, lightVisibility(p, i));
   }
-  vec3 reflected = kHasReflection ? imageLoad(uReflection, p).rgb : vec3(0.0);
+  // Alpha: 1 a mirror ray, 2 a prefiltered lobe (secondaryTermsOf, common/shading.glsl).
+  vec4 reflected = kHasReflection ? imageLoad(uReflection, p) : vec4(0.0);
   vec3 transmitted = kHasTransmission ? imageLoad(uTransmission, p).rgb : vec3(0.0);
-  radiance += secondaryTerms(m, n, v, reflected, transmitted);
+  radiance += secondaryTermsOf(m, n, v, reflected.rgb, reflected.a, transmitted);
   outColor = vec4(radiance, 1.0);
 }

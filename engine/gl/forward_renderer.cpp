@@ -7,6 +7,7 @@
 #include "engine/gl/transfer.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
+#include "engine/shading/shading.h"
 
 namespace diptych::gl {
 
@@ -80,7 +81,8 @@ std::vector<int> drawList(const Scene& scene, const GlSceneBuffers& buffers,
   if (o.explicitOrder || !o.order.empty()) return o.order;
   std::vector<int> list;
   for (int i = 0; i < int(buffers.meshes.size()); ++i) {
-    const bool transparent = scene.material(buffers.meshes[i].material).kt > 0.f;
+    const bool transparent =
+        shading::materialHasTransmission(scene.material(buffers.meshes[i].material));
     if (o.instances == InstanceSet::All || transparent == (o.instances == InstanceSet::Transparent))
       list.push_back(i);
   }

@@ -95,11 +95,15 @@ void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& 
   // Texture indices as float (-1: none; exact for indices below 2^24), and the glTF inputs that
   // resolveMaterial re-maps per texel with gltfPbrToLecture.
   const float colour = m.checker ? -1.f : float(m.colorTexture);
+  // KHR_materials_volume on the raster side: Beer-Lambert over thicknessFactor (docs/materials.md).
+  const vec3 thick = m.thickness > 0.f ? shading::volumeTransmittance(
+                                             m.attenuationColor, m.attenuationDistance, m.thickness)
+                                       : vec3(1.f);
   out.insert(out.end(),
              {colour, float(m.emissionTexture), float(m.metallicRoughnessTexture),
               float(m.occlusionTexture), float(m.normalTexture), m.normalScale, m.occlusionStrength,
               m.transmissionFactor, m.baseColorFactor.x, m.baseColorFactor.y, m.baseColorFactor.z,
-              m.metallicFactor, m.roughnessFactor, 0.f, 0.f, 0.f});
+              m.metallicFactor, m.roughnessFactor, thick.x, thick.y, thick.z});
   // --- end textures ---
   // The lecture's bump map (scene_shading.glsl sceneBumpMapped): kind, texture, k, delta; wave.
   const BumpMap b = m.bump.value_or(BumpMap{});

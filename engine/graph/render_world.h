@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <typeindex>
 
 #include "engine/rt/rt_device.h"
@@ -40,6 +41,10 @@ class RenderWorld {
   // One T per world (a compiled program, a framebuffer...), built on first use with the context
   // current and destroyed with it current. Passes keep GL state here, never in themselves,
   // because a compiled graph may outlive the context it ran on.
+  // Work done once per world, not per frame (e.g. "env_cube prefilter"), in ms: reports show it
+  // beside the per-frame medians, which exclude it when it falls in a warm-up frame.
+  std::map<std::string, double> oneTimeMs;
+
   template <class T>
   T& glCached() {
     auto& slot = glCache_[std::type_index(typeid(T))];

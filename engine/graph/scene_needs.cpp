@@ -1,5 +1,7 @@
 #include "engine/graph/scene_needs.h"
 
+#include "engine/shading/shading.h"
+
 namespace diptych {
 namespace {
 
@@ -83,9 +85,12 @@ bool sceneSatisfies(const Scene& s, SceneNeed need) {
           return true;
       return false;
     case SceneNeed::ReflectiveMaterial:
-      return anyUsedMaterial(s, [](const Material& m) { return m.kps > 0.f; });
+      // lobe: a prefiltered environment lookup also serves rough glTF lobes.
+      return anyUsedMaterial(
+          s, [](const Material& m) { return shading::materialHasReflection(m, /*lobe=*/true); });
     case SceneNeed::TransmissiveMaterial:
-      return anyUsedMaterial(s, [](const Material& m) { return m.kt > 0.f; });
+      return anyUsedMaterial(s,
+                             [](const Material& m) { return shading::materialHasTransmission(m); });
     case SceneNeed::EmissiveMaterial:
       return anyUsedMaterial(s, [](const Material& m) { return positive(m.emission); });
     case SceneNeed::EnvironmentMap:

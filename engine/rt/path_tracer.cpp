@@ -178,9 +178,14 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
   PathSample out;
   vec3 throughput(1.f);
   Ray ray = cameraRay;
+  const Material* medium = nullptr;  // the volume the current segment runs inside, if any
   for (int depth = 1;; ++depth) {
     ++out.rays;
     const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), false);
+    if (medium)  // KHR_materials_volume: Beer-Lambert over the segment (as the Whitted tracer)
+      throughput *= shading::volumeTransmittance(
+          medium->attenuationColor, medium->attenuationDistance,
+          hit ? hit->t * glm::length(ray.direction) : std::numeric_limits<float>::infinity());
     if (!hit) {
       out.radiance += throughput * sampleEnvironment(scene_.environment, ray.direction);
       break;
@@ -242,6 +247,11 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
     throughput *= weight;
     if (!finite(throughput) || throughput == vec3(0.f)) break;
     ray = spawnRay(p, direction);
+    // Into the back side of the (outward) face: inside the material's volume.
+    const Material& mat = scene_.material(p.material);
+    medium = shading::hasVolumeAttenuation(mat) && glm::dot(direction, p.faceNormal) < 0.f
+                 ? &mat
+                 : nullptr;
 
     if (settings_.russianRoulette && depth >= settings_.rrDepth) {
       const float survive = std::min(1.f, maxComponent(throughput));

@@ -59,13 +59,13 @@ RayProbe probeSecondaryRays(const Scene& scene, const WorldGeometry& world, cons
       }
       const vec3 v = -ray.direction;
       const Material& m = scene.material(p.material);
-      if (m.kps > 0.f) {
+      if (shading::hasReflection(p.resolved, false)) {
         const vec3 r = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
         ++nSecondary;
         const Ray reflected = spawnRay(p, r);
         nSelf += selfHit(rt.intersect(reflected, 0.f, inf), p, reflected.direction) ? 1 : 0;
       }
-      if (m.kt > 0.f) {
+      if (shading::hasTransmission(p.resolved)) {
         const float eta = p.frontFacing ? 1.f / m.ior : m.ior;
         const shading::Refraction t = shading::refractLecture(v, p.shadingNormal, eta);
         ++nSecondary;

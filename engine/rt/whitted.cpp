@@ -16,13 +16,16 @@ WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, con
   for (const Light& light : scene.lights) lights_.push_back(shading::toShadingLight(light));
 }
 
-vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed,
-                             const RayCone* cone) const {
+vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone,
+                             float* hitDistance) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
   rays_.add(1);
   // Hit::Ng only for an observer: the shading rebuilds the normal (makeSurfacePoint).
   const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), bool(observer_));
   if (observer_) observer_({ray, depth, hit});
+  if (hitDistance)
+    *hitDistance =
+        hit ? hit->t * glm::length(ray.direction) : std::numeric_limits<float>::infinity();
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
   SurfacePoint p = makeSurfacePoint(scene_, world_,
                                     {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
@@ -55,10 +58,11 @@ vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth, std::
                           const RayCone* cone) const {
   const shading::ShadingMaterial& m = p.resolved;
   vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + direct(p, v, seed);
-  // k_t and k_ps say whether the signals exist (as for the hybrid's rt_reflection and
-  // rt_transmission); secondaryTerms weights them by the material's model.
-  const vec3 trans = m.kt > 0.f ? transmitted(p, v, depth, seed, cone) : vec3(0.f);
-  const vec3 refl = m.kps > 0.f ? reflected(p, v, depth, seed, cone) : vec3(0.f);
+  // The material's model says whether the signals exist (hasReflection, hasTransmission: as for
+  // the hybrid's rt_reflection and rt_transmission); secondaryTerms weights them.
+  const vec3 trans = shading::hasTransmission(m) ? transmitted(p, v, depth, seed, cone) : vec3(0.f);
+  const vec3 refl =
+      shading::hasReflection(m, false) ? reflected(p, v, depth, seed, cone) : vec3(0.f);
   return rad + shading::secondaryTerms(m, p.shadingNormal, v, refl, trans);
 }
 
@@ -67,8 +71,21 @@ vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth, s
   if (depth >= settings_.maxDepth) return vec3(0.f);
   const vec3 r = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
   const RayCone next = cone ? reflectedCone(world_, p, cone->width, cone->spread) : RayCone{};
-  return radiance(spawnRay(p, r), depth + 1, pcgHash(seed ^ 0x52454646u),  // "REFF"
-                  cone ? &next : nullptr);
+  return secondary(p, r, depth, pcgHash(seed ^ 0x52454646u), cone ? &next : nullptr);  // "REFF"
+}
+
+vec3 WhittedTracer::secondary(const SurfacePoint& p, const vec3& direction, int depth,
+                              std::uint32_t seed, const RayCone* cone) const {
+  // KHR_materials_volume: a ray that leaves p into the back side of its (outward, CCW) face
+  // travels inside the material's volume, to the next hit: Beer-Lambert over that length. A
+  // thin-walled material (thickness 0) has no volume. Nested volumes are not tracked.
+  const Material& m = scene_.material(p.material);
+  const bool inside = shading::hasVolumeAttenuation(m) && glm::dot(direction, p.faceNormal) < 0.f;
+  float distance = 0.f;
+  const vec3 l =
+      radiance(spawnRay(p, direction), depth + 1, seed, cone, inside ? &distance : nullptr);
+  if (!inside) return l;
+  return l * shading::volumeTransmittance(m.attenuationColor, m.attenuationDistance, distance);
 }
 
 vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
@@ -79,8 +96,7 @@ vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth,
   const float ior = scene_.material(p.material).ior;
   const float eta = p.frontFacing ? 1.f / ior : ior;
   const shading::Refraction t = shading::refractLecture(v, p.shadingNormal, eta);
-  return radiance(spawnRay(p, t.t), depth + 1, pcgHash(seed ^ 0x5452414eu),  // "TRAN"
-                  cone);
+  return secondary(p, t.t, depth, pcgHash(seed ^ 0x5452414eu), cone);  // "TRAN"
 }
 
 }  // namespace diptych

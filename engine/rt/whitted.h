@@ -45,7 +45,9 @@ class WhittedTracer {
 
   // RAYTRACING(o, u, depth); the caller offsets o if it leaves a surface.
   // cone: the ray's cone at its origin, used for texture LOD when settings.rayCones is set.
-  vec3 radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone = nullptr) const;
+  // hitDistance, when given, receives the distance to the hit (infinity on a miss).
+  vec3 radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone = nullptr,
+                float* hitDistance = nullptr) const;
   // EVALUAMILREC at a known surface point seen from direction v (unit, toward the viewer); cone:
   // the cone's width at the point and its spread.
   vec3 shade(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
@@ -67,6 +69,10 @@ class WhittedTracer {
 
  private:
   vec3 direct(const SurfacePoint& point, const vec3& v, std::uint32_t seed) const;
+  // radiance() along `direction` from `point`, Beer-Lambert attenuated when the ray travels
+  // inside the point's volume (KHR_materials_volume, shading.glsl volumeTransmittance).
+  vec3 secondary(const SurfacePoint& point, const vec3& direction, int depth, std::uint32_t seed,
+                 const RayCone* cone) const;
   const Scene& scene_;
   const WorldGeometry& world_;
   const RtScene& rt_;

@@ -185,6 +185,10 @@ Material readMaterial(JsonObject o, const std::string& name, const Context& ctx,
   m.transmitColor = o.vector3("transmit_color", m.transmitColor);
   m.emission = o.vector3("emission", m.emission);
   m.ior = o.number("ior", m.ior);
+  // KHR_materials_volume (both models): Beer-Lambert inside; thickness 0 = thin-walled.
+  m.thickness = o.number("thickness", m.thickness);
+  m.attenuationColor = o.vector3("attenuation_color", m.attenuationColor);
+  m.attenuationDistance = o.number("attenuation_distance", m.attenuationDistance);
   m.alpha = o.number("alpha", m.alpha);
   m.doubleSided = o.boolean("double_sided", m.doubleSided);
   m.castsShadows = o.boolean("casts_shadows", m.castsShadows);
@@ -227,7 +231,8 @@ Material readMaterial(JsonObject o, const std::string& name, const Context& ctx,
     scene.textures.push_back(readCheckerTexture(std::move(*c), name));
     m.colorTexture = int(scene.textures.size()) - 1;
   }
-  for (const char* key : {"ka", "kd", "ks", "exponent", "kps", "kt"})
+  for (const char* key :
+       {"ka", "kd", "ks", "exponent", "kps", "kt", "thickness", "attenuation_distance"})
     if (o.has(key) && o.number(key, 0.f) < 0.f) o.fail(key, "must not be negative");
   if (!(m.ior > 0.f)) o.fail("ior", "must be positive");
   if (m.alpha < 0.f || m.alpha > 1.f) o.fail("alpha", "must be in [0, 1]");

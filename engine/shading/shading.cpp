@@ -32,4 +32,14 @@ ShadingMaterial toShadingMaterial(const Material& m) {
                          m.transmissionFactor, m.specularWeight, m.specularTint);
 }
 
+bool materialHasReflection(const Material& m, bool lobe) {
+  ShadingMaterial s = toShadingMaterial(m);
+  if (m.metallicRoughnessTexture >= 0) s.roughness = 0.f;
+  return hasReflection(s, lobe);
+}
+
+bool materialHasTransmission(const Material& m) {
+  return hasTransmission(toShadingMaterial(m));
+}
+
 }  // namespace diptych::shading

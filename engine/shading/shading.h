@@ -48,4 +48,17 @@ ShadingLight toShadingLight(const Light& light);
 // engine/rt/surface_point.h, which resolves them at a point).
 ShadingMaterial toShadingMaterial(const Material& material);
 
+// Whether some point of the material has a reflection / transmission signal (hasReflection /
+// hasTransmission of shading.glsl, by the material's own model), for passes that select meshes
+// before any hit: textures only scale the glTF factors down, so a metallic-roughness texture is
+// taken as possibly smooth (roughness 0) and the factors bound the rest. `lobe` as hasReflection.
+bool materialHasReflection(const Material& material, bool lobe = false);
+bool materialHasTransmission(const Material& material);
+
+// KHR_materials_volume: whether rays inside the material are attenuated (Beer-Lambert with
+// volumeTransmittance): a volume (thickness > 0; 0 is thin-walled) with an attenuation distance.
+inline bool hasVolumeAttenuation(const Material& m) {
+  return m.thickness > 0.f && m.attenuationDistance > 0.f;
+}
+
 }  // namespace diptych::shading

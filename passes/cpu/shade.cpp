@@ -85,8 +85,11 @@ void ShadePass::execute(PassContext& c) {
           const shading::LightSample s = shading::sampleLight(lights[i], sp.position);
           radiance += shading::lightContribution(sp.resolved, sp.shadingNormal, v, s, vis);
         }
-        radiance += shading::secondaryTerms(sp.resolved, sp.shadingNormal, v, rgb(reflection, x, y),
-                                            rgb(transmission, x, y));
+        // The reflection signal's alpha says whether it is a mirror ray or a prefiltered lobe.
+        const float reflectionAlpha = reflection ? reflection->f(x, y, 3) : 0.f;
+        radiance +=
+            shading::secondaryTermsOf(sp.resolved, sp.shadingNormal, v, rgb(reflection, x, y),
+                                      reflectionAlpha, rgb(transmission, x, y));
       }
       for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, radiance[ch]);
       out.setF(x, y, 3, 1.f);

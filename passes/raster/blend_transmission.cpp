@@ -8,6 +8,7 @@
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
+#include "engine/shading/shading.h"
 #include "passes/raster/fullscreen_resolve.h"
 
 namespace diptych {
@@ -79,7 +80,8 @@ std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry&
   std::vector<std::pair<float, int>> keyed;
   for (int i = 0; i < int(world.meshes.size()); ++i) {
     const WorldMesh& mesh = world.meshes[std::size_t(i)];
-    if (mesh.indices.empty() || scene.material(mesh.material).kt <= 0.f) continue;
+    if (mesh.indices.empty() || !shading::materialHasTransmission(scene.material(mesh.material)))
+      continue;
     const vec4 c = view * vec4(meshCentre(mesh), 1.f);
     keyed.emplace_back(-c.z, i);  // view depth: larger is farther
   }
@@ -117,7 +119,8 @@ void BlendTransmissionPass::execute(PassContext& c) {
   PixelRect covered{ivec2(out.width(), out.height()), ivec2(0)};
   for (std::size_t m = 0; m < geometry.meshes.size(); ++m) {
     rects[m] = windowRect(bounds[m], viewProj, out.width(), out.height());
-    if (scene.material(geometry.meshes[m].material).kt > 0.f && !rects[m].empty()) {
+    if (shading::materialHasTransmission(scene.material(geometry.meshes[m].material)) &&
+        !rects[m].empty()) {
       covered.lo = glm::min(covered.lo, rects[m].lo);
       covered.hi = glm::max(covered.hi, rects[m].hi);
     }
@@ -133,8 +136,8 @@ void BlendTransmissionPass::execute(PassContext& c) {
   opaque.scissor = scissor;
   opaque.explicitOrder = true;
   for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
-    if (scene.material(geometry.meshes[m].material).kt <= 0.f && !covered.empty() &&
-        overlap(rects[m], covered))
+    if (!shading::materialHasTransmission(scene.material(geometry.meshes[m].material)) &&
+        !covered.empty() && overlap(rects[m], covered))
       opaque.order.push_back(int(m));
   // Only pixels whose first surface transmits keep their value (the mask below zeroes the
   // rest), so the re-rendered scene is shaded there only.
@@ -148,7 +151,8 @@ void BlendTransmissionPass::execute(PassContext& c) {
     transparent.order = transparentBackToFront(scene, geometry, view.view);
   } else {  // scene order
     for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
-      if (scene.material(geometry.meshes[m].material).kt > 0.f) transparent.order.push_back(int(m));
+      if (shading::materialHasTransmission(scene.material(geometry.meshes[m].material)))
+        transparent.order.push_back(int(m));
   }
   transparent.clear = false;
   transparent.depthWrite = false;
@@ -164,7 +168,8 @@ void BlendTransmissionPass::execute(PassContext& c) {
   if (!cache.mask)
     cache.mask.emplace(
         gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"}, world.glShading().defines));
-  cache.mask->draw(world, out);
+  cache.mask->program().set("uEye", view.eye);
+  cache.mask->draw(world, out, /*multiply=*/true);
 }
 
 }  // namespace diptych

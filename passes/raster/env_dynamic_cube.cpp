@@ -6,6 +6,7 @@
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
+#include "engine/shading/shading.h"
 #include "passes/raster/fullscreen_resolve.h"
 
 namespace diptych {
@@ -53,7 +54,8 @@ void EnvDynamicCubePass::execute(PassContext& c) {
 
   clearToZero(out);
   for (const WorldMesh& mesh : world.geometry().meshes) {
-    if (mesh.indices.empty() || scene.material(mesh.material).kps <= 0.f) continue;
+    if (mesh.indices.empty() || !shading::materialHasReflection(scene.material(mesh.material)))
+      continue;
     Aabb box;
     for (const vec3& p : mesh.positions) box.extend(p);
     gl::ForwardOptions options;

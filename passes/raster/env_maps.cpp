@@ -62,12 +62,14 @@ std::array<Image, 6> cubeFacesFrom(const Environment& env, int size) {
   return faces;
 }
 
-Image equirectFrom(const Environment& env, int height) {
+vec3 equirectDirection(vec2 uv) {
   // Inverse of u = 0.5 + atan2(d.z, d.x) / 2pi, v = acos(d.y) / pi.
-  return resample(env, 2 * height, height, [](vec2 uv) {
-    const float phi = (uv.x - 0.5f) * 2.f * glm::pi<float>(), theta = uv.y * glm::pi<float>();
-    return vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-  });
+  const float phi = (uv.x - 0.5f) * 2.f * glm::pi<float>(), theta = uv.y * glm::pi<float>();
+  return vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+}
+
+Image equirectFrom(const Environment& env, int height) {
+  return resample(env, 2 * height, height, equirectDirection);
 }
 
 vec2 sphereMapCoord(vec3 r) {

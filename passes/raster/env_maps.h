@@ -18,6 +18,10 @@ vec3 cubeFaceDirection(int face, vec2 st);
 // Six square faces in GL order (+x, -x, +y, -y, +z, -z), `size` texels on a side.
 std::array<Image, 6> cubeFacesFrom(const Environment& env, int size);
 
+// The unit direction at lat-long coordinates (u, v) in [0,1]^2 (v = 0 on the top row): the
+// inverse of environment.cpp's u = 0.5 + atan2(d.z, d.x) / 2pi, v = acos(d.y) / pi.
+vec3 equirectDirection(vec2 uv);
+
 // Lat-long panorama of 2 height x height texels in environment.cpp's (u, v) convention.
 Image equirectFrom(const Environment& env, int height);
 

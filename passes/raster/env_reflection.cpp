@@ -1,24 +1,32 @@
 #include "passes/raster/env_reflection.h"
 
+#include <algorithm>
+#include <chrono>
+#include <functional>
 #include <map>
 #include <optional>
+#include <tuple>
 #include <utility>
 
+#include "engine/core/log.h"
 #include "engine/gl/objects.h"
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/gl/transfer.h"
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
+#include "engine/shading/shading.h"
 #include "passes/raster/env_maps.h"
+#include "passes/raster/env_prefilter.h"
 
 namespace diptych {
 namespace {
 
-// Uploads an engine image (row 0 on top) as one layer. transfer.h flips rows so that the top
-// row lands at GL t = 1, which is right for 2D maps whose t points up; cube faces want their
-// top row at t = 0 (table 8.19, environment.cpp), so `topRowAtT0` pre-flips them.
-void uploadImage(const gl::Texture& texture, const Image& rgba, int layer, bool topRowAtT0) {
+// Uploads an engine image (row 0 on top) as one layer of one level. transfer.h flips rows so
+// that the top row lands at GL t = 1, which is right for 2D maps whose t points up; cube faces
+// want their top row at t = 0 (table 8.19, environment.cpp), so `topRowAtT0` pre-flips them.
+void uploadImage(const gl::Texture& texture, const Image& rgba, int layer, int level,
+                 bool topRowAtT0) {
   std::vector<float> values(rgba.pixels.size());
   const std::size_t row = std::size_t(rgba.width) * 4;
   for (int y = 0; y < rgba.height; ++y) {
@@ -26,46 +34,90 @@ void uploadImage(const gl::Texture& texture, const Image& rgba, int layer, bool 
     std::copy_n(rgba.pixels.begin() + std::ptrdiff_t(from * row), row,
                 values.begin() + std::ptrdiff_t(y * row));
   }
-  gl::uploadTextureFloats(texture, values, layer);
+  gl::uploadTextureFloats(texture, values, layer, level);
 }
 
-gl::Texture makeCube(const std::array<Image, 6>& faces) {
-  gl::Texture t = gl::Texture::createCube(gl::TextureFormat::RGBA32F, faces[0].width);
-  for (int f = 0; f < 6; ++f) uploadImage(t, faces[f], f, true);
-  return t;
+// Bilinear resize of an RGBA image (texel centres aligned), for prefiltered levels computed
+// below their level's size: a rough lobe is smooth, so the upsampling loses little.
+Image resized(const Image& in, int width, int height) {
+  if (in.width == width && in.height == height) return in;
+  Image out(width, height, 4, 1.f);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float fx = std::clamp((x + 0.5f) * in.width / width - 0.5f, 0.f, in.width - 1.f);
+      const float fy = std::clamp((y + 0.5f) * in.height / height - 0.5f, 0.f, in.height - 1.f);
+      const int x0 = int(fx), y0 = int(fy);
+      const int x1 = std::min(x0 + 1, in.width - 1), y1 = std::min(y0 + 1, in.height - 1);
+      const float ax = fx - float(x0), ay = fy - float(y0);
+      for (int k = 0; k < 3; ++k)
+        out.at(x, y, k) = (1 - ay) * ((1 - ax) * in.at(x0, y0, k) + ax * in.at(x1, y0, k)) +
+                          ay * ((1 - ax) * in.at(x0, y1, k) + ax * in.at(x1, y1, k));
+    }
+  return out;
 }
 
-gl::Texture make2D(const Image& rgba, bool wrapS) {
-  gl::Texture t = gl::Texture::create2D(gl::TextureFormat::RGBA32F, rgba.width, rgba.height);
-  uploadImage(t, rgba, 0, false);
-  // The lat-long seam at u = 0/1 is continuous: wrap, as environment.cpp's bilinear does.
-  if (wrapS) gl::glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-  return t;
-}
+// Largest side a prefiltered level is computed at (cube face; lat-long and sphere width), then
+// resized to its level: it bounds the one-time cost for large sources.
+constexpr int kPrefilterCubeCap = 64, kPrefilter2dCap = 256;
+constexpr int kPrefilterSourceSize = 128;  // cube face side of the prefilter's source chain
 
 // The map of one kind for the world's environment, built on the CPU (env_maps.h) or uploaded
 // from the scene's own images when they already have the right layout. A solid colour becomes
-// a one-texel map: bilinear filtering of a constant is that constant.
+// a one-texel map: bilinear filtering of a constant is that constant. With `prefilter`, levels
+// 1.. hold the GGX-prefiltered environment (env_prefilter.h); level 0 is the map itself.
 gl::Texture buildMap(const Environment& env, EnvMapKind kind, int resolution,
-                     const mat3& eyeToWorld) {
+                     const mat3& eyeToWorld, bool prefilter, double& prefilterMs) {
   const bool constant = env.type == EnvironmentType::Color;
   const int res = constant ? 1 : resolution;
+  std::vector<Image> base;  // level 0, one image per layer
   switch (kind) {
     case EnvMapKind::Cube:
-      if (env.type == EnvironmentType::Cube) {
-        std::array<Image, 6> faces;
-        for (int f = 0; f < 6; ++f) faces[f] = envmap::rgbaScaled(env.cubeFaces[f], env.intensity);
-        return makeCube(faces);
-      }
-      return makeCube(envmap::cubeFacesFrom(env, res));
+      if (env.type == EnvironmentType::Cube)
+        for (int f = 0; f < 6; ++f)
+          base.push_back(envmap::rgbaScaled(env.cubeFaces[f], env.intensity));
+      else
+        for (Image& face : envmap::cubeFacesFrom(env, res)) base.push_back(std::move(face));
+      break;
     case EnvMapKind::Equirect:
-      if (env.type == EnvironmentType::Equirect)
-        return make2D(envmap::rgbaScaled(env.equirect, env.intensity), true);
-      return make2D(envmap::equirectFrom(env, res), true);
+      base.push_back(env.type == EnvironmentType::Equirect
+                         ? envmap::rgbaScaled(env.equirect, env.intensity)
+                         : envmap::equirectFrom(env, res));
+      break;
     case EnvMapKind::Sphere:
-      return make2D(envmap::sphereMapFrom(env, res, eyeToWorld), false);
+      base.push_back(envmap::sphereMapFrom(env, res, eyeToWorld));
+      break;
   }
-  return {};
+  const bool cube = kind == EnvMapKind::Cube;
+  const int w = base[0].width, h = base[0].height;
+  const int levels = prefilter && !constant ? envmap::prefilterLevelCount(w, h) : 1;
+  gl::Texture t = cube ? gl::Texture::createCube(gl::TextureFormat::RGBA32F, w, levels)
+                       : gl::Texture::create2D(gl::TextureFormat::RGBA32F, w, h, levels);
+  for (std::size_t layer = 0; layer < base.size(); ++layer)
+    uploadImage(t, base[layer], int(layer), 0, cube);
+  // The lat-long seam at u = 0/1 is continuous: wrap, as environment.cpp's bilinear does.
+  if (kind == EnvMapKind::Equirect) gl::glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  if (levels == 1) return t;
+  const auto start = std::chrono::steady_clock::now();
+  const envmap::CubeChain source(env, kPrefilterSourceSize);
+  for (int level = 1; level < levels; ++level) {
+    const float roughness = float(level) / float(levels - 1);
+    const int lw = std::max(1, w >> level), lh = std::max(1, h >> level);
+    const int cap = cube ? kPrefilterCubeCap : kPrefilter2dCap;
+    const int cw = std::min(lw, cap), ch = std::max(1, lh * cw / lw);
+    for (std::size_t layer = 0; layer < base.size(); ++layer) {
+      const int f = int(layer);
+      const std::function<vec3(vec2)> direction = [&](vec2 st) -> vec3 {
+        if (cube) return envmap::cubeFaceDirection(f, st);
+        if (kind == EnvMapKind::Equirect) return envmap::equirectDirection(st);
+        return eyeToWorld * envmap::sphereMapDirection(vec2(st.x, 1.f - st.y));
+      };
+      const Image filtered = envmap::prefilteredLevel(source, cw, ch, roughness, direction);
+      uploadImage(t, resized(filtered, lw, lh), f, level, cube);
+    }
+  }
+  prefilterMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return t;
 }
 
 // GL state of the env_* passes, one per RenderWorld (render_world.h: never in the pass).
@@ -75,7 +127,7 @@ struct EnvReflectionGl {
     mat3 eyeToWorld{1.f};  // the frame a sphere map was built for
   };
   std::map<EnvMapKind, gl::Program> programs;
-  std::map<std::pair<EnvMapKind, int>, Map> maps;
+  std::map<std::tuple<EnvMapKind, int, bool>, Map> maps;
 
   // Compiled for the world's scene (engine/gl/shader_features.h): the material paths it lacks
   // are folded away.
@@ -91,13 +143,14 @@ struct EnvReflectionGl {
         .first->second;
   }
 
-  // A sphere map depends on the view; it is rebuilt when the camera turns.
+  // A sphere map depends on the view; it is rebuilt when the camera turns. `prefilterMs` is
+  // set to the prefiltering time when this call built prefiltered levels, else left alone.
   const gl::Texture& map(const Environment& env, EnvMapKind kind, int resolution,
-                         const mat3& eyeToWorld) {
-    Map& m = maps[{kind, resolution}];
+                         const mat3& eyeToWorld, bool prefilter, double& prefilterMs) {
+    Map& m = maps[{kind, resolution, prefilter}];
     const bool stale = kind == EnvMapKind::Sphere && m.eyeToWorld != eyeToWorld;
     if (!m.texture || stale) {
-      m.texture = buildMap(env, kind, resolution, eyeToWorld);
+      m.texture = buildMap(env, kind, resolution, eyeToWorld, prefilter, prefilterMs);
       m.eyeToWorld = eyeToWorld;
     }
     return m.texture;
@@ -112,11 +165,19 @@ ParamSchema EnvReflectionPass::schema(EnvMapKind kind) {
   return {ParamSpec::integer("resolution", kind == EnvMapKind::Cube ? 256 : 512, 1, 8192,
                              kind == EnvMapKind::Cube     ? "cube face side of a resampled map"
                              : kind == EnvMapKind::Sphere ? "sphere map side"
-                                                          : "lat-long height of a resampled map")};
+                                                          : "lat-long height of a resampled map"),
+          ParamSpec::boolean("prefilter", true,
+                             "GGX-prefiltered levels for rough glTF materials (split sum); false: "
+                             "one mirror lookup, faded by roughness")};
 }
 
 void EnvReflectionPass::setup(PassBuilder& b) {
   resolution_ = b.params().integer("resolution");
+  // Prefiltered levels only serve glTF lobes: a scene without one keeps the single-level map.
+  prefilter_ = b.params().boolean("prefilter") &&
+               std::ranges::any_of(b.scene().materials, [](const Material& m) {
+                 return m.model == ShadingModel::Gltf && shading::materialHasReflection(m, true);
+               });
   io_ = slotIo(b, "reflection");
 }
 
@@ -125,8 +186,18 @@ void EnvReflectionPass::execute(PassContext& c) {
   const Camera& camera = c.frame().camera;
   const mat3 worldToEye(viewMatrix(camera));
   EnvReflectionGl& state = world.glCached<EnvReflectionGl>();
-  const gl::Texture& map =
-      state.map(world.scene().environment, kind_, resolution_, glm::transpose(worldToEye));
+  double prefilterMs = -1.0;
+  const gl::Texture& map = state.map(world.scene().environment, kind_, resolution_,
+                                     glm::transpose(worldToEye), prefilter_, prefilterMs);
+  if (prefilterMs >= 0.0) {  // a one-time cost per environment (and per view for env_sphere)
+    const char* name = kind_ == EnvMapKind::Cube     ? "env_cube"
+                       : kind_ == EnvMapKind::Sphere ? "env_sphere"
+                                                     : "env_equirect";
+    c.count("prefilter_ms", prefilterMs);
+    world.oneTimeMs[std::string(name) + " prefilter"] += prefilterMs;
+    log().info("{}: GGX-prefiltered {} levels in {:.1f} ms (once per environment{})", name,
+               map.levels() - 1, prefilterMs, kind_ == EnvMapKind::Sphere ? " and view" : "");
+  }
   const gl::GlShadingBuffers& shading = world.glShading();
   const gl::Program& program = state.program(kind_, shading.defines);
 
@@ -137,6 +208,7 @@ void EnvReflectionPass::execute(PassContext& c) {
   program.set("uLightCount", shading.lightCount);
   program.set("uCameraPosition", camera.position);
   program.set("uWorldToEye", mat4(worldToEye));
+  program.set("uMaxLod", float(map.levels() - 1));
   // Filtering across cube faces (GL 4.5 section 8.13.1) instead of clamping at each face edge.
   if (kind_ == EnvMapKind::Cube) gl::glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   gl::glBindTextureUnit(0, c.glTexture(io_.hits).id());

@@ -22,7 +22,10 @@ class EnvReflectionPass : public Pass {
 
  private:
   EnvMapKind kind_;
-  int resolution_ = 0;  // texels of a resampled map (cube face side, sphere side, lat-long height)
+  int resolution_ = 0;
+  bool prefilter_ =
+      false;  // GGX-prefiltered levels (env_prefilter.h), when a glTF lobe wants them  // texels of
+              // a resampled map (cube face side, sphere side, lat-long height)
   SlotIo io_;
 };
 

@@ -11,7 +11,7 @@ FullscreenResolve::FullscreenResolve(gl::Program program)
       framebuffer_(gl::Framebuffer::create()),
       empty_(gl::VertexArray::create()) {}
 
-void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target) {
+void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target, bool multiply) {
   world.glScene().bindStorage();
   world.glShading().bindStorage();
   framebuffer_.attachColor(0, target);
@@ -19,7 +19,12 @@ void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target) {
   framebuffer_.bind();
   gl::glViewport(0, 0, target.width(), target.height());
   gl::glDisable(GL_DEPTH_TEST);
-  gl::glDisable(GL_BLEND);
+  if (multiply) {
+    gl::glEnable(GL_BLEND);
+    gl::glBlendFunc(GL_ZERO, GL_SRC_COLOR);
+  } else {
+    gl::glDisable(GL_BLEND);
+  }
   gl::glDisable(GL_CULL_FACE);
   gl::glDisable(GL_SCISSOR_TEST);
   gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -28,6 +33,10 @@ void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target) {
   empty_.bind();
   gl::glDrawArrays(GL_TRIANGLES, 0, 3);
   gl::glBindVertexArray(0);
+  if (multiply) {
+    gl::glDisable(GL_BLEND);
+    gl::glBlendFunc(GL_ONE, GL_ZERO);
+  }
   gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

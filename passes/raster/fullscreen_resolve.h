@@ -12,8 +12,9 @@ class FullscreenResolve {
  public:
   explicit FullscreenResolve(gl::Program program);
   const gl::Program& program() const { return program_; }
-  // Draws over all of `target` (no depth, no blending); the caller set uniforms and textures.
-  void draw(RenderWorld& world, const gl::Texture& target);
+  // Draws over all of `target` (no depth, no blending, or with `multiply` dst * src); the caller
+  // set uniforms and textures.
+  void draw(RenderWorld& world, const gl::Texture& target, bool multiply = false);
 
  private:
   gl::Program program_;

@@ -6,6 +6,7 @@
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
 #include "engine/graph/render_world.h"
+#include "engine/shading/shading.h"
 #include "passes/raster/fullscreen_resolve.h"
 
 namespace diptych {
@@ -31,7 +32,8 @@ struct MirrorCache {
 std::vector<MirrorPlane> findPlanarMirrors(const Scene& scene, const WorldGeometry& world) {
   std::vector<MirrorPlane> mirrors;
   for (const WorldMesh& mesh : world.meshes) {
-    if (mesh.indices.empty() || scene.material(mesh.material).kps <= 0.f) continue;
+    if (mesh.indices.empty() || !shading::materialHasReflection(scene.material(mesh.material)))
+      continue;
     vec3 best(0.f);  // cross product of the largest triangle: the best-conditioned normal
     vec3 anchor(0.f);
     Aabb box;

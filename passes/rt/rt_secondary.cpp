@@ -2,9 +2,12 @@
 
 #include <tbb/parallel_for.h>
 
+#include <optional>
+
 #include "engine/graph/render_world.h"
 #include "engine/rt/ray_cone.h"
 #include "engine/rt/whitted.h"
+#include "engine/shading/shading.h"
 #include "passes/common/hits_texel.h"
 
 namespace diptych {
@@ -48,10 +51,17 @@ void RtSecondaryPass::execute(PassContext& c) {
           texel ? &scene.material(
                       scene.meshes[scene.instances.at(std::size_t(texel->instance)).mesh].material)
                 : nullptr;
-      if (m && (reflection ? m->kps > 0.f : m->kt > 0.f)) {
-        if (const auto hit = exactTexel(hits, world.geometry(), hitsPinhole, x, y)) {
-          const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
-          const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
+      if (m && (reflection ? shading::materialHasReflection(*m)
+                           : shading::materialHasTransmission(*m))) {
+        const auto hit = exactTexel(hits, world.geometry(), hitsPinhole, x, y);
+        const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
+        const std::optional<SurfacePoint> sp =
+            hit ? std::optional(makeSurfacePoint(scene, world.geometry(), *hit, eye.direction))
+                : std::nullopt;
+        // Per point, as Whitted decides (a texture may make this texel rough or not metal).
+        if (sp && (reflection ? shading::hasReflection(sp->resolved, false)
+                              : shading::hasTransmission(sp->resolved))) {
+          const SurfacePoint& p = *sp;
           const std::uint32_t seed = std::uint32_t(y * frame.width + x);
           // The G-buffer point is the lecture's depth 1; its secondary rays are depth 2. Its cone
           // (RTG eq. 20.30) has width spread * distance there.

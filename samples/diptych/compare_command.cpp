@@ -21,6 +21,7 @@
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/load.h"
 #include "engine/scene/primitives.h"
+#include "engine/shading/shading.h"
 #include "engine/shading/surface_detail.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
@@ -82,8 +83,10 @@ nlohmann::json signalErrors(const Scene& scene, const GraphRun& run, const Recip
     }
   }
   const std::pair<const char*, std::function<float(const Material&)>> radianceSlots[] = {
-      {"reflection", [](const Material& m) { return m.kps; }},
-      {"transmission", [](const Material& m) { return m.kt; }}};
+      {"reflection",
+       [](const Material& m) { return shading::materialHasReflection(m) ? 1.f : 0.f; }},
+      {"transmission",
+       [](const Material& m) { return shading::materialHasTransmission(m) ? 1.f : 0.f; }}};
   for (const auto& [slot, pick] : radianceSlots) {
     auto [mine, ref] = signalPair(slot);
     if (!mine || !(mine->desc == ref->desc)) continue;

@@ -195,10 +195,13 @@ void runRender(const RenderOptions& o) {
         o.frames, o.warmup);
     j["scene"] = o.scene;
     j["devices"] = devices;
+    j["one_time_ms"] = world.oneTimeMs;
     writeTextFile(o.timingsOut, j.dump(2));
     std::printf("wrote %s\n", o.timingsOut.c_str());
   }
   printTimingTable(graph, executor, o);
+  for (const auto& [what, ms] : world.oneTimeMs)  // not in the frame medians above
+    std::printf("one-time: %s %.3f ms\n", what.c_str(), ms);
   std::printf("devices: %s\n", deviceSummary(devices).c_str());
 }
 

@@ -13,6 +13,7 @@
 #include "engine/scene/load.h"
 #include "passes/registry.h"
 #include "samples/diptych/parse_size.h"
+#include "samples/diptych/shading_option.h"
 #include "samples/diptych/view/script.h"
 #include "samples/diptych/view/session.h"
 #include "samples/diptych/view/viewer.h"
@@ -25,6 +26,7 @@ struct ViewOptions {
   std::vector<std::string> slots;
   float exposure = 0.f;
   std::string tonemap = "clamp";
+  std::string shading;  // --shading lecture|gltf (empty: each material its own)
   LightingOptions lighting;
   bool verbose = false;
 };
@@ -37,12 +39,14 @@ void runView(const ViewOptions& o) {
   if (!tone) throw InputError("--tonemap", "", "expected clamp, reinhard or aces");
   if (!std::filesystem::is_directory(o.out))
     throw InputError("--out", "", o.out + ": folder does not exist");
+  checkShadingOption(o.shading);
   view::ViewerOptions viewer{.outDir = o.out, .scriptPath = o.script};
   if (!o.script.empty()) viewer.script = view::loadScript(o.script);
   Scene scene = loadScene(o.scene);
   for (const std::string& w : scene.warnings) log().warn("{}", w);
   const Camera camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds());
   if (auto line = applyLighting(scene, camera, o.lighting)) log().warn("{}", *line);
+  applyShadingOption(scene, o.shading);  // as render does: after the default lighting
   Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);
   for (const std::string& text : o.slots)
     applySlotOverride(recipe, parseSlotOverride(text), builtinPasses());
@@ -95,6 +99,7 @@ void addViewCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--tonemap", options->tonemap, "clamp, reinhard or aces")->capture_default_str();
   cmd->add_option("--env", options->lighting.environmentFile, "Equirect environment image");
   cmd->add_option("--light", options->lighting.lightJson, "Add a light (JSON, as in a scene)");
+  addShadingOption(cmd, options->shading);
   cmd->add_flag("-v,--verbose", options->verbose, "Log debug messages");
   cmd->callback([options, &exitCode] {
     runView(*options);

@@ -16,8 +16,9 @@
 // E / pi (docs/materials.md), so one light contributes f E n.l = pi f n.l S_i: pbrDirect returns
 // pi f n.l, which for a white diffuse surface is n.l, the lecture's k_d C n.l with k_d C = 1.
 // The transmission BTDF is a delta here (the transmission signal, traced along refractLecture):
-// lights are not seen through a rough transmissive surface. KHR_materials_volume is not part
-// of the model (no attenuation inside).
+// lights are not seen through a rough transmissive surface. KHR_materials_volume attenuates
+// inside the medium (volumeTransmittance in shading.glsl), applied by the tracers and the
+// raster blend producers, not by this BRDF.
 #ifndef DIPTYCH_PBR_GLSL
 #define DIPTYCH_PBR_GLSL
 
@@ -100,27 +101,53 @@ SHADING_FN vec2 pbrEnvironmentBrdf(float nv, float roughness) {
   return vec2(1.04f - 1.04f * a004 - 0.572f * r, 1.04f * a004 - 0.04f + 0.022f * r);
 }
 
-// Factors of the reflection signal (radiance along the mirror direction of v) and of the
-// transmission signal (along the refracted direction):
-//   reflection   = (1 - roughness) mix(w E(f0_d), E(base), metallic), E from pbrEnvironmentBrdf:
-//                  the Fresnel-weighted albedo of the specular lobe, fading out with roughness
-//                  as the lecture mapping's k_ps does (a mirror ray stands for a sharp lobe
-//                  only; a rough lobe's environment light is left out, not smeared);
-//   transmission = (1 - metallic) transmission (1 - w max(F_d(n.v))) base: what the dielectric's
-//                  Fresnel layer lets through, tinted by the base colour (KHR_materials_transmission).
-SHADING_FN SecondaryWeights pbrSecondaryWeights(ShadingMaterial m, vec3 n, vec3 v) {
+// The specular lobe's Fresnel-weighted directional albedo, mix(w E(f0_d), E(base), metallic) with
+// E = f0 A + B from pbrEnvironmentBrdf: the split sum's second factor (Karis 2013). It weights a
+// reflection signal that is already the lobe's prefiltered radiance (env_* with prefiltered
+// levels, docs/environment-maps.md), for which no roughness fade applies.
+SHADING_FN vec3 pbrLobeReflectionWeight(ShadingMaterial m, vec3 n, vec3 v) {
   float nv = clamp(dot(safeNormalize(n), safeNormalize(v)), 1.0e-4f, 1.0f);
   vec2 ab = pbrEnvironmentBrdf(nv, m.roughness);
   vec3 base = clamp(m.baseColor, vec3(0.0f), vec3(1.0f));
   vec3 f0 = pbrDielectricF0(m);
   float w = saturate01(m.specularWeight);
+  vec3 albedo = mix(w * (f0 * ab.x + vec3(ab.y)), base * ab.x + vec3(ab.y), saturate01(m.metallic));
+  return clamp(albedo, vec3(0.0f), vec3(1.0f));
+}
+
+// Factors of the reflection signal (radiance along the mirror direction of v) and of the
+// transmission signal (along the refracted direction):
+//   reflection   = (1 - roughness) pbrLobeReflectionWeight: the Fresnel-weighted albedo of the
+//                  specular lobe, fading out with roughness as the lecture mapping's k_ps does
+//                  (a mirror ray stands for a sharp lobe only; a rough lobe's environment light
+//                  is left out, not smeared, unless the signal is prefiltered: secondaryTermsOf);
+//   transmission = (1 - metallic) transmission (1 - w max(F_d(n.v))) base: what the dielectric's
+//                  Fresnel layer lets through, tinted by the base colour (KHR_materials_transmission).
+SHADING_FN SecondaryWeights pbrSecondaryWeights(ShadingMaterial m, vec3 n, vec3 v) {
+  float nv = clamp(dot(safeNormalize(n), safeNormalize(v)), 1.0e-4f, 1.0f);
+  vec3 reflection = (1.0f - saturate01(m.roughness)) * pbrLobeReflectionWeight(m, n, v);
+  vec3 f0 = pbrDielectricF0(m);
+  float w = saturate01(m.specularWeight);
   float metallic = saturate01(m.metallic);
-  vec3 albedo = mix(w * (f0 * ab.x + vec3(ab.y)), base * ab.x + vec3(ab.y), metallic);
-  vec3 reflection = (1.0f - saturate01(m.roughness)) * clamp(albedo, vec3(0.0f), vec3(1.0f));
+  vec3 base = clamp(m.baseColor, vec3(0.0f), vec3(1.0f));
   vec3 fd = f0 + (vec3(1.0f) - f0) * pbrSchlickWeight(nv);
   float fMax = max(fd.x, max(fd.y, fd.z));
   vec3 transmission = ((1.0f - metallic) * saturate01(m.transmission) * (1.0f - w * fMax)) * base;
   return SecondaryWeights(reflection, transmission);
+}
+
+// Whether the glTF model gives the reflection signal a weight: a specular lobe exists (a metal, or
+// a dielectric with specularWeight > 0: Schlick's Fresnel reaches 1 at grazing even at f0 = 0)
+// and a mirror ray stands for it (roughness < 1), or, for a prefiltered lobe signal, at any
+// roughness. The transmission signal: (1 - metallic) transmission > 0 and a base colour.
+SHADING_FN bool pbrHasReflection(ShadingMaterial m, bool lobe) {
+  bool specular = saturate01(m.metallic) > 0.0f || saturate01(m.specularWeight) > 0.0f;
+  return specular && (lobe || saturate01(m.roughness) < 1.0f);
+}
+SHADING_FN bool pbrHasTransmission(ShadingMaterial m) {
+  vec3 base = clamp(m.baseColor, vec3(0.0f), vec3(1.0f));
+  return (1.0f - saturate01(m.metallic)) * saturate01(m.transmission) > 0.0f &&
+         max(base.x, max(base.y, base.z)) > 0.0f;
 }
 
 #endif  // DIPTYCH_PBR_GLSL

@@ -297,4 +297,39 @@ SHADING_FN vec3 secondaryTerms(ShadingMaterial m, vec3 n, vec3 v, vec3 reflected
   return min(w.reflection * reflected + w.transmission * transmitted, vec3(SHADING_FLT_MAX));
 }
 
+// Beer-Lambert transmittance of KHR_materials_volume over a path of length d inside the medium:
+// T = c^(d / d_a) per channel, i.e. exp(-sigma d) with sigma = -ln(c) / d_a (c the attenuation
+// colour reached after the attenuation distance d_a). 1 when d_a <= 0 (no attenuation) or d <= 0.
+SHADING_FN vec3 volumeTransmittance(vec3 attenuationColor, float attenuationDistance, float d) {
+  if (!(attenuationDistance > 0.0f) || !(d > 0.0f)) return vec3(1.0f);
+  vec3 c = clamp(attenuationColor, vec3(0.0f), vec3(1.0f));
+  float x = min(d / attenuationDistance, SHADING_FLT_MAX);
+  return vec3(pow(c.x, x), pow(c.y, x), pow(c.z, x));
+}
+
+// Whether the reflection / transmission signal has a weight for this material, by its own model:
+// the gate of every producer and of Whitted (docs/materials.md). Lecture: k_ps > 0, k_t > 0;
+// glTF: pbrHasReflection / pbrHasTransmission. `lobe`: the producer writes the specular lobe's
+// prefiltered radiance (env_* prefiltered), which rough glTF lobes also want.
+SHADING_FN bool hasReflection(ShadingMaterial m, bool lobe) {
+  if (m.model == SHADING_MODEL_GLTF) return pbrHasReflection(m, lobe);
+  return m.kps > 0.0f;
+}
+SHADING_FN bool hasTransmission(ShadingMaterial m) {
+  if (m.model == SHADING_MODEL_GLTF) return pbrHasTransmission(m);
+  return m.kt > 0.0f;
+}
+
+// The reflection signal's alpha says what it holds: 1 radiance along the mirror direction
+// (weighted by secondaryWeights), 2 the GGX lobe's prefiltered radiance (env_* with prefiltered
+// levels), which a glTF material weights by the lobe's albedo without the roughness fade (the
+// split sum, Karis 2013). The lecture model has no lobe: alpha 2 never reaches it.
+SHADING_FN vec3 secondaryTermsOf(ShadingMaterial m, vec3 n, vec3 v, vec3 reflected,
+                                 float reflectedAlpha, vec3 transmitted) {
+  SecondaryWeights w = secondaryWeights(m, n, v);
+  if (reflectedAlpha > 1.5f && m.model == SHADING_MODEL_GLTF)
+    w.reflection = pbrLobeReflectionWeight(m, n, v);
+  return min(w.reflection * reflected + w.transmission * transmitted, vec3(SHADING_FLT_MAX));
+}
+
 #endif  // DIPTYCH_SHADING_GLSL

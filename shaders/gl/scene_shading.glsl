@@ -21,7 +21,7 @@ struct GpuMaterial {
   vec4 texColorEmitMrAo;      // base colour, emission, metallic-roughness, occlusion textures
   vec4 texNormalScales;       // normal texture, normal scale, occlusion strength, transmission
   vec4 baseFactorMetallic;    // glTF baseColorFactor.rgb, metallicFactor
-  vec4 roughnessFactor;       // glTF roughnessFactor, 0, 0, 0
+  vec4 roughnessFactor;       // glTF roughnessFactor, volume transmittance over the thickness (rgb)
   // --- end textures ---
   vec4 bumpKindTexKDelta;     // bump: 0 none, 1 height texture, 2 sinusoid; texture, k, delta
   vec4 bumpWave;              // sinusoid amplitude, frequency u, frequency v, unused
@@ -139,6 +139,10 @@ ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
 }
 
 ShadingMaterial sceneMaterial(int m, vec2 uv) { return sceneMaterialLod(m, uv, -3.0e38); }
+
+// KHR_materials_volume on the raster side: volumeTransmittance over the material's
+// thicknessFactor (1 for thin-walled materials), packed by engine/gl/shading_buffers.cpp.
+vec3 sceneVolumeTransmittance(int m) { return sceneMaterials[m + 1].roughnessFactor.yzw; }
 
 // glTF 3.9.3 normal map as engine/rt/surface_point.cpp normalMapped: n' = normalize(T x + B y
 // + N z), (x, y, z) = (2 texel - 1) * (scale, scale, 1), T Gram-Schmidt against n, B = w (N x T).

@@ -179,6 +179,32 @@ if(NOT VIEW_OUT MATCHES "quit" OR NOT ref STREQUAL "whitted" OR NOT wrmse GREATE
 endif()
 file(WRITE "${WORK_DIR}/quit.txt" "quit\n")
 
+# --shading as in render: the viewer's frame under --shading gltf equals render's with the same
+# option, recipe and camera, and differs from the frame without it (so the option took effect).
+file(WRITE "${WORK_DIR}/gltf.txt" "frames 1\nscreenshot gltf\nwrite-recipe gltf\nquit\n")
+run_view(shading ${SCENE} --size 64x48 --shading gltf --script gltf.txt)
+json_get(gltf.json gw size 0)
+json_get(gltf.json gh size 1)
+foreach(model gltf none)
+  set(extra)
+  if(model STREQUAL "gltf")
+    set(extra --shading gltf)
+  endif()
+  execute_process(COMMAND ${XVFB} ${DIPTYCH} render ${SCENE} --recipe gltf.recipe.json
+                          --camera gltf.camera.json --size ${gw}x${gh} --frames 1 --warmup 0
+                          --context glfw --out shading-${model}.png ${extra}
+                  WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "[shading] render ${model} failed: ${err}")
+  endif()
+endforeach()
+image_metric(gltf.png shading-gltf.png rmse same)
+image_metric(gltf.png shading-none.png rmse other)
+if(NOT same EQUAL 0 OR NOT other GREATER 0)
+  message(FATAL_ERROR "[shading] view --shading gltf vs render --shading gltf: rmse ${same} (expected 0); vs render without: ${other} (expected > 0)")
+endif()
+expect_failure(bad_shading EXPECT "--shading" "expected lecture or gltf" ARGS view ${SCENE} --shading phong)
+
 # A script command that fails once the window is open (a value its schema rejects): one error
 # line naming the script line, non-zero exit, the window closed.
 file(WRITE "${WORK_DIR}/bad_param.txt" "slot visibility=shadow_map\nparam visibility bias=bogus\nquit\n")

@@ -29,3 +29,14 @@ cat >"$TMP/bump.json" <<'JSON'
    {"type": "plane", "size": [1.6, 1.6], "material": "bumpy", "transform": {"translate": [0.85, 0, 0]}}]}
 JSON
 render "$TMP/bump.json" --size 480x240 --out "$OUT/materials-bump.png"
+# Rough reflections (docs/materials-secondary.md), under a studio HDR (plus the default sun):
+# the raster recipe without prefiltering (mirror faded by roughness), with it, and the path
+# tracer (64 spp).
+studio="--env $SCENES/hdri/studio_small_03_1k.hdr"
+render "$spheres" $studio --size 256x256 --recipe samples/graphs/raster.json \
+  --slot reflection=env_cube:prefilter=false --out "$TMP/raster-mirror.png"
+render "$spheres" $studio --size 256x256 --recipe samples/graphs/raster.json --out "$TMP/raster-pre.png"
+sed 's/"spp": 4/"spp": 64/' samples/graphs/path.json >"$TMP/path64.json"
+render "$spheres" $studio --size 256x256 --recipe "$TMP/path64.json" --out "$TMP/path.png"
+oiiotool "$TMP/raster-mirror.png" "$TMP/raster-pre.png" "$TMP/path.png" --mosaic 3x1 \
+  -o "$OUT/materials-prefilter.png"

@@ -1,0 +1,115 @@
+// Whether the reflection / transmission signals exist follows the material's own model
+// (shading.glsl hasReflection / hasTransmission), not the lecture mapping's k_ps / k_t. On a glTF
+// file (samples/scenes/blender-point-light.gltf, its materials edited here):
+//   Glossy  roughness 0.2 with KHR_materials_specular specularFactor 0: the lecture mapping keeps
+//           k_ps = F0 (1 - r) > 0, but the glTF model has no specular lobe: no reflection signal;
+//   Ground  roughness 0.5 with KHR_materials_ior ior 1: F0 = 0, so k_ps = 0, but Schlick's
+//           Fresnel still reflects at grazing: the reflection signal is traced;
+//   Glass   transmission 1: the transmission signal, as before.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "engine/graph/executor.h"
+#include "engine/graph/frame_graph.h"
+#include "engine/graph/recipe.h"
+#include "engine/graph/render_world.h"
+#include "engine/scene/load.h"
+#include "engine/shading/shading.h"
+#include "gl_test_context.h"
+#include "passes/common/hits_texel.h"
+#include "passes/registry.h"
+#include "tests/support/test_paths.h"
+
+namespace diptych {
+namespace {
+
+namespace fs = std::filesystem;
+
+Scene editedScene() {
+  const fs::path dir = testing::scratchDir("material_gates");
+  nlohmann::json gltf;
+  std::ifstream(fs::path(DIPTYCH_SAMPLES_DIR) / "scenes" / "blender-point-light.gltf") >> gltf;
+  for (nlohmann::json& m : gltf["materials"]) {
+    if (m["name"] == "Glossy") m["extensions"]["KHR_materials_specular"] = {{"specularFactor", 0}};
+    if (m["name"] == "Ground") {
+      m["pbrMetallicRoughness"]["roughnessFactor"] = 0.5;
+      m["extensions"]["KHR_materials_ior"] = {{"ior", 1.0}};
+    }
+  }
+  gltf["extensionsUsed"].push_back("KHR_materials_specular");
+  gltf["extensionsUsed"].push_back("KHR_materials_ior");
+  // The buffers are embedded (data URIs), so the edited copy stands alone.
+  std::ofstream(dir / "edited.gltf") << gltf.dump();
+  // A white sky, so that every traced reflection ray brings back something.
+  const nlohmann::json scene = {{"environment", {{"color", {1, 1, 1}}}},
+                                {"objects", {{{"type", "gltf"}, {"file", "edited.gltf"}}}}};
+  std::ofstream(dir / "scene.json") << scene.dump();
+  return loadScene(dir / "scene.json");
+}
+
+const Material& named(const Scene& s, const std::string& name) {
+  for (const Material& m : s.materials)
+    if (m.name == name) return m;
+  ADD_FAILURE() << "no material " << name;
+  return s.materials.front();
+}
+
+TEST(MaterialGates, TheGltfModelDecidesNotTheLectureMapping) {
+  const Scene scene = editedScene();
+  const Material& glossy = named(scene, "Glossy");
+  const Material& ground = named(scene, "Ground");
+  const Material& glass = named(scene, "Glass");
+  EXPECT_GT(glossy.kps, 0.f);  // the lecture mapping alone would trace it
+  EXPECT_FALSE(shading::materialHasReflection(glossy));
+  EXPECT_EQ(ground.kps, 0.f);  // ... and would not trace this one
+  EXPECT_TRUE(shading::materialHasReflection(ground));
+  EXPECT_TRUE(shading::materialHasTransmission(glass));
+  EXPECT_FALSE(shading::materialHasTransmission(ground));
+}
+
+// The exact producers follow the same gate: rt_reflection leaves the Glossy sphere at 0 and
+// traces the Ground, rt_transmission traces the Glass.
+TEST(MaterialGates, RtProducersTraceWhatTheModelWeights) {
+  const Scene scene = editedScene();
+  const nlohmann::json recipe = {
+      {"passes",
+       {{{"name", "gbuffer"}, {"type", "gbuffer"}},
+        {{"name", "refl"}, {"type", "rt_reflection"}, {"inputs", {{"hits", "gbuffer.hits"}}}},
+        {{"name", "trans"}, {"type", "rt_transmission"}, {"inputs", {{"hits", "gbuffer.hits"}}}}}},
+      {"outputs", {"refl.reflection", "trans.transmission", "gbuffer.hits"}}};
+  const FrameSettings frame{.width = 96, .height = 64, .camera = scene.camera};
+  const CompiledGraph graph =
+      compileGraph(parseRecipe(recipe, "test"), builtinPasses(), scene, frame);
+  RenderWorld world(scene, &gl::testing::osmesaContext());  // the G-buffer is GL
+  GraphExecutor executor(graph, world);
+  executor.runFrame();
+  const CpuImage& hits = executor.output("gbuffer.hits");
+  const CpuImage& refl = executor.output("refl.reflection");
+  const CpuImage& trans = executor.output("trans.transmission");
+  std::map<std::string, int> pixels, reflected, transmitted;
+  for (int y = 0; y < frame.height; ++y)
+    for (int x = 0; x < frame.width; ++x) {
+      const auto texel = hitsTexel(hits, x, y);
+      if (!texel) continue;
+      const std::string& name =
+          scene
+              .material(
+                  scene.meshes[scene.instances.at(std::size_t(texel->instance)).mesh].material)
+              .name;
+      ++pixels[name];
+      if (refl.f(x, y, 0) + refl.f(x, y, 1) + refl.f(x, y, 2) > 0.f) ++reflected[name];
+      if (trans.f(x, y, 0) + trans.f(x, y, 1) + trans.f(x, y, 2) > 0.f) ++transmitted[name];
+    }
+  ASSERT_GT(pixels["Glossy"], 50);
+  ASSERT_GT(pixels["Ground"], 500);
+  ASSERT_GT(pixels["Glass"], 50);
+  EXPECT_EQ(reflected["Glossy"], 0);
+  EXPECT_GT(reflected["Ground"], pixels["Ground"] / 2);
+  EXPECT_GT(transmitted["Glass"], pixels["Glass"] / 2);
+  EXPECT_EQ(transmitted["Ground"], 0);
+}
+
+}  // namespace
+}  // namespace diptych
