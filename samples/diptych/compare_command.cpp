@@ -236,9 +236,17 @@ void runCompare(const CompareOptions& o) {
       tessellatedWorld = std::make_unique<RenderWorld>(*tessellated, context.get());
     }
     RenderWorld& variantWorld = tessellatedWorld ? *tessellatedWorld : world;
-    std::size_t tracedTriangles = 0;
-    for (const WorldMesh& m : variantWorld.geometry().meshes)
-      if (!m.analytic) tracedTriangles += m.indices.size() / 3;
+    // The geometry the ray tracers hold (Embree's input, without its BVH): 12 bytes per vertex
+    // and per triangle; an analytic or SDF instance is its AnalyticInstance.
+    std::size_t tracedTriangles = 0, tracedBytes = 0;
+    for (const WorldMesh& m : variantWorld.geometry().meshes) {
+      if (m.analytic) {
+        tracedBytes += sizeof(AnalyticInstance);
+        continue;
+      }
+      tracedTriangles += m.indices.size() / 3;
+      tracedBytes += 12 * (m.positions.size() + m.indices.size() / 3);
+    }
     const GraphRun run = runGraph(recipe, variantWorld, frame, outs, o.warmup, o.frames);
     ReportVariant rv;
     rv.name = v.name;
@@ -254,6 +262,7 @@ void runCompare(const CompareOptions& o) {
                  {"slots", v.slots},
                  {"tessellation", v.tessellation},
                  {"traced_triangles", tracedTriangles},
+                 {"traced_geometry_bytes", tracedBytes},
                  {"total_ms", run.totalMs},
                  {"first_frame_ms", run.firstFrameMs},
                  {"pass_ms", run.passMs},
