@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace diptych {
 namespace {
@@ -41,6 +42,27 @@ PacketRay readRay(RTCRayN* rays, unsigned n, unsigned i) {
           RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i)};
 }
 
+// Alpha-masked shapes (glTF alphaMode MASK): a hit whose coverage at its uv is below the cutoff
+// is passed over and the shape's next root beyond it tried, as alphaMaskFilter does for
+// triangles (Embree runs no filter function for user geometry unless the callback asks).
+// tmin = the next float after the rejected t excludes that root (intersectAnalyticPart compares
+// float(t) >= tmin). A part has at most two roots; an SDF may have more, hence the cap. SDF
+// surfaces have no uv (materials see (0, 0): surface_point.h), so their coverage is that uv's.
+constexpr int kMaxMaskedRoots = 16;
+std::optional<ShapeHit> coveredHit(const RtScene::GeometryData& data, int part,
+                                   const PacketRay& r) {
+  float tmin = r.tnear;
+  for (int i = 0; i < kMaxMaskedRoots; ++i) {
+    auto hit = intersectAnalyticPart(*data.analytic, part, r.origin, r.direction, tmin, r.tfar,
+                                     data.sdfStats.get());
+    if (!hit || !data.alphaMasked ||
+        data.coverageAt(data.analytic->sdf ? vec2(0.f) : hit->uv) >= data.alphaCutoff)
+      return hit;
+    tmin = std::nextafter(float(hit->t), std::numeric_limits<float>::infinity());
+  }
+  return std::nullopt;
+}
+
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   const RtScene::GeometryData& data = dataOf(args->geometryUserPtr);
   const AnalyticInstance& a = *data.analytic;
@@ -51,8 +73,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
     const PacketRay r = readRay(rays, n, i);
-    const auto hit =
-        intersectAnalyticPart(a, part, r.origin, r.direction, r.tnear, r.tfar, data.sdfStats.get());
+    const auto hit = coveredHit(data, part, r);
     if (!hit) continue;
     // SDF hits carry their object-space point: x, y as (u, v), z's bits as the primitive id
     // (SurfaceHit's encoding, engine/rt/surface_point.h). A quadric's Ng is left at 0 here:
@@ -79,8 +100,11 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
     const PacketRay r = readRay(args->ray, n, i);
-    if (analyticPartOccludes(a, int(args->primID), r.origin, r.direction, r.tnear, r.tfar,
-                             data.sdfStats.get()))
+    const bool hit = data.alphaMasked
+                         ? coveredHit(data, int(args->primID), r).has_value()
+                         : analyticPartOccludes(a, int(args->primID), r.origin, r.direction,
+                                                r.tnear, r.tfar, data.sdfStats.get());
+    if (hit)
       RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();  // Embree: hit
   }
 }

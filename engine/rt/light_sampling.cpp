@@ -73,4 +73,19 @@ vec3 areaLightPoint(const Light& l, vec2 s, const vec3& receiver) {
   }
 }
 
+vec3 directionAbout(const vec3& axis, float cosT, float phi) {
+  const float sinT = std::sqrt(std::max(0.f, 1.f - cosT * cosT));
+  vec3 t, b;
+  orthonormalBasis(axis, t, b);
+  return glm::normalize(cosT * axis + sinT * (std::cos(phi) * t + std::sin(phi) * b));
+}
+
+vec3 sampleCosine(const vec3& n, vec2 u) {
+  const vec2 d = concentricDisk(u);
+  const float z = std::sqrt(std::max(0.f, 1.f - glm::dot(d, d)));
+  vec3 t, b;
+  orthonormalBasis(n, t, b);
+  return glm::normalize(d.x * t + d.y * b + z * n);
+}
+
 }  // namespace diptych

@@ -30,6 +30,14 @@ bool isAreaLight(const Light& light);
 // Orthonormal Basis, Revisited", JCGT 6(1), 2017: branchless and continuous except at n.z = 0-).
 void orthonormalBasis(const vec3& n, vec3& t, vec3& b);
 
+// The unit direction at polar angle acos(cosT) from the unit `axis` and azimuth phi about it
+// (in orthonormalBasis's frame): what every sampler drawing (cos theta, phi) builds.
+vec3 directionAbout(const vec3& axis, float cosT, float phi);
+
+// Cosine-weighted hemisphere about the unit n (Malley's method: Shirley & Chiu's concentric disc
+// lifted onto the hemisphere), pdf cos(theta) / pi.
+vec3 sampleCosine(const vec3& n, vec2 u);
+
 // A hash that decorrelates per-pixel sample patterns (Jarzynski & Olano, "Hash Functions for
 // GPU Rendering", JCGT 2020: PCG-style 32-bit permutation).
 std::uint32_t pcgHash(std::uint32_t v);

@@ -20,20 +20,7 @@ float luminance(const vec3& c) {
 // cos^2(theta_h) = (1 - u) / (1 + (a^2 - 1) u).
 vec3 sampleGgxHalf(const vec3& n, float a, vec2 u) {
   const float cos2 = (1.f - u.x) / (1.f + (a * a - 1.f) * u.x);
-  const float cosT = std::sqrt(std::clamp(cos2, 0.f, 1.f));
-  const float sinT = std::sqrt(std::max(0.f, 1.f - cosT * cosT));
-  const float phi = 2.f * kPi * u.y;
-  vec3 t, b;
-  orthonormalBasis(n, t, b);
-  return glm::normalize(cosT * n + sinT * (std::cos(phi) * t + std::sin(phi) * b));
-}
-
-vec3 sampleCosine(const vec3& n, vec2 u) {
-  const vec2 d = concentricDisk(u);
-  const float z = std::sqrt(std::max(0.f, 1.f - glm::dot(d, d)));
-  vec3 t, b;
-  orthonormalBasis(n, t, b);
-  return glm::normalize(d.x * t + d.y * b + z * n);
+  return directionAbout(n, std::sqrt(std::clamp(cos2, 0.f, 1.f)), 2.f * kPi * u.y);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/path_pbr.h"
+#include "engine/rt/ray_cone.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/scene/environment.h"
 #include "engine/shading/shading.h"
@@ -72,22 +73,7 @@ vec3 lectureDirect(shading::ShadingMaterial m, const vec3& n, const vec3& v, con
 // Direction about `axis` with pdf (e + 1) / (2 pi) cos^e(alpha) per steradian: e = 0 is the
 // uniform hemisphere, e -> infinity the axis itself (Lafortune and Willems 1994).
 vec3 samplePowerCosine(const vec3& axis, float e, vec2 u) {
-  const float cosA = std::pow(u.x, 1.f / (e + 1.f));
-  const float sinA = std::sqrt(std::max(0.f, 1.f - cosA * cosA));
-  const float phi = 2.f * kPi * u.y;
-  vec3 t, b;
-  orthonormalBasis(axis, t, b);
-  return glm::normalize(cosA * axis + sinA * (std::cos(phi) * t + std::sin(phi) * b));
-}
-
-// Cosine-weighted hemisphere about n (Malley's method: the concentric disc lifted onto the
-// hemisphere), pdf cos(theta) / pi.
-vec3 sampleCosine(const vec3& n, vec2 u) {
-  const vec2 d = concentricDisk(u);
-  const float z = std::sqrt(std::max(0.f, 1.f - glm::dot(d, d)));
-  vec3 t, b;
-  orthonormalBasis(n, t, b);
-  return glm::normalize(d.x * t + d.y * b + z * n);
+  return directionAbout(axis, std::pow(u.x, 1.f / (e + 1.f)), 2.f * kPi * u.y);
 }
 
 // The area-light pdf of areaLightPoint(): uniform over the quad or disc (1 / area) and over
@@ -174,11 +160,13 @@ vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
   return sum;
 }
 
-PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
+PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng, float coneSpread) const {
   PathSample out;
   vec3 throughput(1.f);
   Ray ray = cameraRay;
   const Material* medium = nullptr;  // the volume the current segment runs inside, if any
+  bool coneLive = settings_.rayCones;
+  RayCone cone{0.f, coneSpread};
   for (int depth = 1;; ++depth) {
     ++out.rays;
     const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), false);
@@ -190,9 +178,14 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
       out.radiance += throughput * sampleEnvironment(scene_.environment, ray.direction);
       break;
     }
-    const SurfacePoint p = makeSurfacePoint(
+    SurfacePoint p = makeSurfacePoint(
         scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
         ray.direction);
+    if (coneLive) {  // RTG eq. 20.23 at the cone's width here, as WhittedTracer::radiance
+      cone.width += cone.spread * hit->t * glm::length(ray.direction);
+      p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
+                                   coneUvLod(world_, p, ray.direction, cone.width));
+    }
     const shading::ShadingMaterial& m = p.resolved;
     const vec3 v = -ray.direction;
     out.radiance += throughput * (m.emission + nextEvent(p, v, rng, out.rays));
@@ -244,6 +237,11 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng) const {
     // A smooth lobe is sampled about the shading normal and may point into the geometry: no
     // light arrives from there, and tracing it would leak through the surface.
     if (smoothLobe && !(glm::dot(direction, p.geometricNormal) > 0.f)) break;
+    if (coneLive && smoothLobe) coneLive = false;
+    // A delta bounce on the viewer's side is a reflection (its spread grows with curvature),
+    // one through the surface a refraction (unchanged, as in WhittedTracer).
+    if (coneLive && glm::dot(direction, p.geometricNormal) * glm::dot(v, p.geometricNormal) > 0.f)
+      cone = reflectedCone(world_, p, cone.width, cone.spread);
     throughput *= weight;
     if (!finite(throughput) || throughput == vec3(0.f)) break;
     ray = spawnRay(p, direction);

@@ -35,6 +35,10 @@ struct PathSettings {
   int maxDepth = 16;  // surface hits per path (1 = emission + direct light only)
   int rrDepth = 3;    // Russian roulette from this many hits on
   bool russianRoulette = true;
+  // Texture LOD by ray cones (engine/rt/ray_cone.h) along the camera ray and its delta (mirror,
+  // refraction) bounces; a path that scatters off a smooth (diffuse, glossy, GGX) lobe returns
+  // to level 0, since one cone cannot stand for a lobe's spread. false: level 0 everywhere.
+  bool rayCones = false;
 };
 
 // Uniform numbers in [0,1) for one path: the PCG output permutation (pcgHash) of a 32-bit LCG
@@ -64,8 +68,9 @@ class PathTracer {
  public:
   PathTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
              PathSettings settings);
-  // Radiance arriving at ray.origin along -ray.direction; finite.
-  PathSample radiance(const Ray& ray, PathRng& rng) const;
+  // Radiance arriving at ray.origin along -ray.direction; finite. coneSpread: the camera ray's
+  // cone spread (pixelSpreadAngle; width 0 at the eye), used when settings.rayCones is set.
+  PathSample radiance(const Ray& ray, PathRng& rng, float coneSpread = 0.f) const;
   const PathSettings& settings() const { return settings_; }
 
  private:

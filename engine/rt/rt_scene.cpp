@@ -45,6 +45,10 @@ float RtScene::GeometryData::coverage(std::uint32_t primitive, float u, float v)
   return alpha * sampleTexture(*alphaTexture, interpolateUv(*mesh, primitive, u, v)).w;
 }
 
+float RtScene::GeometryData::coverageAt(vec2 uv) const {
+  return alphaTexture ? alpha * sampleTexture(*alphaTexture, uv).w : alpha;
+}
+
 RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, RtSceneOptions options)
     : RtScene(device, world, nullptr, options) {}
 
@@ -101,6 +105,7 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
       rtcReleaseGeometry(geom);
       device.check("adding analytic instance " + std::to_string(id));
       ++analytic_;
+      alphaMasked_ += data.alphaMasked ? 1 : 0;  // tested in its own callbacks
       continue;
     }
     const std::size_t triangles = mesh.indices.size() / 3;

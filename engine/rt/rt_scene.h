@@ -111,7 +111,8 @@ class RtScene {
   // that rejects a hit where the coverage at its uv is below the cutoff, so every query
   // (closest hit, any hit, streams) skips the holes. The coverage is resolveMaterial's alpha:
   // Material::alpha times the colour texture's alpha (sampleTexture; no texture when a checker
-  // replaces the colour). AlphaMode::Blend geometry stays an opaque occluder for now.
+  // replaces the colour). AlphaMode::Blend geometry stays an opaque occluder for now. Analytic
+  // and SDF instances test the same coverage inside their own callbacks (analytic_geometry.cpp).
   struct GeometryData {
     const WorldMesh* mesh = nullptr;
     const AnalyticInstance* analytic = nullptr;  // set for user geometry
@@ -124,6 +125,9 @@ class RtScene {
     std::unique_ptr<SdfStats> sdfStats;  // this scene's step counters of an SDF object
     // Coverage of triangle `primitive` at Embree barycentrics (u, v); read-only, thread-safe.
     float coverage(std::uint32_t primitive, float u, float v) const;
+    // Coverage at a texture coordinate (analytic shapes: the hit's uv, the parameterisation
+    // their tessellation's uvs follow, so both cut the same holes).
+    float coverageAt(vec2 uv) const;
   };
   // Sphere-tracing steps per ray over every SDF object since the last reset (all queries,
   // closest-hit and occlusion alike, that reached an object's box).
@@ -136,7 +140,7 @@ class RtScene {
   void resetSdfStepStats() const;
   // Number of instances traced as analytic user geometry.
   int analyticGeometries() const { return analytic_; }
-  // Number of geometries with an alpha-mask filter installed.
+  // Number of geometries that cut alpha-mask holes (a filter function, or analytic callbacks).
   int alphaMaskedGeometries() const { return alphaMasked_; }
   // Instances traced through a shared prototype, and the number of prototypes built.
   int instancedGeometries() const { return instanced_; }

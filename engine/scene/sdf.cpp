@@ -219,7 +219,17 @@ SphereTraceResult sphereTrace(const Sdf& sdf, const dvec3& o, const dvec3& d, do
   }
 }
 
+SdfRayTally& threadSdfTally() {
+  thread_local SdfRayTally tally;
+  return tally;
+}
+
 void SdfStats::record(const SphereTraceResult& r) {
+  SdfRayTally& tally = threadSdfTally();
+  ++tally.rays;
+  tally.steps += std::uint64_t(r.steps);
+  tally.capped += r.cappedOut ? 1 : 0;
+  tally.maxSteps = std::max(tally.maxSteps, r.steps);
   rays.fetch_add(1, std::memory_order_relaxed);
   steps.fetch_add(std::uint64_t(r.steps), std::memory_order_relaxed);
   if (r.cappedOut) capped.fetch_add(1, std::memory_order_relaxed);

@@ -79,9 +79,20 @@ SphereTraceResult sphereTrace(const Sdf& sdf, const dvec3& o, const dvec3& d, do
 struct SdfStats {
   std::atomic<std::uint64_t> rays{0}, steps{0}, capped{0};
   std::atomic<int> maxSteps{0};
-  void record(const SphereTraceResult& r);
+  void record(const SphereTraceResult& r);  // also adds r to this thread's SdfRayTally
   void reset();
 };
+
+// The sphere-tracing work done on the calling thread since the caller last cleared it: every
+// SdfStats::record on this thread adds to it too. Embree runs user-geometry callbacks on the
+// thread that called rtcIntersect1/rtcOccluded1, so a tracer that clears the tally before a
+// pixel's rays and reads it after gets that pixel's steps (the per-pixel heat map signal),
+// with no lock and no change to the ray API.
+struct SdfRayTally {
+  std::uint64_t rays = 0, steps = 0, capped = 0;
+  int maxSteps = 0;  // the most steps of one ray
+};
+SdfRayTally& threadSdfTally();
 
 // An SDF object as the scene holds it: the tree, the tracer's settings, its object-space
 // bounds (the Embree user primitive's box; rays are traced only inside it). Step statistics are

@@ -2,12 +2,15 @@
 
 #include <tbb/parallel_for.h>
 
+#include <cmath>
 #include <numeric>
 #include <vector>
 
 #include "engine/graph/render_world.h"
 #include "engine/rt/light_sampling.h"
+#include "engine/rt/ray_cone.h"
 #include "engine/rt/whitted.h"
+#include "passes/rt/sdf_steps.h"
 
 namespace diptych {
 namespace {
@@ -31,7 +34,9 @@ ParamSchema RtDistributedPass::schema(int defaultSpp) {
                              "samples per pixel, rounded to a square k x k stratified grid"),
           ParamSpec::integer("depth", 5, 1, 64, "maximum recursion depth (primary hit = 1)"),
           ParamSpec::integer("area_samples", 16, 1, 4096,
-                             "stratified shadow rays per area light at each hit")};
+                             "stratified shadow rays per area light at each hit"),
+          ParamSpec::choice("texture_lod", "level0", {"level0", "cone"},
+                            "texture level at traced hits: level 0, or ray cones (RTG ch. 20)")};
 }
 
 void RtDistributedPass::setup(PassBuilder& b) {
@@ -39,8 +44,10 @@ void RtDistributedPass::setup(PassBuilder& b) {
   spp_ = stratifiedSampleCount(b.params().integer("spp"));
   maxDepth_ = b.params().integer("depth");
   areaSamples_ = b.params().integer("area_samples");
+  rayCones_ = b.params().string("texture_lod") == "cone";
   color_ = b.write("color", {Format::RGBA32F, b.frame().width, b.frame().height},
                    vec4(0.f, 0.f, 0.f, 1.f));
+  sdfSteps_ = writeSdfSteps(b);
 }
 
 void RtDistributedPass::execute(PassContext& c) {
@@ -49,8 +56,15 @@ void RtDistributedPass::execute(PassContext& c) {
   Camera camera = frame.camera;
   if (!thinLens_) camera.aperture = 0.f;  // a pinhole: thinLensRay is then primaryRay exactly
   CpuImage& out = c.cpuWrite(color_);
+  CpuImage* steps = sdfSteps_ != kNoResource ? &c.cpuWrite(sdfSteps_) : nullptr;
   const WhittedTracer tracer(world.scene(), world.geometry(), world.rtScene(),
-                             {maxDepth_, areaSamples_});
+                             {maxDepth_, areaSamples_, rayCones_});
+  // Primary cones start at the eye with zero width and the pixel's spread (RTG eq. 20.30); with
+  // a lens the cone's width at the lens is left out (the lens radius is far below the widths at
+  // textured hits for the scenes' apertures).
+  // With k x k samples per pixel each sample stands for one stratum: 1/k of the pixel's spread.
+  const RayCone primaryCone{0.f, pixelSpreadAngle(camera, frame.height) / std::sqrt(float(spp_))};
+  const RayCone* cone = rayCones_ ? &primaryCone : nullptr;
   const PinholeFrame pinhole(camera, frame.width, frame.height);
   tbb::parallel_for(0, frame.height, [&](int y) {
     std::vector<int> lensStratum(std::size_t(spp_), 0);
@@ -62,6 +76,7 @@ void RtDistributedPass::execute(PassContext& c) {
       // A pinhole (rt_whitted) never reads the lens sample: skip its shuffle and strata.
       const bool lens = camera.aperture > 0.f;
       if (lens) shuffle(lensStratum, lensSeed);
+      beginSdfPixel();
       vec3 sum(0.f);
       for (int s = 0; s < spp_; ++s) {
         const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pixelSeed);
@@ -70,9 +85,10 @@ void RtDistributedPass::execute(PassContext& c) {
             lens ? thinLensRay(camera, frame.width, frame.height, px, py,
                                stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed))
                  : pinhole.ray(px, py);  // == thinLensRay with no aperture
-        sum +=
-            tracer.radiance(ray, 1, spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s)));
+        sum += tracer.radiance(ray, 1,
+                               spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s)), cone);
       }
+      storeSdfPixel(steps, x, y);
       const vec3 color = sum / float(spp_);
       for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, color[ch]);
       out.setF(x, y, 3, 1.f);

@@ -12,7 +12,8 @@ namespace diptych {
 // the primary ray is WhittedTracer (engine/rt/whitted.h): the same recursion and shading.
 // With spp = 1 the single ray goes through the pixel centre with the pixel index as its seed,
 // so that spp = 1 and aperture 0 reproduce rt_whitted bit for bit.
-// Params: schema() (`diptych passes` lists them). Output: color RGBA32F.
+// Params: schema() (`diptych passes` lists them). Output: color RGBA32F, and sdf_steps
+// (passes/rt/sdf_steps.h) where the scene has SDF objects.
 class RtDistributedPass : public Pass {
  public:
   RtDistributedPass() = default;
@@ -28,7 +29,9 @@ class RtDistributedPass : public Pass {
  private:
   bool thinLens_ = true;
   int spp_ = 16, maxDepth_ = 5, areaSamples_ = 16;
+  bool rayCones_ = false;
   ResourceId color_ = kNoResource;
+  ResourceId sdfSteps_ = kNoResource;  // passes/rt/sdf_steps.h; only with SDF objects
 };
 
 }  // namespace diptych

@@ -4,10 +4,12 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <vector>
 
 #include "engine/graph/render_world.h"
 #include "engine/rt/path_tracer.h"
+#include "engine/rt/ray_cone.h"
 
 namespace diptych {
 
@@ -18,7 +20,10 @@ ParamSchema RtPathPass::schema() {
           ParamSpec::integer("max_depth", 16, 1, 1024, "maximum path length in bounces"),
           ParamSpec::integer("rr_depth", 3, 1, 1024, "bounce from which Russian roulette applies"),
           ParamSpec::boolean("russian_roulette", true, "terminate paths by Russian roulette"),
-          ParamSpec::integer("seed", 0, 0, 1 << 30, "random seed")};
+          ParamSpec::integer("seed", 0, 0, 1 << 30, "random seed"),
+          ParamSpec::choice("texture_lod", "level0", {"level0", "cone"},
+                            "texture level at traced hits: level 0, or ray cones (RTG ch. 20) "
+                            "until a smooth bounce")};
 }
 
 void RtPathPass::setup(PassBuilder& b) {
@@ -29,6 +34,7 @@ void RtPathPass::setup(PassBuilder& b) {
   rrDepth_ = b.params().integer("rr_depth");
   russianRoulette_ = b.params().boolean("russian_roulette");
   seed_ = b.params().integer("seed");
+  rayCones_ = b.params().string("texture_lod") == "cone";
   const ResourceDesc desc{Format::RGBA32F, b.frame().width, b.frame().height};
   color_ = b.write("color", desc, vec4(0.f, 0.f, 0.f, 1.f));
   variance_ = b.write("variance", desc, vec4(0.f));
@@ -40,7 +46,9 @@ void RtPathPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const FrameSettings& frame = c.frame();
   const PathTracer tracer(world.scene(), world.geometry(), world.rtScene(),
-                          {maxDepth_, rrDepth_, russianRoulette_});
+                          {maxDepth_, rrDepth_, russianRoulette_, rayCones_});
+  // Each of the spp paths stands for about 1/spp of the pixel's area (as rt_distributed's strata).
+  const float spread = pixelSpreadAngle(frame.camera, frame.height) / std::sqrt(float(spp_));
   // Welford accumulators, alive only for this execute: the mean and the sum of squared
   // deviations M2 per pixel and channel.
   const std::size_t pixels = std::size_t(frame.width) * std::size_t(frame.height);
@@ -58,7 +66,7 @@ void RtPathPass::execute(PassContext& c) {
         const vec2 lens = rng.next2();
         const Ray ray = thinLensRay(frame.camera, frame.width, frame.height, float(x) + jitter.x,
                                     float(y) + jitter.y, lens);
-        const PathSample s = tracer.radiance(ray, rng);
+        const PathSample s = tracer.radiance(ray, rng, spread);
         rowRays += s.rays;
         rowInvalid += s.valid ? 0 : 1;
         const glm::dvec3 value(s.radiance);

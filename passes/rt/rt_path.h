@@ -25,6 +25,7 @@ class RtPathPass : public Pass {
 
  private:
   int spp_ = 16, maxDepth_ = 16, rrDepth_ = 3, seed_ = 0;
+  bool rayCones_ = false;
   double timeBudgetMs_ = 0.0;
   bool russianRoulette_ = true;
   ResourceId color_ = kNoResource, variance_ = kNoResource;

@@ -9,6 +9,7 @@
 #include "engine/rt/whitted.h"
 #include "engine/shading/shading.h"
 #include "passes/common/hits_texel.h"
+#include "passes/rt/sdf_steps.h"
 
 namespace diptych {
 
@@ -27,6 +28,7 @@ void RtSecondaryPass::setup(PassBuilder& b) {
   areaSamples_ = b.params().integer("area_samples");
   rayCones_ = b.params().string("texture_lod") == "cone";
   io_ = slotIo(b, kind_ == Kind::Reflection ? "reflection" : "transmission");
+  sdfSteps_ = writeSdfSteps(b);
 }
 
 void RtSecondaryPass::execute(PassContext& c) {
@@ -35,6 +37,7 @@ void RtSecondaryPass::execute(PassContext& c) {
   const FrameSettings& frame = c.frame();
   const CpuImage& hits = c.cpuRead(io_.hits);
   CpuImage& out = c.cpuWrite(io_.signal);
+  CpuImage* steps = sdfSteps_ != kNoResource ? &c.cpuWrite(sdfSteps_) : nullptr;
   const WhittedTracer tracer(scene, world.geometry(), world.rtScene(),
                              {maxDepth_, areaSamples_, rayCones_});
   const float spread = pixelSpreadAngle(frame.camera, frame.height);
@@ -45,6 +48,7 @@ void RtSecondaryPass::execute(PassContext& c) {
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
+      beginSdfPixel();
       // The material decides first: only its pixels pay for lifting an analytic texel.
       const auto texel = hitsTexel(hits, x, y);
       const Material* m =
@@ -73,6 +77,7 @@ void RtSecondaryPass::execute(PassContext& c) {
       }
       for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, radiance[ch]);
       out.setF(x, y, 3, 1.f);
+      storeSdfPixel(steps, x, y);
     }
   });
   c.count("rays", double(tracer.raysTraced()));

@@ -3,7 +3,8 @@
 // material has k_ps > 0 (reflection) or k_t > 0 (transmission), the radiance arriving along the
 // mirror or refracted direction, traced recursively by the Whitted tracer (engine/rt/whitted.h)
 // with the same shading as everything else. Other pixels get 0. The family of rt_reflection.h
-// and rt_transmission.h.
+// and rt_transmission.h. Where the scene has SDF objects they also write sdf_steps
+// (passes/rt/sdf_steps.h), the sphere-tracing steps of each pixel's secondary ray tree.
 #include "engine/graph/pass.h"
 #include "passes/slots.h"
 
@@ -23,6 +24,7 @@ class RtSecondaryPass : public Pass {
   int maxDepth_ = 5, areaSamples_ = 16;
   bool rayCones_ = false;
   SlotIo io_;
+  ResourceId sdfSteps_ = kNoResource;  // passes/rt/sdf_steps.h; only with SDF objects
 };
 
 }  // namespace diptych

@@ -9,7 +9,8 @@ namespace diptych {
 // G-buffer; `spp` > 1 supersamples each pixel with a stratified k x k jittered grid (k^2 = spp
 // rounded to a square) and averages (box filter). Always a pinhole camera. It is
 // rt_distributed with those two settings: one code path for primary rays.
-// Params: rt_distributed's, with spp 1 by default. Output: color RGBA32F.
+// Params: rt_distributed's, with spp 1 by default. Outputs: color RGBA32F, and sdf_steps where the
+// scene has SDF objects (passes/rt/sdf_steps.h).
 class RtWhittedPass : public RtDistributedPass {
  public:
   RtWhittedPass() : RtDistributedPass(false) {}

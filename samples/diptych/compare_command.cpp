@@ -24,9 +24,11 @@
 #include "engine/shading/shading.h"
 #include "engine/shading/surface_detail.h"
 #include "passes/registry.h"
+#include "passes/rt/sdf_steps.h"
 #include "passes/slots.h"
 #include "samples/diptych/compare/report.h"
 #include "samples/diptych/compare/runner.h"
+#include "samples/diptych/compare/sdf_steps_report.h"
 #include "samples/diptych/compare/variants.h"
 #include "samples/diptych/parse_size.h"
 #include "samples/diptych/shading_option.h"
@@ -181,8 +183,11 @@ void runCompare(const CompareOptions& o) {
   const auto cached = dir / "cache" / ("reference-" + cacheKey(scene, reference, frame) + ".exr");
   Image referenceImage;
   double referenceMs = 0;
-  bool referenceCached =
-      std::filesystem::exists(cached) && std::filesystem::exists(cached.string() + ".json");
+  // Per-pixel sphere-tracing steps (passes/rt/sdf_steps.h), cached beside the reference.
+  const bool sdfSteps = sceneHasSdf(scene) && reference.passType != "rt_path";
+  bool referenceCached = std::filesystem::exists(cached) &&
+                         std::filesystem::exists(cached.string() + ".json") &&
+                         (!sdfSteps || std::filesystem::exists(cached.string() + ".sdf_steps.exr"));
   if (referenceCached) {
     referenceImage = readImage(cached);
     referenceMs =
@@ -200,14 +205,19 @@ void runCompare(const CompareOptions& o) {
       log().info("reference traces the bump-mapped surfaces displaced ({} triangles)",
                  displacedWorld->geometry().triangleCount());
     }
-    const GraphRun ref = runGraph(recipe, displacedWorld ? *displacedWorld : world, frame,
-                                  recipe.outputs, o.warmup, o.frames);
+    std::vector<std::string> outputs = recipe.outputs;
+    if (sdfSteps) outputs.push_back("reference.sdf_steps");
+    const GraphRun ref = runGraph(recipe, displacedWorld ? *displacedWorld : world, frame, outputs,
+                                  o.warmup, o.frames);
     referenceImage = ref.outputs.at("reference.color").toImage();
     referenceMs = ref.totalMs;
     oneTime["reference_first_frame_ms"] = ref.firstFrameMs;
     writeImage(cached, referenceImage);
     if (ref.outputs.count("reference.variance"))  // path tracing: the per-pixel variance too
       writeImage(cached.string() + ".variance.exr", ref.outputs.at("reference.variance").toImage());
+    if (sdfSteps)
+      writeImage(cached.string() + ".sdf_steps.exr",
+                 ref.outputs.at("reference.sdf_steps").toImage());
     writeTextFile(cached.string() + ".json",
                   nlohmann::json{{"ms", referenceMs}, {"reference", reference.text}}.dump());
   }
@@ -252,9 +262,17 @@ void runCompare(const CompareOptions& o) {
       tessellatedWorld = std::make_unique<RenderWorld>(*tessellated, context.get());
     }
     RenderWorld& variantWorld = tessellatedWorld ? *tessellatedWorld : world;
-    std::size_t tracedTriangles = 0;
-    for (const WorldMesh& m : variantWorld.geometry().meshes)
-      if (!m.analytic) tracedTriangles += m.indices.size() / 3;
+    // The geometry the ray tracers hold (Embree's input, without its BVH): 12 bytes per vertex
+    // and per triangle; an analytic or SDF instance is its AnalyticInstance.
+    std::size_t tracedTriangles = 0, tracedBytes = 0;
+    for (const WorldMesh& m : variantWorld.geometry().meshes) {
+      if (m.analytic) {
+        tracedBytes += sizeof(AnalyticInstance);
+        continue;
+      }
+      tracedTriangles += m.indices.size() / 3;
+      tracedBytes += 12 * (m.positions.size() + m.indices.size() / 3);
+    }
     const GraphRun run = runGraph(recipe, variantWorld, frame, outs, o.warmup, o.frames);
     ReportVariant rv;
     rv.name = v.name;
@@ -271,6 +289,7 @@ void runCompare(const CompareOptions& o) {
                  {"tessellation", v.tessellation},
                  {"surface_detail", v.surfaceDetail.empty() ? "as authored" : v.surfaceDetail},
                  {"traced_triangles", tracedTriangles},
+                 {"traced_geometry_bytes", tracedBytes},
                  {"total_ms", run.totalMs},
                  {"first_frame_ms", run.firstFrameMs},
                  {"pass_ms", run.passMs},
@@ -296,7 +315,7 @@ void runCompare(const CompareOptions& o) {
     }
     a.result["pareto"] = !dominated;
   }
-  const nlohmann::json header = {
+  nlohmann::json header = {
       {"scene", sceneFile},
       {"size", {{"width", width}, {"height", height}}},
       {"reference",
@@ -315,7 +334,12 @@ void runCompare(const CompareOptions& o) {
            "(steady_clock); total = sum of per-pass medians. One-time costs (context, BVH build, "
            "scene upload; each recipe's first frame) are reported apart, never inside a frame",
            o.frames, o.warmup)}};
-  const auto written = writeReport(dir, header, referenceImage, results, o.metric);
+  std::vector<std::string> stepFiles;
+  if (sdfSteps)
+    header["sdf_steps"] =
+        writeSdfStepReport(dir, readImage(cached.string() + ".sdf_steps.exr"), stepFiles);
+  auto written = writeReport(dir, header, referenceImage, results, o.metric);
+  written.insert(written.end(), stepFiles.begin(), stepFiles.end());
 
   std::printf("%-36s %10s %9s %10s %10s %8s %s\n", "variant", "total ms", "speedup", "rmse",
               o.metric.c_str(), "ssim", "pareto");

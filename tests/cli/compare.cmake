@@ -51,3 +51,20 @@ execute_process(COMMAND /usr/bin/python3 -c
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "report screenshot looks blank (${colours} colours)")
 endif()
+
+# A scene with SDF objects: the reference's sphere-tracing steps as a heat map and in
+# results.json, and the report's section for them (passes/rt/sdf_steps.h).
+expect_success(compare-sdf-steps ARGS compare "${SOURCE_DIR}/samples/scenes/sdf.json" --variants hybrid-exact
+               --size 64x48 --frames 1 --warmup 0 --out cmp-sdf
+               FILES cmp-sdf/heatmaps/reference-sdf-steps.png cmp-sdf/images/reference-sdf-steps.exr)
+execute_process(COMMAND /usr/bin/python3 -c
+  "import json, sys; s = json.load(open(sys.argv[1]))['sdf_steps']; print(s['rays'], s['mean_steps_per_ray'], s['max_steps_per_ray']); sys.exit(0 if s['rays'] > 0 and s['mean_steps_per_ray'] >= 1 and s['max_steps_per_ray'] >= s['mean_steps_per_ray'] and s['max_steps_per_ray'] <= 256 else 1)"
+  "${WORK_DIR}/cmp-sdf/results.json" RESULT_VARIABLE rc OUTPUT_VARIABLE sdf_figures)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "results.json: sdf_steps missing or implausible: ${sdf_figures}")
+endif()
+file(READ "${WORK_DIR}/cmp-sdf/report.html" sdf_page)
+string(FIND "${sdf_page}" "id=\"sdf-steps\"" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "report.html lacks the sphere-tracing steps section")
+endif()

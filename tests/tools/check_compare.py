@@ -52,6 +52,11 @@ def main():
     if geo["tessellation"] != 16 or geo["traced_triangles"] != 226:
         fail("geometry-16: tessellation %s, traced triangles %s (expected 16, 226)" %
              (geo["tessellation"], geo["traced_triangles"]))
+    # Memory: the exact sphere is one AnalyticInstance (a few hundred bytes with the plane's 72);
+    # its 16 x 8 tessellation holds kilobytes of vertices and triangles.
+    exact_bytes = variants["hybrid-exact"]["traced_geometry_bytes"]
+    if not exact_bytes < 1000 or not geo["traced_geometry_bytes"] > exact_bytes + 3000:
+        fail("traced_geometry_bytes: exact %s, geometry-16 %s" % (exact_bytes, geo["traced_geometry_bytes"]))
     if not geo["metrics"]["rmse"] > 10 * max(exact["rmse"], 1e-9):
         fail("geometry-16 (rmse %g) must score clearly worse than the exact hybrid (%g)" %
              (geo["metrics"]["rmse"], exact["rmse"]))

@@ -134,5 +134,47 @@ TEST(TextureFiltering, RayConesLowerTheErrorOfDistantReflections) {
   EXPECT_LT(ec, e0);
 }
 
+// The full ray tracers take the same ray cones (texture_lod=cone) for their own primary hits
+// (RTG eq. 20.30: width 0 at the eye, the pixel's spread): each producer's one-sample frame
+// comes closer to its own frame supersampled kS x kS (level 0, box-averaged) than with level 0.
+// With spp > 1 each sample's cone spreads over its stratum, the pixel's spread / sqrt(spp).
+// rt_path traces emission and direct light only (max_depth 1), so the frames differ only by
+// texture lookups and the jittered pixel position.
+CpuImage tracedOf(const std::string& type, nlohmann::json params, const std::string& lod, int w,
+                  int h) {
+  params["texture_lod"] = lod;
+  Recipe r;
+  r.passes = {{.name = "traced", .type = type, .params = params, .place = "test"}};
+  r.outputs = {"traced.color"};
+  return testing::renderHybridFrame(loadScene(kScene), w, h, {}, r)->output("traced.color");
+}
+
+TEST(TextureFiltering, RayConesInTheFullRayTracers) {
+  constexpr int kS = 4;
+  const std::pair<const char*, nlohmann::json> producers[] = {
+      {"rt_whitted", nlohmann::json::object()},
+      {"rt_distributed", {{"spp", 4}}},
+      {"rt_path", {{"spp", 1}, {"max_depth", 1}}}};
+  for (const auto& [type, params] : producers) {
+    const CpuImage fine = tracedOf(type, params, "level0", kW * kS, kH * kS);
+    const CpuImage level0 = tracedOf(type, params, "level0", kW, kH);
+    const CpuImage cone = tracedOf(type, params, "cone", kW, kH);
+    double e0 = 0.0, ec = 0.0;
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x)
+        for (int c = 0; c < 3; ++c) {
+          double ref = 0.0;
+          for (int j = 0; j < kS; ++j)
+            for (int i = 0; i < kS; ++i) ref += fine.f(x * kS + i, y * kS + j, c);
+          ref /= kS * kS;
+          e0 += std::fabs(level0.f(x, y, c) - ref);
+          ec += std::fabs(cone.f(x, y, c) - ref);
+        }
+    std::cout << type << ": mean error level 0 " << e0 / (3 * kW * kH) << ", ray cones "
+              << ec / (3 * kW * kH) << "\n";
+    EXPECT_LT(ec, e0) << type;
+  }
+}
+
 }  // namespace
 }  // namespace diptych

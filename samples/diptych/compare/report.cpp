@@ -9,6 +9,7 @@
 #include "engine/core/log.h"
 #include "engine/core/output_file.h"
 #include "engine/graph/device_info.h"
+#include "samples/diptych/compare/sdf_steps_report.h"
 
 namespace diptych::cli {
 namespace {
@@ -204,6 +205,7 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
           htmlEscape(plotMetric) +
           ". Files: <a href=\"results.json\">results.json</a>, <a "
           "href=\"results.csv\">results.csv</a>.</p>\n";
+  page += sdfStepSection(header.value("sdf_steps", nlohmann::json()));
   page +=
       "<h2>Images</h2>\n<p class=\"caption\">Drag a slider: left of it the variant, right of it "
       "the reference. "
