@@ -254,7 +254,8 @@ FlipResult hdrFlip(const Image& test, const Image& reference, double pixelsPerDe
     const double yMedian = percentile(positive, 50);
     result.exposureStart = std::log2(xMax / yMax);
     result.exposureStop = std::log2(xMax / yMedian);
-    result.exposureCount = std::max(2, int(std::ceil(result.exposureStop - result.exposureStart)));
+    result.exposureCount = std::clamp(int(std::ceil(result.exposureStop - result.exposureStart)), 2,
+                                      kMaxHdrFlipExposures);
   }
   Plane best(test.width, test.height, 0.0);
   for (int k = 0; k < result.exposureCount; ++k) {

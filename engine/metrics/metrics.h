@@ -73,6 +73,10 @@ struct FlipResult {
 // LDR-FLIP on images whose values are display-referred linear RGB in [0,1].
 FlipResult ldrFlip(const Image& test, const Image& reference, double pixelsPerDegree);
 // HDR-FLIP: LDR-FLIP over a range of exposures of the ACES-like tone mapper, maximum per pixel.
+// At most kMaxHdrFlipExposures exposures: the paper's count is log2 of the reference's
+// brightest-to-median range, up to 277 for float data (each one a whole LDR-FLIP); a range above
+// 2^64 only comes from broken or hostile input and gets wider steps instead (docs/metrics.md).
+constexpr int kMaxHdrFlipExposures = 64;
 FlipResult hdrFlip(const Image& test, const Image& reference, double pixelsPerDegree);
 
 // Reads an image for comparison: float files (EXR, HDR) as stored; integer files (PNG, JPEG,

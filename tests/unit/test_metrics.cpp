@@ -267,3 +267,17 @@ TEST(Metrics, FlipOfFlatImagesIsTheCompressedHyabDistance) {
   EXPECT_NEAR(flipErrorMap(flat(0.f), flat(1.f)).at(5, 7, 0), 0.96738, 2e-4);
   EXPECT_NEAR(flipErrorMap(flat(0.5f), flat(0.25f)).at(11, 3, 0), 0.45185, 2e-4);
 }
+
+// A hostile HDR reference (brightest over median pixel 2^200) costs at most kMaxHdrFlipExposures
+// LDR-FLIP runs, spread over the paper's whole exposure range (fuzz_image spent seconds per input).
+TEST(Flip, ExposureCountIsBoundedOnAnExtremeRange) {
+  Image reference(4, 4, 3), test(4, 4, 3);
+  for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+    reference.pixels[i] = (i / 3) % 4 == 0 ? 1e30f : 1e-30f;  // median tiny, maximum huge
+    test.pixels[i] = reference.pixels[i] * 0.5f;
+  }
+  const FlipResult r = hdrFlip(test, reference, 67.0);
+  EXPECT_EQ(r.exposureCount, kMaxHdrFlipExposures);
+  EXPECT_GT(r.exposureStop - r.exposureStart, 150.0) << "the whole range is still covered";
+  for (float v : r.map.pixels) EXPECT_TRUE(std::isfinite(v) && v >= 0.f && v <= 1.f);
+}
