@@ -3,6 +3,8 @@
 # New inputs go to WORKDIR/corpus (kept between runs), crashes to WORKDIR/crashes/; seed folders
 # that do not exist are skipped. Exits non-zero when the harness finds a crash, leak or timeout.
 # FUZZ_RUNS=N stops after N executions (libFuzzer -runs) if that comes before SECONDS.
+# FUZZ_TIMEOUT (default 60) is libFuzzer's per-input wall-clock timeout: raise it on a loaded
+# machine, where a niced harness gets a few percent of a core.
 set -euo pipefail
 harness=$1 seconds=$2 work=$3
 shift 3
@@ -10,8 +12,13 @@ mkdir -p "$work/corpus" "$work/crashes"
 seeds=()
 for d in "$@"; do [ -e "$d" ] && seeds+=("$d"); done
 dict=$(dirname "$0")/json.dict
+here=$(cd "$(dirname "$0")" && pwd)
+export LSAN_OPTIONS="suppressions=$here/lsan_suppressions.txt:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+case $harness in  # see lsan_suppressions.txt
+  *fuzz_image) export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}" ;;
+esac
 runs=()
 [ -n "${FUZZ_RUNS:-}" ] && runs=(-runs="$FUZZ_RUNS")
-exec "$harness" "${runs[@]}" -max_total_time="$seconds" -max_len=65536 -timeout=60 -rss_limit_mb=4096 \
+exec "$harness" "${runs[@]}" -max_total_time="$seconds" -max_len=65536 -timeout="${FUZZ_TIMEOUT:-60}" -rss_limit_mb=4096 \
   -dict="$dict" -artifact_prefix="$work/crashes/" -print_final_stats=1 \
   "$work/corpus" "${seeds[@]}"
