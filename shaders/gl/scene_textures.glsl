@@ -30,7 +30,7 @@ int sceneWrapTexel(int i, int size, int mode) {
 }
 
 bool sceneTextureValid(int tex) {
-#if !DIPTYCH_SCENE_TEXTURES && !DIPTYCH_SCENE_NORMAL_MAPS
+#if !DIPTYCH_SCENE_TEXTURES && !DIPTYCH_SCENE_NORMAL_MAPS && !DIPTYCH_SCENE_BUMP
   return false;  // folds every texture path away (scene_features.glsl)
 #endif
   return tex >= 0 && tex < sceneTextureInfo.length() && sceneTextureInfo[tex].z > 0;
