@@ -6,6 +6,7 @@
 
 #include "samples/diptych/bias/report.h"
 #include "samples/diptych/bias/study.h"
+#include "samples/diptych/contact_option.h"
 #include "samples/diptych/parse_size.h"
 #include "samples/diptych/sweep_command.h"
 
@@ -74,19 +75,7 @@ void addShadowBiasCommand(CLI::App& app, int& exitCode) {
       ->capture_default_str();
   cmd->add_option("--receiver", c->options.receiver, "Measure only this object's pixels");
   cmd->add_option("--light", c->options.light, "The light studied")->capture_default_str();
-  cmd->add_option("--contact", c->options.contact,
-                  "Contact distance, world units (default 1e-3 x the scene's diagonal)")
-      ->check(CLI::Validator(
-          [](std::string& v) {
-            double d = -1;
-            try {
-              d = std::stod(v);
-            } catch (const std::exception&) {
-            }
-            return d >= 0 && std::isfinite(d) ? std::string()
-                                              : "'" + v + "' is not a finite distance >= 0";
-          },
-          "WORLD"));
+  addContactOption(cmd, c->options.contact);
   cmd->add_option("--frames", c->options.frames, "Measured frames per point")
       ->capture_default_str();
   cmd->add_option("--warmup", c->options.warmup, "Warm-up frames per point")->capture_default_str();

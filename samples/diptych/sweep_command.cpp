@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "engine/core/error.h"
+#include "samples/diptych/contact_option.h"
 #include "samples/diptych/parse_size.h"
 #include "samples/diptych/shading_option.h"
 #include "samples/diptych/sweep/sweep.h"
@@ -61,19 +62,7 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--reach", c->options.reach,
                   "Peter-panning reach from a contact, px (farther: leak)")
       ->capture_default_str();
-  cmd->add_option("--contact", c->options.contact,
-                  "Contact distance, world units (default 1e-3 x the scene's diagonal)")
-      ->check(CLI::Validator(
-          [](std::string& v) {
-            double d = -1;
-            try {
-              d = std::stod(v);
-            } catch (const std::exception&) {
-            }
-            return d >= 0 && std::isfinite(d) ? std::string()
-                                              : "'" + v + "' is not a finite distance >= 0";
-          },
-          "WORLD"));
+  addContactOption(cmd, c->options.contact);
   cmd->add_option("--frames", c->options.frames, "Measured frames per point (median)")
       ->capture_default_str();
   cmd->add_option("--warmup", c->options.warmup, "Warm-up frames per point")->capture_default_str();
