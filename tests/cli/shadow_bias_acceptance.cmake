@@ -6,10 +6,4 @@ expect_success(acceptance ARGS sweep "${SOURCE_DIR}/samples/scenes/shadow-sphere
                --slot visibility=shadow_map:bias=constant,resolution=1024
                --vary constant_bias=0.002:0.5:log12 --vary-light elevation=40 --size 320x240 --out acc
                FILES acc/results.json)
-execute_process(COMMAND /usr/bin/python3 "${SOURCE_DIR}/tests/tools/check_bias_acceptance.py"
-                        "${WORK_DIR}/acc/results.json"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "acceptance failed:\n${out}${err}")
-endif()
-message(STATUS "${out}")
+expect_check(acceptance check_bias_acceptance.py "${WORK_DIR}/acc/results.json")

@@ -10,13 +10,7 @@ expect_success(room ARGS sweep "${SOURCE_DIR}/samples/scenes/closed-room.json"
                --slot visibility=shadow_map:bias=constant,resolution=1024
                --vary constant_bias=0.01,0.03,0.3 --size 240x180 --out room FILES room/results.json)
 foreach(case contact room)
-  execute_process(COMMAND /usr/bin/python3 "${SOURCE_DIR}/tests/tools/check_bias_classes.py"
-                          ${case} "${WORK_DIR}/${case}/results.json"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${case}: ${out}${err}")
-  endif()
-  message(STATUS "${out}")
+  expect_check(${case} check_bias_classes.py ${case} "${WORK_DIR}/${case}/results.json")
 endforeach()
 expect_failure(contact-negative EXPECT "--contact" "finite distance"
                ARGS sweep "${SOURCE_DIR}/samples/scenes/contact-slab.json"

@@ -9,13 +9,7 @@ expect_success(spot ARGS ${study} "${SOURCE_DIR}/samples/scenes/shadow-sphere-sp
 expect_success(point ARGS ${study} "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --out point
                FILES point/summary.json)
 foreach(case spot point)
-  execute_process(COMMAND /usr/bin/python3 "${SOURCE_DIR}/tests/tools/check_bias_lights.py"
-                          ${case} "${WORK_DIR}/${case}/summary.json"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${case}: ${out}${err}")
-  endif()
-  message(STATUS "${out}")
+  expect_check(${case} check_bias_lights.py ${case} "${WORK_DIR}/${case}/summary.json")
 endforeach()
 # The predicted acne rate is drawn: matplotlib names each legend entry in an SVG comment.
 file(READ "${WORK_DIR}/spot/plots/constant.svg" svg)
