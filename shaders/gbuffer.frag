@@ -1,10 +1,12 @@
-// G-buffer raster: hits (instance+1, primitive, u, v) and shading normal + material.
+// G-buffer raster: hits (instance+1, primitive, u, v) and shading normal + material (with the
+// normal or bump map when the scene has them: DIPTYCH_DETAIL_NORMAL).
 // Layout and method: engine/gl/gbuffer_raster.h and docs/gl.md.
 #include "gl/scene_buffers.glsl"
 #include "gl/ray_triangle.glsl"
-#ifdef DIPTYCH_ALPHA_MASK
-// Variant for alpha-tested meshes only (engine/gl/gbuffer_raster.cpp): a discard in the shader
-// of every mesh would cost opaque scenes their early depth test.
+#if defined(DIPTYCH_ALPHA_MASK) || defined(DIPTYCH_DETAIL_NORMAL)
+// DIPTYCH_ALPHA_MASK: variant for alpha-tested meshes only (engine/gl/gbuffer_raster.cpp): a
+// discard in the shader of every mesh would cost opaque scenes their early depth test.
+// DIPTYCH_DETAIL_NORMAL: the scene has normal or bump maps (compiled with its defines).
 #include "common/shading.glsl"
 #include "gl/scene_shading.glsl"
 #endif
@@ -62,5 +64,9 @@ void main() {
 
   outHits = uvec4(uInstance + 1u, uint(gl_PrimitiveID), floatBitsToUint(uv.x),
                         floatBitsToUint(uv.y));
+#ifdef DIPTYCH_DETAIL_NORMAL
+  // The shading normal every pass reconstructs from this texel (normal map, bump), same code.
+  n = surfaceFromHits(outHits).shadingNormal;
+#endif
   outNormal = vec4(n, uMaterial);
 }

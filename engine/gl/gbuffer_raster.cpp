@@ -39,6 +39,14 @@ void checkTargets(const Texture& hits, const Texture& normal, const Texture& dep
   expect(depth, TextureFormat::D32F, "depth");
 }
 
+// Whether the scene's permutation (shader_features.h) has normal maps or bump maps.
+bool hasDetailNormals(const std::vector<ShaderDefine>& defines) {
+  for (const ShaderDefine& d : defines)
+    if ((d.name == "DIPTYCH_SCENE_NORMAL_MAPS" || d.name == "DIPTYCH_SCENE_BUMP") && d.value == "1")
+      return true;
+  return false;
+}
+
 }  // namespace
 
 void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
@@ -82,7 +90,16 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   const bool alphaTested = shading && shading->anyAlphaTested();
   if (alphaTested && !alphaProgram_)
     alphaProgram_ = loadProgram({"gbuffer.vert", "gbuffer.frag"}, {{"DIPTYCH_ALPHA_MASK", ""}});
-  for (const Program* program : {&program_, alphaTested ? &alphaProgram_ : nullptr}) {
+  const bool detail = shading && hasDetailNormals(shading->defines);
+  if (detail && !detailProgram_) {
+    const auto defines = withDefines(shading->defines, {{"DIPTYCH_DETAIL_NORMAL", ""}});
+    detailProgram_ = loadProgram({"gbuffer.vert", "gbuffer.frag"}, defines);
+    detailAlphaProgram_ = loadProgram({"gbuffer.vert", "gbuffer.frag"},
+                                      withDefines(defines, {{"DIPTYCH_ALPHA_MASK", ""}}));
+  }
+  const Program& opaque = detail ? detailProgram_ : program_;
+  const Program& masked = detail ? detailAlphaProgram_ : alphaProgram_;
+  for (const Program* program : {&opaque, alphaTested ? &masked : nullptr}) {
     if (!program) continue;
     program->set("uViewProjection", reversedZProjection(camera, aspect) * viewMatrix(camera));
     program->set("uCameraPosition", camera.position);
@@ -101,7 +118,7 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
     if (mesh.triangleCount == 0) continue;
     const AlphaDraw mode = shading ? shading->alphaDraw(mesh.material) : AlphaDraw::Opaque;
     if (mode == AlphaDraw::Hidden) continue;
-    const Program& program = mode == AlphaDraw::AlphaTested ? alphaProgram_ : program_;
+    const Program& program = mode == AlphaDraw::AlphaTested ? masked : opaque;
     program.use();
     program.set("uInstance", std::uint32_t(mesh.instance));
     program.set("uFirstTriangle", mesh.firstTriangle);

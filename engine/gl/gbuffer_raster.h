@@ -40,7 +40,9 @@ class GBufferRasterizer {
   // With `shading` (uploaded from the same scene), alpha-masked materials cut out their holes:
   // meshes whose coverage is constant and below the cutoff are not drawn, textured masks are
   // drawn with a program variant that discards fragments below the cutoff (compiled on first
-  // need, so opaque scenes run the plain program only). Without it every mesh is opaque.
+  // need, so opaque scenes run the plain program only). Without it every mesh is opaque, and
+  // the normal output is the interpolated vertex normal; with it, the normal- or bump-mapped
+  // shading normal that every pass reconstructs (surfaceFromHits), when the scene has those.
   void render(const GlSceneBuffers& scene, const Camera& camera, GBufferTextures& targets,
               const GlShadingBuffers* shading = nullptr);
   // The same, into textures owned elsewhere (the frame graph's pool).
@@ -51,6 +53,9 @@ class GBufferRasterizer {
  private:
   Program program_;
   Program alphaProgram_;  // DIPTYCH_ALPHA_MASK variant; empty until a scene needs it
+  // DIPTYCH_DETAIL_NORMAL variants (plain, alpha-masked), compiled with the scene's defines when
+  // `shading` has normal maps or bump: the normal output is then surfaceFromHits' shading normal.
+  Program detailProgram_, detailAlphaProgram_;
   Framebuffer framebuffer_;
 };
 

@@ -141,4 +141,44 @@ Image prefilteredLevel(const CubeChain& source, int width, int height, float rou
   return out;
 }
 
+vec3 PrefilteredCube::sample(int level, const vec3& direction) const {
+  vec2 st;
+  const int face = cubeFace(direction, st);
+  return bilinear(levels[std::size_t(level)][std::size_t(face)], st);
+}
+
+PrefilteredCube prefilteredCube(const CubeChain& source, const std::vector<int>& faceSides) {
+  PrefilteredCube cube;
+  const int count = int(faceSides.size());
+  cube.levels.resize(faceSides.size());
+  for (int level = 1; level < count; ++level) {
+    const float roughness = float(level) / float(count - 1);
+    const int side = std::max(1, faceSides[std::size_t(level)]);
+    for (int f = 0; f < 6; ++f) {
+      const Image rgba = prefilteredLevel(source, side, side, roughness,
+                                          [f](vec2 st) { return cubeFaceDirection(f, st); });
+      Image rgb(side, side, 3);
+      for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x)
+          for (int k = 0; k < 3; ++k) rgb.at(x, y, k) = rgba.at(x, y, k);
+      cube.levels[std::size_t(level)][std::size_t(f)] = std::move(rgb);
+    }
+  }
+  return cube;
+}
+
+Image resampledLevel(const PrefilteredCube& cube, int level, int width, int height,
+                     const std::function<vec3(vec2)>& direction) {
+  Image out(width, height, 4, 1.f);
+  tbb::parallel_for(0, height, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const vec3 c =
+          cube.sample(level, glm::normalize(direction(vec2((float(x) + 0.5f) / float(width),
+                                                           (float(y) + 0.5f) / float(height)))));
+      for (int k = 0; k < 3; ++k) out.at(x, y, k) = c[k];
+    }
+  });
+  return out;
+}
+
 }  // namespace diptych::envmap

@@ -40,4 +40,19 @@ class CubeChain {
 Image prefilteredLevel(const CubeChain& source, int width, int height, float roughness,
                        const std::function<vec3(vec2)>& direction);
 
+// Prefiltered levels as cube faces in world space: what env_sphere's levels hold, made
+// independent of the view, so that turning the camera only resamples them (resampledLevel)
+// instead of integrating again. levels[i] for i >= 1 (levels[0] stays empty: level 0 is the map).
+struct PrefilteredCube {
+  std::vector<std::array<Image, 6>> levels;
+  vec3 sample(int level, const vec3& direction) const;  // bilinear within the face
+};
+
+// Levels 1 .. faceSides.size() - 1, level i at roughness i / (n - 1) with faces faceSides[i].
+PrefilteredCube prefilteredCube(const CubeChain& source, const std::vector<int>& faceSides);
+
+// width x height RGBA (alpha 1) of one PrefilteredCube level looked up at direction(st).
+Image resampledLevel(const PrefilteredCube& cube, int level, int width, int height,
+                     const std::function<vec3(vec2)>& direction);
+
 }  // namespace diptych::envmap

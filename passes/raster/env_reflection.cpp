@@ -65,8 +65,11 @@ constexpr int kPrefilterSourceSize = 128;  // cube face side of the prefilter's 
 // from the scene's own images when they already have the right layout. A solid colour becomes
 // a one-texel map: bilinear filtering of a constant is that constant. With `prefilter`, levels
 // 1.. hold the GGX-prefiltered environment (env_prefilter.h); level 0 is the map itself.
+// env_sphere's levels come from `sphereLevels` (world-space cube levels, integrated once per
+// environment); the other kinds integrate their own levels here and time it in `prefilterMs`.
 gl::Texture buildMap(const Environment& env, EnvMapKind kind, int resolution,
-                     const mat3& eyeToWorld, bool prefilter, double& prefilterMs) {
+                     const mat3& eyeToWorld, bool prefilter, double& prefilterMs,
+                     const envmap::PrefilteredCube* sphereLevels) {
   const bool constant = env.type == EnvironmentType::Color;
   const int res = constant ? 1 : resolution;
   std::vector<Image> base;  // level 0, one image per layer
@@ -97,6 +100,19 @@ gl::Texture buildMap(const Environment& env, EnvMapKind kind, int resolution,
   // The lat-long seam at u = 0/1 is continuous: wrap, as environment.cpp's bilinear does.
   if (kind == EnvMapKind::Equirect) gl::glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   if (levels == 1) return t;
+  if (kind == EnvMapKind::Sphere && sphereLevels) {
+    for (int level = 1; level < levels; ++level) {
+      const int side = std::max(1, w >> level);
+      uploadImage(t,
+                  envmap::resampledLevel(*sphereLevels, level, side, side,
+                                         [&](vec2 st) {
+                                           return eyeToWorld * envmap::sphereMapDirection(
+                                                                   vec2(st.x, 1.f - st.y));
+                                         }),
+                  0, level, false);
+    }
+    return t;
+  }
   const auto start = std::chrono::steady_clock::now();
   const envmap::CubeChain source(env, kPrefilterSourceSize);
   for (int level = 1; level < levels; ++level) {
@@ -108,8 +124,7 @@ gl::Texture buildMap(const Environment& env, EnvMapKind kind, int resolution,
       const int f = int(layer);
       const std::function<vec3(vec2)> direction = [&](vec2 st) -> vec3 {
         if (cube) return envmap::cubeFaceDirection(f, st);
-        if (kind == EnvMapKind::Equirect) return envmap::equirectDirection(st);
-        return eyeToWorld * envmap::sphereMapDirection(vec2(st.x, 1.f - st.y));
+        return envmap::equirectDirection(st);
       };
       const Image filtered = envmap::prefilteredLevel(source, cw, ch, roughness, direction);
       uploadImage(t, resized(filtered, lw, lh), f, level, cube);
@@ -118,6 +133,16 @@ gl::Texture buildMap(const Environment& env, EnvMapKind kind, int resolution,
   prefilterMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return t;
+}
+
+// env_sphere's prefiltered levels as world-space cubes: they depend on the environment and the
+// level count only, not on the view. Faces of half the level's side (a sphere map spends about
+// four texels across per cube-face texel of the same solid angle), capped like env_cube's.
+envmap::PrefilteredCube sphereWorldLevels(const Environment& env, int side) {
+  std::vector<int> faces(std::size_t(envmap::prefilterLevelCount(side, side)));
+  for (std::size_t level = 1; level < faces.size(); ++level)
+    faces[level] = std::clamp((side >> level) / 2, 1, kPrefilterCubeCap);
+  return envmap::prefilteredCube(envmap::CubeChain(env, kPrefilterSourceSize), faces);
 }
 
 // GL state of the env_* passes, one per RenderWorld (render_world.h: never in the pass).
@@ -143,16 +168,38 @@ struct EnvReflectionGl {
         .first->second;
   }
 
-  // A sphere map depends on the view; it is rebuilt when the camera turns. `prefilterMs` is
-  // set to the prefiltering time when this call built prefiltered levels, else left alone.
+  // env_sphere's view-independent levels per sphere-map side (sphereWorldLevels).
+  std::map<int, envmap::PrefilteredCube> sphereLevels;
+
+  // What this call did, for the pass's counters (the test reads them: a counter, not a time).
+  struct Built {
+    bool map = false;         // a texture was (re)built
+    double prefilterMs = -1;  // levels were integrated (a one-time cost), in ms
+  };
+
+  // A sphere map depends on the view: its level 0 is resampled from the environment and its
+  // prefiltered levels from sphereLevels when the camera turns (not when it moves); the GGX
+  // integration itself runs once per environment and side.
   const gl::Texture& map(const Environment& env, EnvMapKind kind, int resolution,
-                         const mat3& eyeToWorld, bool prefilter, double& prefilterMs) {
+                         const mat3& eyeToWorld, bool prefilter, Built& built) {
     Map& m = maps[{kind, resolution, prefilter}];
     const bool stale = kind == EnvMapKind::Sphere && m.eyeToWorld != eyeToWorld;
-    if (!m.texture || stale) {
-      m.texture = buildMap(env, kind, resolution, eyeToWorld, prefilter, prefilterMs);
-      m.eyeToWorld = eyeToWorld;
+    if (m.texture && !stale) return m.texture;
+    const envmap::PrefilteredCube* levels = nullptr;
+    if (kind == EnvMapKind::Sphere && prefilter && env.type != EnvironmentType::Color) {
+      auto it = sphereLevels.find(resolution);
+      if (it == sphereLevels.end()) {
+        const auto start = std::chrono::steady_clock::now();
+        it = sphereLevels.emplace(resolution, sphereWorldLevels(env, resolution)).first;
+        built.prefilterMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+      }
+      levels = &it->second;
     }
+    m.texture = buildMap(env, kind, resolution, eyeToWorld, prefilter, built.prefilterMs, levels);
+    m.eyeToWorld = eyeToWorld;
+    built.map = true;
     return m.texture;
   }
 };
@@ -186,17 +233,21 @@ void EnvReflectionPass::execute(PassContext& c) {
   const Camera& camera = c.frame().camera;
   const mat3 worldToEye(viewMatrix(camera));
   EnvReflectionGl& state = world.glCached<EnvReflectionGl>();
-  double prefilterMs = -1.0;
+  EnvReflectionGl::Built built;
   const gl::Texture& map = state.map(world.scene().environment, kind_, resolution_,
-                                     glm::transpose(worldToEye), prefilter_, prefilterMs);
-  if (prefilterMs >= 0.0) {  // a one-time cost per environment (and per view for env_sphere)
+                                     glm::transpose(worldToEye), prefilter_, built);
+  // Counters of this frame: map_builds (the texture was built; env_sphere: the camera turned)
+  // and prefilter_builds (the GGX levels were integrated: once per environment).
+  c.count("map_builds", built.map ? 1.0 : 0.0);
+  c.count("prefilter_builds", built.prefilterMs >= 0.0 ? 1.0 : 0.0);
+  if (built.prefilterMs >= 0.0) {  // a one-time cost per environment, reported apart
     const char* name = kind_ == EnvMapKind::Cube     ? "env_cube"
                        : kind_ == EnvMapKind::Sphere ? "env_sphere"
                                                      : "env_equirect";
-    c.count("prefilter_ms", prefilterMs);
-    world.oneTimeMs[std::string(name) + " prefilter"] += prefilterMs;
-    log().info("{}: GGX-prefiltered {} levels in {:.1f} ms (once per environment{})", name,
-               map.levels() - 1, prefilterMs, kind_ == EnvMapKind::Sphere ? " and view" : "");
+    c.count("prefilter_ms", built.prefilterMs);
+    world.oneTimeMs[std::string(name) + " prefilter"] += built.prefilterMs;
+    log().info("{}: GGX-prefiltered {} levels in {:.1f} ms (once per environment)", name,
+               map.levels() - 1, built.prefilterMs);
   }
   const gl::GlShadingBuffers& shading = world.glShading();
   const gl::Program& program = state.program(kind_, shading.defines);

@@ -22,6 +22,8 @@
 #ifndef DIPTYCH_PBR_GLSL
 #define DIPTYCH_PBR_GLSL
 
+#include "env_brdf_table.glsl"
+
 // GGX alpha = roughness^2 (glTF Appendix B), floored at 1e-3 so that D and V stay finite at
 // roughness 0 (D's peak is then 1 / (pi 1e-6), a near-mirror). Filament floors likewise.
 SHADING_FN float pbrAlpha(float roughness) {
@@ -90,15 +92,27 @@ SHADING_FN vec3 pbrDirect(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
   return min(f * (SHADING_PI * nl), vec3(SHADING_FLT_MAX));
 }
 
-// Directional albedo of the GGX lobe with Schlick Fresnel, E(n.v) = f0 A + B: the analytic fit
-// of the split-sum table by Lazarov (2013) as given by Karis, "Physically Based Shading on
-// Mobile" (2014). Returns (A, B).
+// Directional albedo of the GGX lobe with Schlick Fresnel, E(n.v) = f0 A + B (Karis 2013, "Real
+// Shading in Unreal Engine 4", split sum's second factor). Returns (A, B), bilinear in the table
+// env_brdf_table.glsl, which engine/shading/env_brdf.cpp integrates from THIS file's pbrV and
+// pbrSchlickWeight (importance sampling the GGX D). Nodes at n.v = x^2, x = i / (N - 1): the
+// lookup coordinate is sqrt(n.v). The same code runs in GLSL and C++; docs/materials-secondary.md
+// gives the table's size, sample count and interpolation error.
+SHADING_FN vec2 pbrEnvironmentBrdfNode(int i, int j) {
+  int k = 2 * (j * ENV_BRDF_SIZE + i);
+  return vec2(ENV_BRDF_TABLE[k], ENV_BRDF_TABLE[k + 1]);
+}
 SHADING_FN vec2 pbrEnvironmentBrdf(float nv, float roughness) {
-  float r = saturate01(roughness);
-  float rx = 1.0f - r;
-  float ry = 0.0425f - 0.0275f * r;
-  float a004 = min(rx * rx, exp2(-9.28f * saturate01(nv))) * rx + ry;
-  return vec2(1.04f - 1.04f * a004 - 0.572f * r, 1.04f * a004 - 0.04f + 0.022f * r);
+  float last = float(ENV_BRDF_SIZE - 1);
+  float x = sqrt(saturate01(nv)) * last;
+  float y = saturate01(roughness) * last;
+  int i = min(int(x), ENV_BRDF_SIZE - 2);
+  int j = min(int(y), ENV_BRDF_SIZE - 2);
+  float fx = x - float(i);
+  float fy = y - float(j);
+  vec2 lower = mix(pbrEnvironmentBrdfNode(i, j), pbrEnvironmentBrdfNode(i + 1, j), fx);
+  vec2 upper = mix(pbrEnvironmentBrdfNode(i, j + 1), pbrEnvironmentBrdfNode(i + 1, j + 1), fx);
+  return mix(lower, upper, fy);
 }
 
 // The specular lobe's Fresnel-weighted directional albedo, mix(w E(f0_d), E(base), metallic) with

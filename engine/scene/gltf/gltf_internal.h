@@ -25,4 +25,10 @@ void convertMaterials(const tinygltf::Model& model, const DecodedImages& decoded
 std::vector<std::vector<int>> convertMeshes(const tinygltf::Model& model, const std::string& file,
                                             Scene& scene);
 
+// KHR_materials_volume's thicknessFactor is in the mesh's own units (glTF spec): scales each
+// volume material's thickness into world units by the cube root of |det| of its instances'
+// transform (the mean axis scale; exact for uniform scales). A material placed at several scales
+// is split: one copy of the material and of each mesh using it per further scale.
+void scaleVolumeThickness(Scene& scene);
+
 }  // namespace diptych::gltf

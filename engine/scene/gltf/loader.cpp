@@ -322,6 +322,7 @@ Scene loadGltfUnvalidated(const std::filesystem::path& path) {
   gltf::convertMaterials(model, decoded, file, scene);
   const auto meshes = gltf::convertMeshes(model, file, scene);
   convertNodes(model, meshes, file, scene);
+  gltf::scaleVolumeThickness(scene);
   return scene;
 }
 
