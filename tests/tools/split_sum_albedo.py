@@ -45,7 +45,8 @@ def integrate(nv, roughness, samples=16384):
 def load_table():
     text = open(TABLE).read()
     size = int(re.search(r"ENV_BRDF_SIZE = (\d+);", text).group(1))
-    body = text[text.index("{", text.index("ENV_BRDF_TABLE[")) + 1:text.index("};")]
+    start = text.index("{", text.index("const float ENV_BRDF_TABLE["))
+    body = text[start + 1:text.index("};", start)]
     values = [float(x.rstrip("f")) for x in re.findall(r"[-+0-9.e]+f", body)]
     assert len(values) == 2 * size * size, TABLE
     return size, values

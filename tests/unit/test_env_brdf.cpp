@@ -31,7 +31,7 @@ constexpr double kPi = std::numbers::pi;
 // The committed table's numbers, in file order.
 std::vector<float> committedTable(const std::string& text) {
   std::vector<float> values;
-  const std::size_t open = text.find("ENV_BRDF_TABLE[");
+  const std::size_t open = text.find("const float ENV_BRDF_TABLE[");
   const std::size_t begin = text.find('{', open), end = text.find("};", begin);
   std::string body = text.substr(begin + 1, end - begin - 1);
   std::istringstream lines(body);
