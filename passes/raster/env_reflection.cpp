@@ -136,8 +136,9 @@ gl::Texture buildMap(const Environment& env, EnvMapKind kind, int resolution,
 }
 
 // env_sphere's prefiltered levels as world-space cubes: they depend on the environment and the
-// level count only, not on the view. Faces of half the level's side (a sphere map spends about
-// four texels across per cube-face texel of the same solid angle), capped like env_cube's.
+// level count only, not on the view. Faces of half the level's side (a sphere map's disc spans
+// every direction, as two opposite faces do across), capped like env_cube's: rough lobes are
+// smooth, and the per-view step is one bilinear lookup per texel.
 envmap::PrefilteredCube sphereWorldLevels(const Environment& env, int side) {
   std::vector<int> faces(std::size_t(envmap::prefilterLevelCount(side, side)));
   for (std::size_t level = 1; level < faces.size(); ++level)
