@@ -38,7 +38,7 @@ struct ToneMap {
 // Largest image read: 32768 per side and 2^28 values (1 GiB as float).
 constexpr int kMaxImageSide = 32768;
 constexpr std::uint64_t kMaxImageValues =
-    std::uint64_t(double(std::uint64_t(1) << 28) * kWorkLimitScale);
+    std::uint64_t(double(std::uint64_t(1) << 28) * kImageWorkLimitScale);
 
 // Reads any format OpenImageIO knows (a regular file of at most kMaxBinaryFileBytes). Values are
 // returned as stored (8-bit PNG/JPEG -> [0,1], still sRGB-encoded; HDR/EXR -> linear). Throws

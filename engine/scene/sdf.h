@@ -109,7 +109,7 @@ struct SdfObject {
 // bounds. Counter-clockwise seen from outside (f > 0), normals from sdfNormal.
 // Its cost is (cells + 1)^3 distance evaluations of every node; loaders and the geometry axis
 // refuse more than kMaxSdfEvaluations (e.g. 256^3 x 89 nodes, or 64^3 x 1024).
-inline constexpr double kMaxSdfEvaluations = 1.5e9 * kWorkLimitScale;
+inline constexpr double kMaxSdfEvaluations = 1.5e9 * kSdfWorkLimitScale;
 struct Mesh;
 Mesh polygonizeSdf(const Sdf& sdf, const dvec3& lo, const dvec3& hi, int cells);
 

@@ -4,7 +4,8 @@
 # The corpus grows in build/fuzz/tests/fuzz/work/TARGET/corpus (kept between runs); crashes land
 # in .../crashes/ and make the script exit non-zero. Each run's final stats (executions, exec/s)
 # are printed; docs/robustness.md records them. FUZZ_RUNS=N stops each target after N executions
-# (run.sh); FUZZ_PARALLEL=1 runs the targets at once instead of one after the other.
+# (run.sh); FUZZ_PARALLEL=1 runs the targets at once instead of one after the other; FUZZ_NICE
+# (default 10) is their niceness.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=$root/build/fuzz
@@ -24,7 +25,7 @@ run_one() {
   local t=$1 log=$build/tests/fuzz/work/$1.log
   mkdir -p "$(dirname "$log")"
   # shellcheck disable=SC2086
-  nice -n 10 "$root/tests/fuzz/run.sh" "$build/tests/fuzz/fuzz_$t" "$seconds" \
+  nice -n "${FUZZ_NICE:-10}" "$root/tests/fuzz/run.sh" "$build/tests/fuzz/fuzz_$t" "$seconds" \
     "$build/tests/fuzz/work/$t" ${seeds[$t]} >"$log" 2>&1
 }
 report() {
