@@ -126,5 +126,26 @@ TEST(GBufferSurface, LayersHoldTheHitsSurface) {
   EXPECT_GT(hitPixels, 1000);
 }
 
+// The G-buffer writes its normal target only for a reader (here: the frame's outputs); a frame
+// that asks for it gets the interpolated unit normal and the material of every hit pixel.
+TEST(GBufferTargets, NormalIsWrittenWhenRequested) {
+  const fs::path scene = fs::path(DIPTYCH_SAMPLES_DIR) / "scenes/whitted.json";
+  auto f = testing::renderHybridFrame(scene, 80, 60, {"gbuffer.normal", "gbuffer.hits"},
+                                      defaultHybridRecipe());
+  const CpuImage& normal = f->output("gbuffer.normal");
+  const CpuImage& hits = f->output("gbuffer.hits");
+  long hitPixels = 0;
+  for (int y = 0; y < normal.desc.height; ++y)
+    for (int x = 0; x < normal.desc.width; ++x) {
+      const std::uint32_t id = hits.u(x, y, 0);
+      if (id == 0) continue;
+      ++hitPixels;
+      const vec3 n(normal.f(x, y, 0), normal.f(x, y, 1), normal.f(x, y, 2));
+      EXPECT_NEAR(glm::length(n), 1.f, 1e-5f);
+      EXPECT_EQ(normal.f(x, y, 3), float(f->world->geometry().meshes[id - 1].material));
+    }
+  EXPECT_GT(hitPixels, 1000);
+}
+
 }  // namespace
 }  // namespace diptych
