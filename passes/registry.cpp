@@ -32,8 +32,10 @@ namespace diptych {
 const PassRegistry& builtinPasses() {
   static const PassRegistry registry = [] {
     PassRegistry r;
-    r.add<GBufferPass>({.name = "gbuffer",
-                        .summary = "rasterized hits buffer, normals and reversed-Z depth (GL)"});
+    r.add<GBufferPass>(
+        {.name = "gbuffer",
+         .summary =
+             "rasterized hits buffer, normals, optional stored surface, reversed-Z depth (GL)"});
     r.addRenamedOutput({"gbuffer", "visibility", kHits});
     r.add<ShadePass>({.name = "shade",
                       .summary = "the lecture's illumination model from the G-buffer (GL or CPU: "

@@ -5,6 +5,7 @@
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
+#include "gl/gbuffer_surface.glsl"
 
 uniform vec2 uViewportSize;
 uniform vec3 uEye;  // the camera centre
@@ -12,7 +13,7 @@ layout(binding = 0) uniform usampler2D uHits;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  SceneSurface s = surfaceFromHits(texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
+  SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
   outColor = vec4(0.0);
   if (s.hit && hasTransmission(sceneMaterial(s.material, s.uv))) {
     bool front = dot(s.faceNormal, s.position - uEye) <= 0.0;

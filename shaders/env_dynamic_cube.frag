@@ -4,6 +4,7 @@
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
+#include "gl/gbuffer_surface.glsl"
 
 layout(binding = 0) uniform usampler2D uHits;
 layout(binding = 1) uniform samplerCube uCube;
@@ -12,7 +13,7 @@ uniform vec3 uEye;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  SceneSurface s = surfaceFromHits(texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
+  SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
   if (!s.hit || s.instance != uInstance) discard;
   vec3 incoming = s.position - uEye;
   vec3 n = dot(s.faceNormal, incoming) > 0.0 ? -s.shadingNormal : s.shadingNormal;

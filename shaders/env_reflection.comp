@@ -6,6 +6,7 @@
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
+#include "gl/gbuffer_surface.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -46,7 +47,7 @@ void main() {
   ivec2 size = imageSize(uReflection);
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= size.x || p.y >= size.y) return;
-  SceneSurface s = surfaceFromHits(texelFetch(uHits, p, 0));
+  SceneSurface s = gbufferSurface(p, texelFetch(uHits, p, 0));
   vec4 result = vec4(0.0);
   if (s.hit) {
     ShadingMaterial m = sceneMaterial(s.material, s.uv);

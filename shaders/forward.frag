@@ -6,6 +6,7 @@
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
+#include "gl/gbuffer_surface.glsl"
 #include "gl/ray_triangle.glsl"
 #include "gl/pixel_ray.glsl"
 
@@ -35,7 +36,7 @@ void main() {
   SceneSurface first = surfaceFromHits(texel);  // background: no first surface
   if (uBehind != 0) {
     texel = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
-    first = surfaceFromHits(texel);
+    first = gbufferSurface(ivec2(gl_FragCoord.xy), texel);
     if (uTransmissiveOnly != 0 && !(first.hit && hasTransmission(sceneMaterial(first.material, first.uv))))
       discard;
     // "Behind the first visible surface": the first surface itself (same instance and

@@ -1,5 +1,6 @@
-// G-buffer raster: hits (instance+1, primitive, u, v) and shading normal + material (with the
-// normal or bump map when the scene has them: DIPTYCH_DETAIL_NORMAL).
+// G-buffer raster: hits (instance+1, primitive, u, v) and, with GBUFFER_NORMAL, the shading
+// normal + material (with the normal or bump map when the scene has them: DIPTYCH_DETAIL_NORMAL);
+// the surface target is resolved afterwards by gbuffer_surface.comp.
 // Layout and method: engine/gl/gbuffer_raster.h and docs/gl.md.
 #include "gl/scene_buffers.glsl"
 #include "gl/ray_triangle.glsl"
@@ -25,7 +26,9 @@ uniform uint uFirstTriangle;
 uniform float uMaterial;
 
 layout(location = 0) out uvec4 outHits;
+#ifdef GBUFFER_NORMAL
 layout(location = 1) out vec4 outNormal;
+#endif
 
 void main() {
   // gl_FragCoord.xy is the pixel centre with y up; primaryRay's image y runs down, so its
@@ -57,16 +60,17 @@ void main() {
     discard;
   }
 #endif
+  outHits = uvec4(uInstance + 1u, uint(gl_PrimitiveID), floatBitsToUint(uv.x),
+                        floatBitsToUint(uv.y));
+#ifdef GBUFFER_NORMAL
   vec3 n = w * sceneNormal(idx.x) + uv.x * sceneNormal(idx.y) + uv.y * sceneNormal(idx.z);
   float len = length(n);
   // Same fallback as interpolateNormal(): the geometric normal when the blend cancels out.
   n = len > 0.0 ? n / len : normalize(cross(p1 - p0, p2 - p0));
-
-  outHits = uvec4(uInstance + 1u, uint(gl_PrimitiveID), floatBitsToUint(uv.x),
-                        floatBitsToUint(uv.y));
 #ifdef DIPTYCH_DETAIL_NORMAL
   // The shading normal every pass reconstructs from this texel (normal map, bump), same code.
   n = surfaceFromHits(outHits).shadingNormal;
 #endif
   outNormal = vec4(n, uMaterial);
+#endif
 }

@@ -10,6 +10,7 @@
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
 #include "gl/scene_environment.glsl"
+#include "gl/gbuffer_surface.glsl"
 
 layout(binding = 0, rgba32ui) readonly uniform uimage2D uHits;
 layout(binding = 1, r32f) readonly uniform image2D uVisibility;            // one light
@@ -47,7 +48,7 @@ void main() {
   vec2 ndc = 2.0 * gl_FragCoord.xy / uViewportSize - 1.0;
   vec3 eye = normalize(uForward + (ndc.x * uAspect * uTanHalfFov) * uRight +
                        (ndc.y * uTanHalfFov) * uUp);
-  SceneSurface s = surfaceFromHits(imageLoad(uHits, p));
+  SceneSurface s = gbufferSurface(p, imageLoad(uHits, p));
   if (!s.hit) {
     outColor = vec4(sceneEnvironment(eye), 1.0);
     return;

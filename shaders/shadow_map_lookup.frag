@@ -6,6 +6,7 @@
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
+#include "gl/gbuffer_surface.glsl"
 
 const int KIND_UNSHADOWED = 0;
 const int KIND_ORTHO = 1;
@@ -218,7 +219,7 @@ void main() {
     outVisibility = 1.0;
     return;
   }
-  SceneSurface s = surfaceFromHits(texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
+  SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
   ShadowLight light = shadowLights[uLight];
   gFirst = light.info.y;
   gLightPos = light.positionNear.xyz;

@@ -1,5 +1,6 @@
 #include "engine/gl/forward_renderer.h"
 
+#include "engine/gl/bindings.h"
 #include "engine/gl/debug.h"
 #include "engine/gl/scene_buffers.h"
 #include "engine/gl/shader.h"
@@ -99,14 +100,15 @@ void setCamera(const Program& p, const ForwardView& view, const mat4& viewProjec
 }  // namespace
 
 const Program& ForwardRenderer::surface(const GlShadingBuffers& shading, bool behind,
-                                        bool transmissiveOnly) {
-  const int key = (behind ? 1 : 0) + (transmissiveOnly ? 2 : 0);
+                                        bool transmissiveOnly, bool storedSurface) {
+  const int key = (behind ? 1 : 0) + (transmissiveOnly ? 2 : 0) + (storedSurface ? 4 : 0);
   Program& p = surfaces_[key];
-  if (!p)
-    p = loadProgram({"forward.vert", "forward.frag"},
-                    withDefines(shading.defines,
-                                {{"FORWARD_BEHIND", behind ? "1" : "0"},
-                                 {"FORWARD_TRANSMISSIVE_ONLY", transmissiveOnly ? "1" : "0"}}));
+  if (!p) {
+    std::vector<ShaderDefine> own = {{"FORWARD_BEHIND", behind ? "1" : "0"},
+                                     {"FORWARD_TRANSMISSIVE_ONLY", transmissiveOnly ? "1" : "0"}};
+    if (storedSurface) own.push_back({"DIPTYCH_GBUFFER_SURFACE", "1"});
+    p = loadProgram({"forward.vert", "forward.frag"}, withDefines(shading.defines, own));
+  }
   return p;
 }
 
@@ -159,8 +161,9 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
     glDisable(GL_BLEND);
   }
   if (o.clipPlane) glEnable(GL_CLIP_DISTANCE0);
+  const bool stored = o.behindVisibility && o.behindSurface;
   const Program& program = surface(shading, o.behindVisibility != nullptr,
-                                   o.behindVisibility && o.transmissiveFirstOnly);
+                                   o.behindVisibility && o.transmissiveFirstOnly, stored);
   program.set("uViewProjection", viewProjection);
   setCamera(program, view, viewProjection, width, height);
   program.set("uClipPlane", o.clipPlane.value_or(vec4(0.f, 0.f, 0.f, 1.f)));
@@ -168,6 +171,7 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
   program.set("uLightCount", shading.lightCount);
   program.set("uBlend", o.blend ? 1 : 0);
   if (o.behindVisibility) glBindTextureUnit(0, o.behindVisibility->id());
+  if (stored) glBindTextureUnit(UNIT_GBUFFER_SURFACE, o.behindSurface->id());
   program.use();
   buffers.vertexArray.bind();
   buffers.bindStorage();

@@ -64,6 +64,9 @@ struct ForwardOptions {
   // With behindVisibility: draw only pixels whose first visible surface transmits (k_t > 0),
   // for producers that zero every other pixel anyway (the blend producers).
   bool transmissiveFirstOnly = false;
+  // With behindVisibility: the G-buffer's stored surface of the same frame (gbuffer_raster.h),
+  // read instead of rebuilding the first surface from the hits in every fragment.
+  const Texture* behindSurface = nullptr;
 };
 
 // What a forward render draws: the scene and its uploaded geometry and shading buffers (passes
@@ -86,7 +89,8 @@ class ForwardRenderer {
   void ensureEnvironment(const Scene& scene);
   // forward.frag for (behind, transmissive-only) compiled for the scene on first use: constants
   // instead of uniforms, since llvmpipe would run the visibility-texel path for every fragment.
-  const Program& surface(const GlShadingBuffers& shading, bool behind, bool transmissiveOnly);
+  const Program& surface(const GlShadingBuffers& shading, bool behind, bool transmissiveOnly,
+                         bool storedSurface);
   std::map<int, Program> surfaces_;
   Program background_;
   Framebuffer framebuffer_;

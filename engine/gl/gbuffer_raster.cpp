@@ -7,8 +7,12 @@
 
 namespace diptych::gl {
 
-GBufferTextures GBufferTextures::allocate(int width, int height) {
+GBufferTextures GBufferTextures::allocate(int width, int height, bool surface) {
   GBufferTextures t;
+  if (surface) {
+    t.surface = Texture::create2DArray(TextureFormat::RGBA32F, width, height, 3);
+    t.surface.setLabel("gbuffer.surface");
+  }
   t.hits = Texture::create2D(TextureFormat::RGBA32UI, width, height);
   t.normal = Texture::create2D(TextureFormat::RGBA32F, width, height);
   t.depth = Texture::create2D(TextureFormat::D32F, width, height);
@@ -18,25 +22,16 @@ GBufferTextures GBufferTextures::allocate(int width, int height) {
   return t;
 }
 
-GBufferRasterizer::GBufferRasterizer()
-    : program_(loadProgram({"gbuffer.vert", "gbuffer.frag"})),
-      framebuffer_(Framebuffer::create()) {}
+GBufferRasterizer::GBufferRasterizer() {
+  program(false, true, nullptr);
+}
 
 namespace {
 
-void checkTargets(const Texture& hits, const Texture& normal, const Texture& depth) {
-  const int width = hits.width(), height = hits.height();
-  const auto expect = [&](const Texture& tex, TextureFormat format, const char* what) {
-    if (!tex || tex.format() != format || tex.kind() != TextureKind::Tex2D ||
-        tex.width() != width || tex.height() != height) {
-      throw Error(std::string("G-buffer target '") + what + "' must be a " +
-                  std::string(formatInfo(format).name) + " 2D texture of " + std::to_string(width) +
-                  "x" + std::to_string(height));
-    }
-  };
-  expect(hits, TextureFormat::RGBA32UI, "hits");
-  expect(normal, TextureFormat::RGBA32F, "normal");
-  expect(depth, TextureFormat::D32F, "depth");
+std::string keyOf(const std::vector<ShaderDefine>& defines) {
+  std::string key;
+  for (const ShaderDefine& d : defines) key += d.name + "=" + d.value + ";";
+  return key;
 }
 
 // Whether the scene's permutation (shader_features.h) has normal maps or bump maps.
@@ -49,22 +44,87 @@ bool hasDetailNormals(const std::vector<ShaderDefine>& defines) {
 
 }  // namespace
 
+const Program& GBufferRasterizer::program(bool alpha, bool normal,
+                                          const GlShadingBuffers* shading) {
+  // The alpha-tested and detail-normal variants include scene_shading.glsl: the scene's
+  // permutation. With normal or bump maps the normal output is surfaceFromHits' shading normal.
+  const bool detail = normal && shading && hasDetailNormals(shading->defines);
+  std::vector<ShaderDefine> defines;
+  if ((alpha || detail) && shading) defines = shading->defines;
+  if (alpha) defines.push_back({"DIPTYCH_ALPHA_MASK", ""});
+  if (normal) defines.push_back({"GBUFFER_NORMAL", ""});
+  if (detail) defines.push_back({"DIPTYCH_DETAIL_NORMAL", ""});
+  const std::string key = "raster:" + keyOf(defines);
+  auto it = programs_.find(key);
+  if (it == programs_.end())
+    it = programs_.emplace(key, loadProgram({"gbuffer.vert", "gbuffer.frag"}, defines)).first;
+  return it->second;
+}
+
+const Program& GBufferRasterizer::surfaceProgram(const GlShadingBuffers& shading) {
+  const std::string key = "surface:" + keyOf(shading.defines);
+  auto it = programs_.find(key);
+  if (it == programs_.end())
+    it = programs_.emplace(key, loadProgram({"gbuffer_surface.comp"}, shading.defines)).first;
+  return it->second;
+}
+
+namespace {
+
+void checkTargets(const GBufferTargets& t) {
+  if (!t.hits || !t.depth) throw Error("G-buffer: the hits and depth targets are required");
+  const int width = t.hits->width(), height = t.hits->height();
+  const auto expect = [&](const Texture* tex, TextureFormat format, int layers, const char* what) {
+    if (!tex) return;
+    const TextureKind kind = layers > 1 ? TextureKind::Tex2DArray : TextureKind::Tex2D;
+    if (!*tex || tex->format() != format || tex->kind() != kind || tex->width() != width ||
+        tex->height() != height || (layers > 1 && tex->layers() != layers)) {
+      throw Error(std::string("G-buffer target '") + what + "' must be a " +
+                  std::string(formatInfo(format).name) + " 2D " +
+                  (layers > 1 ? "array texture of " + std::to_string(layers) + " layers of "
+                              : std::string("texture of ")) +
+                  std::to_string(width) + "x" + std::to_string(height));
+    }
+  };
+  expect(t.hits, TextureFormat::RGBA32UI, 1, "hits");
+  expect(t.normal, TextureFormat::RGBA32F, 1, "normal");
+  expect(t.surface, TextureFormat::RGBA32F, 3, "surface");
+  expect(t.depth, TextureFormat::D32F, 1, "depth");
+}
+
+}  // namespace
+
 void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
                                GBufferTextures& targets, const GlShadingBuffers* shading) {
-  render(scene, camera, targets.hits, targets.normal, targets.depth, shading);
+  render(scene, camera,
+         {&targets.hits, &targets.normal, targets.surface ? &targets.surface : nullptr,
+          &targets.depth},
+         shading);
 }
 
 void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
                                const Texture& hits, const Texture& normal, const Texture& depth,
                                const GlShadingBuffers* shading) {
+  render(scene, camera, {&hits, &normal, nullptr, &depth}, shading);
+}
+
+void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
+                               const GBufferTargets& targets, const GlShadingBuffers* shading) {
   ScopedGlLabel label("gbuffer");
-  checkTargets(hits, normal, depth);
-  const int width = hits.width(), height = hits.height();
-  framebuffer_.attachColor(0, hits);
-  framebuffer_.attachColor(1, normal);
-  framebuffer_.attachDepth(depth);
-  framebuffer_.checkComplete("gbuffer");
-  framebuffer_.bind();
+  checkTargets(targets);
+  if (targets.surface && !shading)
+    throw Error("G-buffer: the surface target needs the scene's shading buffers");
+  const bool withNormal = targets.normal != nullptr, withSurface = targets.surface != nullptr;
+  const int width = targets.hits->width(), height = targets.hits->height();
+  auto fb = framebuffers_.find(int(withNormal));
+  if (fb == framebuffers_.end())
+    fb = framebuffers_.emplace(int(withNormal), Framebuffer::create()).first;
+  Framebuffer& framebuffer = fb->second;
+  framebuffer.attachColor(0, *targets.hits);
+  if (withNormal) framebuffer.attachColor(1, *targets.normal);
+  framebuffer.attachDepth(*targets.depth);
+  framebuffer.checkComplete("gbuffer");
+  framebuffer.bind();
 
   // Reversed-Z (camera_math.h): depth = near / -z_view in [0, 1], nearer is greater.
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -78,9 +138,9 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   glViewport(0, 0, width, height);
   const GLuint zeroU[4] = {0, 0, 0, 0};
   const GLfloat zeroF[4] = {0.f, 0.f, 0.f, 0.f};
-  glClearNamedFramebufferuiv(framebuffer_.id(), GL_COLOR, 0, zeroU);
-  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 1, zeroF);
-  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zeroF);
+  glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 0, zeroU);
+  if (withNormal) glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 1, zeroF);
+  glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, zeroF);
 
   // The ray frame is built as in primaryRay() so both sides trace the same pixel-centre ray.
   const float aspect = float(width) / float(height);
@@ -88,18 +148,9 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   const vec3 right = glm::normalize(glm::cross(forward, camera.up));
   const vec3 up = glm::cross(right, forward);
   const bool alphaTested = shading && shading->anyAlphaTested();
-  if (alphaTested && !alphaProgram_)
-    alphaProgram_ = loadProgram({"gbuffer.vert", "gbuffer.frag"}, {{"DIPTYCH_ALPHA_MASK", ""}});
-  const bool detail = shading && hasDetailNormals(shading->defines);
-  if (detail && !detailProgram_) {
-    const auto defines = withDefines(shading->defines, {{"DIPTYCH_DETAIL_NORMAL", ""}});
-    detailProgram_ = loadProgram({"gbuffer.vert", "gbuffer.frag"}, defines);
-    detailAlphaProgram_ = loadProgram({"gbuffer.vert", "gbuffer.frag"},
-                                      withDefines(defines, {{"DIPTYCH_ALPHA_MASK", ""}}));
-  }
-  const Program& opaque = detail ? detailProgram_ : program_;
-  const Program& masked = detail ? detailAlphaProgram_ : alphaProgram_;
-  for (const Program* program : {&opaque, alphaTested ? &masked : nullptr}) {
+  const Program& opaqueProgram = program(false, withNormal, shading);
+  const Program* alphaProgram = alphaTested ? &program(true, withNormal, shading) : nullptr;
+  for (const Program* program : {&opaqueProgram, alphaProgram}) {
     if (!program) continue;
     program->set("uViewProjection", reversedZProjection(camera, aspect) * viewMatrix(camera));
     program->set("uCameraPosition", camera.position);
@@ -118,7 +169,7 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
     if (mesh.triangleCount == 0) continue;
     const AlphaDraw mode = shading ? shading->alphaDraw(mesh.material) : AlphaDraw::Opaque;
     if (mode == AlphaDraw::Hidden) continue;
-    const Program& program = mode == AlphaDraw::AlphaTested ? masked : opaque;
+    const Program& program = mode == AlphaDraw::AlphaTested ? *alphaProgram : opaqueProgram;
     program.use();
     program.set("uInstance", std::uint32_t(mesh.instance));
     program.set("uFirstTriangle", mesh.firstTriangle);
@@ -129,6 +180,20 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   }
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (withSurface) resolveSurface(*targets.hits, *targets.surface, *shading);
+}
+
+void GBufferRasterizer::resolveSurface(const Texture& hits, const Texture& surface,
+                                       const GlShadingBuffers& shading) {
+  ScopedGlLabel label("gbuffer.surface");
+  const Program& resolve = surfaceProgram(shading);
+  resolve.use();
+  shading.bindStorage();
+  glBindTextureUnit(0, hits.id());
+  glBindImageTexture(0, surface.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glDispatchCompute(GLuint((hits.width() + 7) / 8), GLuint((hits.height() + 7) / 8), 1);
+  // Consumers fetch it as a texture, or copy it in a readback.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 void rasterizeGBuffer(const GlSceneBuffers& scene, const Camera& camera, int width, int height,

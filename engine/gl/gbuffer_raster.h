@@ -8,11 +8,21 @@
 //   normal     RGBA32F  = (shading normal xyz, unit, interpolated with (u, v); w = material
 //                         index, -1 for the default material); (0, 0, 0, 0) for background.
 //   depth      D32F     = reversed-Z depth near / -z_view (camera_math.h), 0 = background.
+//   surface    RGBA32F, 3 layers (optional; needs the shading buffers): the surface point of
+//              shaders/gl/scene_shading.glsl surfaceFromHits, resolved once per pixel after the
+//              raster (shaders/gbuffer_surface.comp) so that
+//              full-screen passes read three texels (shaders/gl/gbuffer_surface.glsl) instead of
+//              rebuilding it from ~30 buffer gathers: layer 0 = (position, uv.x), layer 1 =
+//              (unit face normal, uv.y), layer 2 = (shading normal with the normal and bump map
+//              applied, material index); all 0 for background.
 //
 // (u, v) are not interpolated attributes: the fragment shader intersects the pixel-centre
 // camera ray (the same ray as diptych::primaryRay) with the triangle fetched by gl_PrimitiveID
 // (Moller-Trumbore), so that the reconstructed position is the point Embree's primary ray would
 // hit, to float rounding. Culling is off: every visible surface counts, whatever its winding.
+#include <map>
+#include <string>
+
 #include "engine/gl/objects.h"
 #include "engine/gl/scene_buffers.h"
 #include "engine/gl/shading_buffers.h"
@@ -21,42 +31,57 @@
 namespace diptych::gl {
 
 struct GBufferTextures {
-  Texture hits;    // RGBA32UI
-  Texture normal;  // RGBA32F
-  Texture depth;   // D32F
+  Texture hits;     // RGBA32UI
+  Texture normal;   // RGBA32F
+  Texture depth;    // D32F
+  Texture surface;  // RGBA32F, 3 layers; empty unless allocated with `surface`
 
-  static GBufferTextures allocate(int width, int height);
+  static GBufferTextures allocate(int width, int height, bool surface = false);
   int width() const { return hits.width(); }
   int height() const { return hits.height(); }
 };
 
-// Holds the compiled program and the framebuffer; create once per context, reuse every frame.
+// The textures of one render: hits and depth always; normal and surface only when non-null
+// (an attachment nobody reads is not written: its fill costs every frame on llvmpipe).
+struct GBufferTargets {
+  const Texture* hits = nullptr;
+  const Texture* normal = nullptr;
+  const Texture* surface = nullptr;
+  const Texture* depth = nullptr;
+};
+
+// Holds the compiled programs and framebuffers; create once per context, reuse every frame.
 class GBufferRasterizer {
  public:
   GBufferRasterizer();  // compiles gbuffer.vert/.frag from shaderDirectory(); throws Error
-  // Renders into `targets`, which must be allocated with the formats above at any W x H (the
-  // viewport follows their size). Sets its own GL state: clip control lower-left/zero-to-one,
-  // depth GREATER with clear 0, no culling, no blending.
-  // With `shading` (uploaded from the same scene), alpha-masked materials cut out their holes:
-  // meshes whose coverage is constant and below the cutoff are not drawn, textured masks are
-  // drawn with a program variant that discards fragments below the cutoff (compiled on first
-  // need, so opaque scenes run the plain program only). Without it every mesh is opaque, and
-  // the normal output is the interpolated vertex normal; with it, the normal- or bump-mapped
-  // shading normal that every pass reconstructs (surfaceFromHits), when the scene has those.
+  // Renders into `targets` (the surface too when allocated), which must have the formats above at
+  // any W x H (the viewport follows their size). Sets its own GL state: clip control
+  // lower-left/zero-to-one, depth GREATER with clear 0, no culling, no blending. With `shading`
+  // (uploaded from the same scene), alpha-masked materials cut out their holes: meshes whose
+  // coverage is constant and below the cutoff are not drawn, textured masks are drawn with a
+  // program variant that discards fragments below the cutoff (compiled on first need, so opaque
+  // scenes run the plain program only). Without it every mesh is opaque, and the normal output
+  // is the interpolated vertex normal; with it, the normal- or bump-mapped shading normal that
+  // every pass reconstructs (surfaceFromHits), when the scene has those.
   void render(const GlSceneBuffers& scene, const Camera& camera, GBufferTextures& targets,
               const GlShadingBuffers* shading = nullptr);
   // The same, into textures owned elsewhere (the frame graph's pool).
   void render(const GlSceneBuffers& scene, const Camera& camera, const Texture& hits,
               const Texture& normal, const Texture& depth,
               const GlShadingBuffers* shading = nullptr);
+  // Any subset of the attachments; a surface needs `shading` (its program is compiled with the
+  // scene's defines, shader_features.h). Throws Error on a target of the wrong format or size.
+  void render(const GlSceneBuffers& scene, const Camera& camera, const GBufferTargets& targets,
+              const GlShadingBuffers* shading);
 
  private:
-  Program program_;
-  Program alphaProgram_;  // DIPTYCH_ALPHA_MASK variant; empty until a scene needs it
-  // DIPTYCH_DETAIL_NORMAL variants (plain, alpha-masked), compiled with the scene's defines when
-  // `shading` has normal maps or bump: the normal output is then surfaceFromHits' shading normal.
-  Program detailProgram_, detailAlphaProgram_;
-  Framebuffer framebuffer_;
+  const Program& program(bool alpha, bool normal, const GlShadingBuffers* shading);
+  const Program& surfaceProgram(const GlShadingBuffers& shading);
+  // gbuffer_surface.comp over the finished hits: one surfaceFromHits per pixel, not per fragment.
+  void resolveSurface(const Texture& hits, const Texture& surface, const GlShadingBuffers& shading);
+
+  std::map<std::string, Program> programs_;  // by variant defines, compiled on first need
+  std::map<int, Framebuffer> framebuffers_;  // with and without the normal target
 };
 
 // One-off convenience: allocates `targets` when empty or of another size, then renders with a

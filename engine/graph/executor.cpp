@@ -8,6 +8,7 @@
 #include "engine/core/timing.h"
 #include "engine/gl/context.h"
 #include "engine/gl/debug.h"
+#include "engine/graph/companion.h"
 #include "engine/graph/render_world.h"
 
 namespace diptych {
@@ -39,6 +40,14 @@ class ExecutionContext final : public PassContext {
   const ResourceDesc& desc(ResourceId id) const override {
     check(id, false);
     return ex_.graph_.resources[id].desc;
+  }
+  bool consumed(ResourceId id) const {
+    check(id, false);
+    const CompiledGraph& g = ex_.graph_;
+    if (std::find(g.outputs.begin(), g.outputs.end(), id) != g.outputs.end()) return true;
+    for (PassIndex q : g.resources[id].readers)
+      if (!g.passes[q].culled) return true;
+    return false;
   }
   RenderWorld& world() override { return ex_.world_; }
   const FrameSettings& frame() const override { return ex_.graph_.frame; }
@@ -75,6 +84,11 @@ class ExecutionContext final : public PassContext {
   const GraphPass& pass_;
   NodeTiming& timing_;
 };
+
+bool consumed(PassContext& context, ResourceId id) {
+  auto* execution = dynamic_cast<ExecutionContext*>(&context);
+  return !execution || execution->consumed(id);
+}
 
 GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world)
     : graph_(graph), world_(world), timings_(graph.nodes.size()) {

@@ -7,6 +7,7 @@
 #include "engine/core/check.h"
 #include "engine/core/error.h"
 #include "engine/core/known.h"
+#include "engine/graph/companion.h"
 #include "engine/graph/placement.h"
 
 namespace diptych {
@@ -105,6 +106,21 @@ class Builder final : public PassBuilder {
     return *found;
   }
 
+  ResourceId readCompanion(ResourceId of, const std::string& output, Format expected, bool glOnly) {
+    if (of == kNoResource) return kNoResource;
+    const GraphPass& producer = g_.passes[g_.resources[of].producer];
+    const auto found = g_.findResource(producer.name + "." + output);
+    if (!found) return kNoResource;
+    GraphResource& res = g_.resources[*found];
+    if (res.desc.format != expected)
+      fail("", "reads '" + res.name + "' as " + formatName(expected) + " but it is " +
+                   describe(res.desc));
+    res.readers.push_back(pass_);
+    g_.passes[pass_].reads.push_back(*found);
+    if (glOnly) g_.passes[pass_].glOnlyReads.push_back(*found);
+    return *found;
+  }
+
   ResourceId write(const std::string& output, const ResourceDesc& desc, vec4 fallback) override {
     const std::string name = g_.passes[pass_].name + "." + output;
     if (g_.findResource(name)) fail("", "writes '" + name + "' twice");
@@ -143,6 +159,16 @@ class Builder final : public PassBuilder {
   const PassParams* params_ = nullptr;
   std::set<std::string> slotsRead_;
 };
+
+}  // namespace
+
+ResourceId readCompanion(PassBuilder& b, ResourceId of, const std::string& output, Format expected,
+                         bool glOnly) {
+  auto* builder = dynamic_cast<Builder*>(&b);
+  return builder ? builder->readCompanion(of, output, expected, glOnly) : kNoResource;
+}
+
+namespace {
 
 // Orders recipe passes so that producers come before consumers; reports a cycle by its path.
 // Pass k of the recipe is CompiledGraph::passes[PassIndex(k)].
@@ -401,6 +427,7 @@ CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, c
   }
   cullUnrequested(g);
   placeAutoPasses(g, order);
+  dropGlOnlyReads(g);
   schedule(g, order);
   computeLifetimesAndPool(g);
   return g;

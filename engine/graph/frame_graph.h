@@ -29,6 +29,7 @@ struct GraphPass {
   std::unique_ptr<Pass> pass;
   Domain domain = Domain::Cpu;
   std::vector<ResourceId> reads, writes;
+  std::vector<ResourceId> glOnlyReads;  // readCompanion(..., glOnly): dropped when on the CPU
   std::vector<SceneNeed> needs;
   bool culled = false;
   std::string cullReason;  // "scene has no transmissive materials", "output not requested"

@@ -29,6 +29,9 @@ std::size_t placementCost(const CompiledGraph& g, PassIndex p, Domain domain,
   std::vector<ResourceId> counted;  // a resource read twice moves once
   for (ResourceId r : pass.reads) {
     if (std::find(counted.begin(), counted.end(), r) != counted.end()) continue;
+    // Free on GL (its producer is there) and dropped on the CPU (dropGlOnlyReads).
+    if (std::find(pass.glOnlyReads.begin(), pass.glOnlyReads.end(), r) != pass.glOnlyReads.end())
+      continue;
     counted.push_back(r);
     const GraphPass& producer = g.passes[g.resources[r].producer];
     if (producer.culled || producer.domain == domain) continue;
@@ -60,6 +63,18 @@ void placeAutoPasses(CompiledGraph& g, const std::vector<PassIndex>& order) {
     pass.placement = fmt::format("auto: {} (bytes moved between domains if on gl: {}, on cpu: {})",
                                  domainName(pass.domain), gl, cpu);
     unplaced[std::size_t(p.value)] = false;
+  }
+}
+
+void dropGlOnlyReads(CompiledGraph& g) {
+  for (PassIndex p : g.passes.ids()) {
+    GraphPass& pass = g.passes[p];
+    if (pass.domain == Domain::Gl) continue;
+    for (ResourceId r : pass.glOnlyReads) {
+      std::erase(pass.reads, r);
+      std::erase(g.resources[r].readers, p);
+    }
+    pass.glOnlyReads.clear();
   }
 }
 

@@ -25,4 +25,8 @@ std::size_t placementCost(const CompiledGraph& g, PassIndex p, Domain domain,
 // compared bytes in GraphPass::placement.
 void placeAutoPasses(CompiledGraph& g, const std::vector<PassIndex>& order);
 
+// Removes the glOnly companion reads (readCompanion, companion.h) of every pass that runs on the
+// CPU, so that they insert no readback and keep no resource alive.
+void dropGlOnlyReads(CompiledGraph& g);
+
 }  // namespace diptych

@@ -7,6 +7,7 @@
 #include "engine/scene/environment.h"
 #include "engine/shading/shading.h"
 #include "passes/common/hits_texel.h"
+#include "passes/raster/gbuffer_surface.h"
 #include "passes/raster/gl_shade.h"
 #include "passes/slots.h"
 
@@ -37,6 +38,7 @@ void ShadePass::setup(PassBuilder& b) {
   domain_ = domain == "gl" ? Domain::Gl : Domain::Cpu;
   const int w = b.frame().width, h = b.frame().height;
   hits_ = b.read(kHits, Format::RGBA32UI);
+  surface_ = readSurface(b, hits_);  // GL only: dropped when placed on the CPU
   lightVisibility_ = b.readOptional("light_visibility", Format::R32F);
   reflection_ = b.readOptional("reflection", Format::RGBA32F);
   transmission_ = b.readOptional("transmission", Format::RGBA32F);
@@ -46,7 +48,8 @@ void ShadePass::setup(PassBuilder& b) {
 
 void ShadePass::execute(PassContext& c) {
   if (domain_ == Domain::Gl)
-    return shadeOnGl(c, {hits_, lightVisibility_, reflection_, transmission_, albedo_, color_});
+    return shadeOnGl(
+        c, {hits_, lightVisibility_, reflection_, transmission_, albedo_, color_, surface_});
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();

@@ -29,7 +29,7 @@ class ShadePass : public PlaceablePass {
  private:
   Domain domain_ = Domain::Cpu;
   bool auto_ = false;
-  ResourceId hits_ = kNoResource, lightVisibility_ = kNoResource;
+  ResourceId hits_ = kNoResource, surface_ = kNoResource, lightVisibility_ = kNoResource;
   ResourceId reflection_ = kNoResource, transmission_ = kNoResource, color_ = kNoResource;
   ResourceId albedo_ = kNoResource;
 };

@@ -10,6 +10,7 @@
 #include "engine/graph/render_world.h"
 #include "engine/shading/shading.h"
 #include "passes/raster/fullscreen_resolve.h"
+#include "passes/raster/gbuffer_surface.h"
 
 namespace diptych {
 
@@ -19,8 +20,9 @@ namespace {
 // G-buffer's depth is not an input of the slot) and the mask that zeroes non-transmissive pixels.
 struct BlendCache {
   gl::Texture depth;
-  std::optional<FullscreenResolve> mask;  // compiled for the world's scene on first use
-  std::vector<Aabb> bounds;               // world bounds per mesh; the world's geometry is fixed
+  // Compiled for the world's scene on first use; [1] reads the G-buffer's stored surface.
+  std::optional<FullscreenResolve> mask[2];
+  std::vector<Aabb> bounds;  // world bounds per mesh; the world's geometry is fixed
   const std::vector<Aabb>& meshBounds(const WorldGeometry& geometry) {
     if (bounds.size() != geometry.meshes.size()) {
       bounds.assign(geometry.meshes.size(), Aabb{});
@@ -94,6 +96,7 @@ std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry&
 
 void BlendTransmissionPass::setup(PassBuilder& b) {
   io_ = slotIo(b, "transmission");
+  surface_ = readSurface(b, io_.hits);
 }
 
 void BlendTransmissionPass::execute(PassContext& c) {
@@ -133,6 +136,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   gl::ForwardOptions opaque;
   opaque.instances = gl::InstanceSet::Opaque;
   opaque.behindVisibility = &hits;
+  opaque.behindSurface = surface_ != kNoResource ? &c.glTexture(surface_) : nullptr;
   opaque.scissor = scissor;
   opaque.explicitOrder = true;
   for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
@@ -158,6 +162,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   transparent.depthWrite = false;
   transparent.blend = true;
   transparent.behindVisibility = &hits;
+  transparent.behindSurface = opaque.behindSurface;
   transparent.scissor = scissor;
   transparent.explicitOrder = true;
   transparent.transmissiveFirstOnly = true;
@@ -165,11 +170,14 @@ void BlendTransmissionPass::execute(PassContext& c) {
 
   // The slot's contract: 0 where the first surface transmits nothing.
   gl::glBindTextureUnit(0, hits.id());
-  if (!cache.mask)
-    cache.mask.emplace(
-        gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"}, world.glShading().defines));
-  cache.mask->program().set("uEye", view.eye);
-  cache.mask->draw(world, out, /*multiply=*/true);
+  bindSurface(c, surface_);
+  std::optional<FullscreenResolve>& mask = cache.mask[surface_ != kNoResource ? 1 : 0];
+  if (!mask)
+    mask.emplace(
+        gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"},
+                        gl::withDefines(world.glShading().defines, surfaceDefines(surface_))));
+  mask->program().set("uEye", view.eye);
+  mask->draw(world, out, /*multiply=*/true);
 }
 
 }  // namespace diptych

@@ -25,6 +25,7 @@ class BlendTransmissionPass : public Pass {
  private:
   bool sorted_;
   SlotIo io_;
+  ResourceId surface_ = kNoResource;
 };
 
 // Mesh indices of the transparent objects (material k_t > 0), farthest first by the view

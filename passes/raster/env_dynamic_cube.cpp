@@ -8,6 +8,7 @@
 #include "engine/graph/render_world.h"
 #include "engine/shading/shading.h"
 #include "passes/raster/fullscreen_resolve.h"
+#include "passes/raster/gbuffer_surface.h"
 
 namespace diptych {
 
@@ -15,7 +16,8 @@ namespace {
 
 struct CubeCache {
   gl::Texture cube, depth;
-  std::optional<FullscreenResolve> resolve;  // built on first use, with the scene's defines
+  // Built on first use, with the scene's defines; [1] reads the G-buffer's stored surface.
+  std::optional<FullscreenResolve> resolve[2];
   void ensure(int size) {
     if (cube && cube.width() == size) return;
     cube = gl::Texture::createCube(gl::TextureFormat::RGBA32F, size);
@@ -34,6 +36,7 @@ ParamSchema EnvDynamicCubePass::schema() {
 void EnvDynamicCubePass::setup(PassBuilder& b) {
   resolution_ = b.params().integer("resolution");
   io_ = slotIo(b, "reflection");
+  surface_ = readSurface(b, io_.hits);
 }
 
 void EnvDynamicCubePass::execute(PassContext& c) {
@@ -43,9 +46,11 @@ void EnvDynamicCubePass::execute(PassContext& c) {
   const gl::Texture& out = c.glTexture(io_.signal);
   auto& cache = world.glCached<CubeCache>();
   cache.ensure(resolution_);
-  if (!cache.resolve)
-    cache.resolve.emplace(
-        gl::loadProgram({"fullscreen.vert", "env_dynamic_cube.frag"}, world.glShading().defines));
+  std::optional<FullscreenResolve>& resolve = cache.resolve[surface_ != kNoResource ? 1 : 0];
+  if (!resolve)
+    resolve.emplace(
+        gl::loadProgram({"fullscreen.vert", "env_dynamic_cube.frag"},
+                        gl::withDefines(world.glShading().defines, surfaceDefines(surface_))));
   auto& renderer = world.glCached<gl::ForwardRenderer>();
   // Reversed-Z keeps precision at any near distance; a near plane at a small fraction of the
   // scene size only clips what touches the centre (the excluded object surrounds it anyway).
@@ -67,9 +72,10 @@ void EnvDynamicCubePass::execute(PassContext& c) {
     gl::glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     gl::glBindTextureUnit(0, hits.id());
     gl::glBindTextureUnit(1, cache.cube.id());
-    cache.resolve->program().set("uInstance", mesh.instance);
-    cache.resolve->program().set("uEye", c.frame().camera.position);
-    cache.resolve->draw(world, out);
+    bindSurface(c, surface_);
+    resolve->program().set("uInstance", mesh.instance);
+    resolve->program().set("uEye", c.frame().camera.position);
+    resolve->draw(world, out);
   }
 }
 

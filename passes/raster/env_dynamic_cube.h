@@ -22,6 +22,7 @@ class EnvDynamicCubePass : public Pass {
  private:
   int resolution_ = 256;
   SlotIo io_;
+  ResourceId surface_ = kNoResource;
 };
 
 }  // namespace diptych

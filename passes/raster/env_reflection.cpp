@@ -18,6 +18,7 @@
 #include "engine/shading/shading.h"
 #include "passes/raster/env_maps.h"
 #include "passes/raster/env_prefilter.h"
+#include "passes/raster/gbuffer_surface.h"
 
 namespace diptych {
 namespace {
@@ -152,20 +153,23 @@ struct EnvReflectionGl {
     gl::Texture texture;
     mat3 eyeToWorld{1.f};  // the frame a sphere map was built for
   };
-  std::map<EnvMapKind, gl::Program> programs;
+  std::map<std::pair<EnvMapKind, bool>, gl::Program> programs;  // (kind, stored surface)
   std::map<std::tuple<EnvMapKind, int, bool>, Map> maps;
 
   // Compiled for the world's scene (engine/gl/shader_features.h): the material paths it lacks
   // are folded away.
-  const gl::Program& program(EnvMapKind kind, const std::vector<gl::ShaderDefine>& scene) {
-    auto it = programs.find(kind);
+  const gl::Program& program(EnvMapKind kind, const std::vector<gl::ShaderDefine>& scene,
+                             ResourceId surface) {
+    auto it = programs.find({kind, surface != kNoResource});
     if (it != programs.end()) return it->second;
     const char* define = kind == EnvMapKind::Cube     ? "ENV_CUBE"
                          : kind == EnvMapKind::Sphere ? "ENV_SPHERE"
                                                       : "ENV_EQUIRECT";
     return programs
-        .emplace(kind,
-                 gl::loadProgram({"env_reflection.comp"}, gl::withDefines(scene, {{define, ""}})))
+        .emplace(std::pair(kind, surface != kNoResource),
+                 gl::loadProgram({"env_reflection.comp"},
+                                 gl::withDefines(gl::withDefines(scene, {{define, ""}}),
+                                                 surfaceDefines(surface))))
         .first->second;
   }
 
@@ -227,6 +231,7 @@ void EnvReflectionPass::setup(PassBuilder& b) {
                  return m.model == ShadingModel::Gltf && shading::materialHasReflection(m, true);
                });
   io_ = slotIo(b, "reflection");
+  surface_ = readSurface(b, io_.hits);
 }
 
 void EnvReflectionPass::execute(PassContext& c) {
@@ -251,7 +256,7 @@ void EnvReflectionPass::execute(PassContext& c) {
                map.levels() - 1, built.prefilterMs);
   }
   const gl::GlShadingBuffers& shading = world.glShading();
-  const gl::Program& program = state.program(kind_, shading.defines);
+  const gl::Program& program = state.program(kind_, shading.defines, surface_);
 
   world.glScene().bindStorage();
   shading.bindStorage();
@@ -265,6 +270,7 @@ void EnvReflectionPass::execute(PassContext& c) {
   if (kind_ == EnvMapKind::Cube) gl::glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   gl::glBindTextureUnit(0, c.glTexture(io_.hits).id());
   gl::glBindTextureUnit(1, map.id());
+  bindSurface(c, surface_);
   gl::glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   gl::glDispatchCompute(GLuint((out.width() + 7) / 8), GLuint((out.height() + 7) / 8), 1);
   // Later passes and readbacks fetch or copy the image written here.

@@ -27,6 +27,7 @@ class EnvReflectionPass : public Pass {
       false;  // GGX-prefiltered levels (env_prefilter.h), when a glTF lobe wants them  // texels of
               // a resampled map (cube face side, sphere side, lat-long height)
   SlotIo io_;
+  ResourceId surface_ = kNoResource;
 };
 
 }  // namespace diptych

@@ -2,15 +2,27 @@
 
 #include "engine/gl/gbuffer_raster.h"
 #include "engine/gl/shading_buffers.h"
+#include "engine/graph/companion.h"
 #include "engine/graph/render_world.h"
+#include "passes/raster/gbuffer_surface.h"
 
 namespace diptych {
+
+ParamSchema GBufferPass::schema() {
+  // Off by default: on llvmpipe storing costs as much as the rebuilds it saves
+  // (docs/benchmarks.md, "The stored G-buffer surface").
+  return {ParamSpec::boolean("surface", false,
+                             "resolve the surface point once into a 3-layer target that GL passes "
+                             "read (3 texels) instead of rebuilding it from the hits; same image")};
+}
 
 void GBufferPass::setup(PassBuilder& b) {
   b.needs(SceneNeed::Geometry);
   const int w = b.frame().width, h = b.frame().height;
   hits_ = b.write(kHits, {Format::RGBA32UI, w, h}, vec4(0.f));
   normal_ = b.write("normal", {Format::RGBA32F, w, h}, vec4(0.f));
+  if (b.params().boolean("surface"))
+    surface_ = b.write(kSurface, {Format::RGBA32F, w, h, 3}, vec4(0.f));
   depth_ = b.write("depth", {Format::D32F, w, h}, vec4(0.f));
 }
 
@@ -19,9 +31,12 @@ void GBufferPass::execute(PassContext& c) {
   // The shading buffers carry the alpha masks, so the G-buffer sees through the holes that
   // the Embree filter cuts for rays.
   const gl::GlShadingBuffers& shading = c.world().glShading();
-  c.world().glCached<gl::GBufferRasterizer>().render(scene, c.frame().camera, c.glTexture(hits_),
-                                                     c.glTexture(normal_), c.glTexture(depth_),
-                                                     &shading);
+  // Only what a live pass reads is written: the hybrid frame (CPU passes, which rebuild the
+  // exact surface from the hits) pays for neither the normal nor the surface.
+  gl::GBufferTargets targets{.hits = &c.glTexture(hits_), .depth = &c.glTexture(depth_)};
+  if (consumed(c, normal_)) targets.normal = &c.glTexture(normal_);
+  if (surface_ != kNoResource && consumed(c, surface_)) targets.surface = &c.glTexture(surface_);
+  c.world().glCached<gl::GBufferRasterizer>().render(scene, c.frame().camera, targets, &shading);
 }
 
 }  // namespace diptych

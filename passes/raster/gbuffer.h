@@ -6,15 +6,20 @@ namespace diptych {
 
 // Rasterized primary visibility (engine/gl/gbuffer_raster.h): hits RGBA32UI
 // (instance + 1, primitive, floatBits(u), floatBits(v)) with Embree-convention barycentrics of
-// the pixel-centre ray, shading normal RGBA32F (w = material), reversed-Z D32F depth.
+// the pixel-centre ray, shading normal RGBA32F (w = material), reversed-Z D32F depth, and the
+// surface (RGBA32F, 3 layers: the surface point GL passes read instead of rebuilding it). The
+// normal and the surface are written only in frames where a live pass reads them.
 class GBufferPass : public Pass {
  public:
+  static ParamSchema schema();
   Domain domain() const override { return Domain::Gl; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
 
  private:
-  ResourceId hits_ = kNoResource, normal_ = kNoResource, depth_ = kNoResource;
+  ResourceId hits_ = kNoResource, normal_ = kNoResource,
+             surface_ = kNoResource;  // surface_: kNoResource with surface=false
+  ResourceId depth_ = kNoResource;
 };
 
 }  // namespace diptych

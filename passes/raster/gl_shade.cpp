@@ -8,6 +8,7 @@
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 #include "passes/raster/fullscreen_resolve.h"
+#include "passes/raster/gbuffer_surface.h"
 #include "passes/raster/gl_environment.h"
 
 namespace diptych {
@@ -28,15 +29,16 @@ struct GlShadeState {
 FullscreenResolve& shadeProgram(GlShadeState& state, RenderWorld& world, int visibilityLayers,
                                 const ShadeIo& io) {
   const gl::GlShadingBuffers& shading = world.glShading();
-  const std::vector<gl::ShaderDefine> own = {
+  std::vector<gl::ShaderDefine> own = {
       {"SHADE_LIGHTS", std::to_string(shading.lightCount)},
       {"SHADE_VISIBILITY", std::to_string(visibilityLayers)},
       {"SHADE_REFLECTION", io.reflection != kNoResource ? "1" : "0"},
       {"SHADE_TRANSMISSION", io.transmission != kNoResource ? "1" : "0"},
       {"SHADE_ALBEDO", io.albedo != kNoResource ? "1" : "0"},
       {"SCENE_ENVIRONMENT_TYPE", std::to_string(state.environment->type())}};
+  own = gl::withDefines(own, surfaceDefines(io.surface));
   std::string key;
-  for (const gl::ShaderDefine& d : own) key += d.value + ",";
+  for (const gl::ShaderDefine& d : own) key += d.name + "=" + d.value + ",";
   auto it = state.programs.find(key);
   if (it == state.programs.end())
     it =
@@ -79,6 +81,7 @@ void shadeOnGl(PassContext& c, const ShadeIo& io) {
   state.environment->bind(program);
 
   bindImage(0, c.glTexture(io.hits), GL_RGBA32UI, false);
+  bindSurface(c, io.surface);
   if (visibilityLayers > 0)
     bindImage(visibilityLayers > 1 ? 2 : 1, c.glTexture(io.lightVisibility), GL_R32F,
               visibilityLayers > 1);

@@ -16,6 +16,7 @@ namespace diptych {
 struct ShadeIo {
   ResourceId hits = kNoResource, lightVisibility = kNoResource, reflection = kNoResource;
   ResourceId transmission = kNoResource, albedo = kNoResource, color = kNoResource;
+  ResourceId surface = kNoResource;  // gbuffer.surface (passes/raster/gbuffer_surface.h)
 };
 
 void shadeOnGl(PassContext& context, const ShadeIo& io);

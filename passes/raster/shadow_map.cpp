@@ -1,6 +1,7 @@
 #include "passes/raster/shadow_map.h"
 
 #include "engine/graph/render_world.h"
+#include "passes/raster/gbuffer_surface.h"
 #include "passes/raster/shadow_map_frusta.h"
 #include "passes/raster/shadow_map_gl.h"
 
@@ -9,6 +10,7 @@ namespace diptych {
 void ShadowMapPass::setup(PassBuilder& b) {
   settings_ = shadowmap::readSettings(b.params());
   io_ = slotIo(b, "visibility");
+  surface_ = readSurface(b, io_.hits);
 }
 
 void ShadowMapPass::execute(PassContext& c) {
@@ -26,7 +28,8 @@ void ShadowMapPass::execute(PassContext& c) {
   const gl::Texture& maps =
       state.maps(settings_.resolution, std::max(1, shadowmap::totalLayers(frusta)));
   const int draws = state.renderMaps(world, frusta, settings_, maps);
-  state.lookup(world, frusta, settings_, maps, c.glTexture(io_.hits), c.glTexture(io_.signal));
+  state.lookup(world, frusta, settings_, maps, c.glTexture(io_.hits),
+               surface_ != kNoResource ? &c.glTexture(surface_) : nullptr, c.glTexture(io_.signal));
   c.count("shadow_map_texels",
           double(maps.width()) * maps.height() * shadowmap::totalLayers(frusta));
   c.count("shadow_map_caster_draws", draws);

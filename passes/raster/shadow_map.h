@@ -20,6 +20,7 @@ class ShadowMapPass : public Pass {
  private:
   shadowmap::Settings settings_;
   SlotIo io_;
+  ResourceId surface_ = kNoResource;
 };
 
 }  // namespace diptych

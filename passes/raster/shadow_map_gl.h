@@ -29,19 +29,21 @@ class ShadowMapGl {
   // outside a layer's frustum; returns the number of mesh draws issued.
   int renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
                  const Settings& settings, const gl::Texture& maps);
-  // Writes V_i for every light into `visibility` (R32F 2D, or 2D array with one layer per light).
+  // Writes V_i for every light into `visibility` (R32F 2D, or 2D array with one layer per light),
+  // reading the G-buffer's stored surface when `surface` is not null (gbuffer_surface.h).
   void lookup(RenderWorld& world, const std::vector<LightFrustum>& frusta, const Settings& settings,
-              const gl::Texture& maps, const gl::Texture& gbuffer, const gl::Texture& visibility);
+              const gl::Texture& maps, const gl::Texture& gbuffer, const gl::Texture* surface,
+              const gl::Texture& visibility);
 
  private:
   const std::vector<Aabb>& meshBounds(const WorldGeometry& geometry);
   void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);
-  // The lookup program for one (light kind, bias, filter, kernel, interior-only variant),
-  // compiled on first use.
+  // The lookup program for one (light kind, bias, filter, kernel, interior-only variant, stored
+  // surface), compiled on first use.
   const gl::Program& lookupProgram(RenderWorld& world, ViewKind kind, const Settings& settings,
-                                   bool interior);
+                                   bool interior, bool surface);
   gl::Program depth_;
-  std::map<std::array<int, 5>, gl::Program> lookups_;
+  std::map<std::array<int, 6>, gl::Program> lookups_;
   gl::Texture lookupDepth_;  // marks pixels the interior cube pass has written
   gl::Program alphaDepth_;   // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
   gl::Framebuffer depthFbo_, lookupFbo_;

@@ -76,15 +76,17 @@ void ShadowMapGl::uploadFrusta(const std::vector<LightFrustum>& frusta, const Se
 }
 
 const gl::Program& ShadowMapGl::lookupProgram(RenderWorld& world, ViewKind kind, const Settings& s,
-                                              bool interior) {
+                                              bool interior, bool surface) {
   const int kernel = s.filter == Filter::Pcf ? s.kernel : 1;  // only PCF reads the kernel
-  gl::Program& program = lookups_[{int(kind), int(s.bias), int(s.filter), kernel, int(interior)}];
+  gl::Program& program =
+      lookups_[{int(kind), int(s.bias), int(s.filter), kernel, int(interior), int(surface)}];
   if (!program) {
     std::vector<gl::ShaderDefine> defines = {{"DIPTYCH_KIND", std::to_string(int(kind))},
                                              {"DIPTYCH_BIAS", std::to_string(int(s.bias))},
                                              {"DIPTYCH_FILTER", std::to_string(int(s.filter))},
                                              {"DIPTYCH_KERNEL", std::to_string(kernel)}};
     if (interior) defines.push_back({"DIPTYCH_INTERIOR", ""});
+    if (surface) defines.push_back({"DIPTYCH_GBUFFER_SURFACE", "1"});
     program = gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"},
                               gl::withDefines(world.glShading().defines, defines));
   }
@@ -93,7 +95,7 @@ const gl::Program& ShadowMapGl::lookupProgram(RenderWorld& world, ViewKind kind,
 
 void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& frusta,
                          const Settings& s, const gl::Texture& maps, const gl::Texture& gbuffer,
-                         const gl::Texture& visibility) {
+                         const gl::Texture* surface, const gl::Texture& visibility) {
   gl::ScopedGlLabel label("shadow_map.lookup");
   uploadFrusta(frusta, s);
   world.glScene().bindStorage();
@@ -103,6 +105,7 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
   lights_.bindBase(GL_SHADER_STORAGE_BUFFER, gl::BINDING_SHADOW_LIGHTS);
   gl::glBindTextureUnit(0, gbuffer.id());
   gl::glBindTextureUnit(1, maps.id());
+  if (surface) gl::glBindTextureUnit(gl::UNIT_GBUFFER_SURFACE, surface->id());
 
   const Aabb& b = world.geometry().bounds;
   const float diagonal = b.empty() ? 1.f : glm::length(b.hi - b.lo);
@@ -154,7 +157,7 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
     // and with the split its visibility moved (MSE 2e-5 on whitted), so it is left exact.
     if (kind != ViewKind::Cube || s.bias == Bias::ReceiverPlane) {
       gl::glDisable(GL_DEPTH_TEST);
-      draw(lookupProgram(world, kind, s, false));
+      draw(lookupProgram(world, kind, s, false, surface != nullptr));
       continue;
     }
     // Cube maps: the interior variant (no cube-edge path) writes every pixel whose taps all
@@ -165,10 +168,10 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
     gl::glEnable(GL_DEPTH_TEST);
     gl::glDepthMask(GL_TRUE);
     gl::glDepthFunc(GL_ALWAYS);
-    draw(lookupProgram(world, kind, s, true));
+    draw(lookupProgram(world, kind, s, true, surface != nullptr));
     gl::glDepthMask(GL_FALSE);
     gl::glDepthFunc(GL_LESS);  // the full-screen triangle is at depth 0
-    draw(lookupProgram(world, kind, s, false));
+    draw(lookupProgram(world, kind, s, false, surface != nullptr));
     gl::glDepthMask(GL_TRUE);
     gl::glDisable(GL_DEPTH_TEST);
   }
