@@ -112,7 +112,10 @@ constexpr std::size_t kQueryBatch = 16;
 void GraphExecutor::readQueries() const {
   // A node's GL time lies inside its frame, so it cannot exceed the frame's wall clock:
   // llvmpipe returns a garbage value (an absolute timestamp) for a query started before its
-  // first scene, which this bound drops.
+  // first scene, which this bound drops. Query names belong to the executor's context, which
+  // need not be current when the timings are asked for.
+  if (pending_.empty()) return;
+  world_.glContext().makeCurrent();
   for (const PendingQuery& q : pending_) {
     const double ms = gl_->timerMs(q.slot);
     if (ms >= 0.0 && ms <= q.frameMs) timings_[q.node].gpuMs.push_back(ms);
