@@ -109,16 +109,43 @@ GraphExecutor::~GraphExecutor() {
 }
 
 void GraphExecutor::clearTimings() {
+  readQueries();  // warm-up queries belong to the warm-up: read them before dropping them
   for (NodeTiming& t : timings_) t = NodeTiming{};
+  frameMs_.clear();
+}
+
+const std::vector<NodeTiming>& GraphExecutor::timings() const {
+  readQueries();
+  return timings_;
+}
+
+// Frames between reads of the pending GL timer results: the frames' readbacks have waited for
+// the GL work long before, so the read does not stall; it only bounds the number of queries.
+constexpr std::size_t kQueryBatch = 16;
+
+void GraphExecutor::readQueries() const {
+  // A node's GL time lies inside its frame, so it cannot exceed the frame's wall clock:
+  // llvmpipe returns a garbage value (an absolute timestamp) for a query started before its
+  // first scene, which this bound drops. Query names belong to the executor's context, which
+  // need not be current when the timings are asked for.
+  if (pending_.empty()) return;
+  world_.glContext().makeCurrent();
+  for (const PendingQuery& q : pending_) {
+    const double ms = gl_->timerMs(q.slot);
+    if (ms >= 0.0 && ms <= q.frameMs) timings_[q.node].gpuMs.push_back(ms);
+  }
+  pending_.clear();
 }
 
 void GraphExecutor::runFrame() {
-  // GL timer queries are begun and ended around each GL node and read only after the frame's
-  // last node (normally its final readbacks, which wait for the GL anyway), so no node waits on
-  // its own query: a GL node's CPU time is the time to issue its commands, and the GL work
-  // itself shows in its query and in the CPU time of the first node that waits for it.
+  // Attribution (docs/frame-graph.md, Timing): a GL node's GL work is its own GL_TIME_ELAPSED
+  // query, read after the measured frames (no node waits on a query). Before a GL node or
+  // transfer starts its clocks, the executor waits for the GL work earlier nodes issued and
+  // records that wait apart (glWaitMs): without it, llvmpipe's compute dispatches and every
+  // readback, which synchronise, carried the earlier passes' GL work in their CPU time. CPU
+  // nodes do not wait, so GL work still overlaps them.
   Stopwatch frameClock;
-  std::vector<std::size_t> timed;
+  std::vector<PendingQuery> frameQueries;
   for (std::size_t n = 0; n < graph_.nodes.size(); ++n) {
     const GraphNode& node = graph_.nodes[n];
     NodeTiming& timing = timings_[n];
@@ -127,9 +154,13 @@ void GraphExecutor::runFrame() {
                         node.kind == NodeKind::Upload;
     std::optional<gl::ScopedGlLabel> label;
     if (glWork) {
+      Stopwatch wait;
+      if (glIssued_) gl_->finish();
+      timing.glWaitMs.push_back(glIssued_ ? wait.milliseconds() : 0.0);
       label.emplace(node.name);
-      gl_->beginTimer(n);
-      timed.push_back(n);
+      const std::size_t slot = pending_.size() + frameQueries.size();
+      gl_->beginTimer(slot);
+      frameQueries.push_back({n, slot, 0.0});
     }
     Stopwatch clock;
     const double cpuStart = processCpuMs();
@@ -158,21 +189,17 @@ void GraphExecutor::runFrame() {
         break;
       }
     }
-    if (glWork) gl_->endTimer();
+    if (glWork) {
+      gl_->endTimer();
+      glIssued_ = true;
+    }
     timing.cpuMs.push_back(clock.milliseconds());
-    // A counter, so the last frame's value (counters are per frame): "process_cpu_ms".
-    timing.counters["process_cpu_ms"] = processCpuMs() - cpuStart;
+    timing.processCpuMs.push_back(processCpuMs() - cpuStart);
   }
-  if (timed.empty()) return;
-  // Reading a result waits only if the frame ended without a readback. A node's GL time lies
-  // inside the frame, so it cannot exceed the frame's wall clock measured after the reads;
-  // llvmpipe returns a garbage value (an absolute timestamp) for a query started before its
-  // first scene, which this bound drops.
-  std::vector<double> results;
-  for (std::size_t n : timed) results.push_back(gl_->timerMs(n));
-  const double frameMs = frameClock.milliseconds();
-  for (std::size_t i = 0; i < timed.size(); ++i)
-    if (results[i] >= 0.0 && results[i] <= frameMs) timings_[timed[i]].gpuMs.push_back(results[i]);
+  frameMs_.push_back(frameClock.milliseconds());
+  for (PendingQuery& q : frameQueries) q.frameMs = frameMs_.back();
+  pending_.insert(pending_.end(), frameQueries.begin(), frameQueries.end());
+  if (!pending_.empty() && pending_.size() >= kQueryBatch * frameQueries.size()) readQueries();
 }
 
 const CpuImage& GraphExecutor::output(const std::string& name) const {

@@ -13,8 +13,13 @@
 namespace diptych {
 
 struct NodeTiming {
-  std::vector<double> cpuMs;               // wall time on the CPU, one sample per frame
-  std::vector<double> gpuMs;               // GL nodes and transfers only
+  std::vector<double> cpuMs;  // wall time on the CPU, one sample per frame
+  // CPU time of all the process's threads over the node (CLOCK_PROCESS_CPUTIME_ID), per frame.
+  std::vector<double> processCpuMs;
+  std::vector<double> gpuMs;  // GL nodes and transfers only: the node's own GL_TIME_ELAPSED
+  // GL nodes and transfers only: the time spent, before this node's clocks started, waiting
+  // for GL work that earlier nodes issued (their time is in their gpuMs), per frame.
+  std::vector<double> glWaitMs;
   std::map<std::string, double> counters;  // last frame's counters (e.g. rays)
 };
 
@@ -29,7 +34,10 @@ class GraphExecutor {
 
   void runFrame();
   void clearTimings();  // drop warm-up samples
-  const std::vector<NodeTiming>& timings() const { return timings_; }
+  // Reads any GL timer results not read yet (they are read every kQueryBatch frames and here).
+  const std::vector<NodeTiming>& timings() const;
+  // Wall time of each measured frame, from its first node to its last.
+  const std::vector<double>& frameMs() const { return frameMs_; }
   const CpuImage& output(const std::string& resourceName) const;
 
  private:
@@ -39,7 +47,17 @@ class GraphExecutor {
   std::unique_ptr<GlBackend> gl_;
   IdVector<PoolSlotId, CpuImage> cpuSlots_;  // empty in GL slots
   IdVector<PoolSlotId, int> glSlots_;        // GlBackend handles; -1 in CPU slots
-  std::vector<NodeTiming> timings_;
+  // A GL_TIME_ELAPSED query not read yet: its node, query slot and the wall time of its frame
+  // (a bound that drops llvmpipe's garbage first-scene values).
+  struct PendingQuery {
+    std::size_t node, slot;
+    double frameMs;
+  };
+  void readQueries() const;
+  mutable std::vector<NodeTiming> timings_;
+  mutable std::vector<PendingQuery> pending_;
+  std::vector<double> frameMs_;
+  bool glIssued_ = false;  // GL work issued since the executor last waited for the GL
 };
 
 }  // namespace diptych

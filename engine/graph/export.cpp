@@ -5,18 +5,22 @@
 #include "engine/core/timing.h"
 
 namespace diptych {
+namespace {}  // namespace
+
+nlohmann::json timingStatsJson(const std::vector<double>& samples) {
+  const TimingStats st = summarize(samples);
+  return {{"median", st.median}, {"min", st.min}, {"max", st.max}, {"samples", st.samples}};
+}
+
 namespace {
 
+// Every figure is a summary over the measured frames (median, min, max, sample count).
 nlohmann::json timingJson(const NodeTiming& t) {
   nlohmann::json j;
-  const TimingStats cpu = summarize(t.cpuMs);
-  j["cpu_ms"] = {
-      {"median", cpu.median}, {"min", cpu.min}, {"max", cpu.max}, {"samples", cpu.samples}};
-  if (!t.gpuMs.empty()) {
-    const TimingStats gpu = summarize(t.gpuMs);
-    j["gpu_ms"] = {
-        {"median", gpu.median}, {"min", gpu.min}, {"max", gpu.max}, {"samples", gpu.samples}};
-  }
+  j["cpu_ms"] = timingStatsJson(t.cpuMs);
+  if (!t.processCpuMs.empty()) j["process_cpu_ms"] = timingStatsJson(t.processCpuMs);
+  if (!t.gpuMs.empty()) j["gpu_ms"] = timingStatsJson(t.gpuMs);
+  if (!t.glWaitMs.empty()) j["gl_wait_ms"] = timingStatsJson(t.glWaitMs);
   for (const auto& [name, value] : t.counters) j["counters"][name] = value;
   return j;
 }
@@ -42,6 +46,7 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
     nlohmann::json jp{
         {"name", p.name}, {"type", p.type}, {"domain", domainName(p.domain)}, {"culled", p.culled}};
     if (p.culled) jp["cull_reason"] = p.cullReason;
+    if (!p.inputsLeftOut.empty()) jp["inputs_left_out"] = p.inputsLeftOut;
     if (!p.placement.empty()) jp["placement"] = p.placement;
     for (SceneNeed n : p.needs) jp["scene_needs"].push_back(sceneNeedName(n));
     for (ResourceId r : p.reads) jp["reads"].push_back(g.resources[r].name);

@@ -11,6 +11,9 @@
 
 namespace diptych {
 
+// {median, min, max, samples} of per-frame samples in ms.
+nlohmann::json timingStatsJson(const std::vector<double>& samples);
+
 nlohmann::json graphToJson(const CompiledGraph& graph,
                            const std::vector<NodeTiming>* timings = nullptr);
 std::string graphToDot(const CompiledGraph& graph,

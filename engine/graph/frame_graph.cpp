@@ -74,12 +74,16 @@ class Builder final : public PassBuilder {
   const std::set<std::string>& slotsRead() const { return slotsRead_; }
 
   ResourceId read(const std::string& slot, Format expected) override {
-    const ResourceId id = readOptional(slot, expected);
+    const ResourceId id = resolve(slot, expected, false);
     if (id == kNoResource) fail(".inputs." + slot, "input '" + slot + "' is not connected");
     return id;
   }
 
   ResourceId readOptional(const std::string& slot, Format expected) override {
+    return resolve(slot, expected, true);
+  }
+
+  ResourceId resolve(const std::string& slot, Format expected, bool optional) {
     slotsRead_.insert(slot);
     auto it = spec_->inputs.find(slot);
     if (it == spec_->inputs.end()) return kNoResource;
@@ -101,6 +105,15 @@ class Builder final : public PassBuilder {
     if (res.desc.width != g_.frame.width || res.desc.height != g_.frame.height)
       fail(place, "size mismatch: '" + source + "' is " + describe(res.desc) + ", frame is " +
                       std::to_string(g_.frame.width) + "x" + std::to_string(g_.frame.height));
+    // An optional input whose producer the scene left out leaves the frame with it: no default
+    // fill, and the consumer runs as if it were not connected (DESIGN.md: leave out of a frame
+    // whatever the scene does not need). Setup runs in producer-first order, so the producer's
+    // scene culling is already decided. A required input still reads the default fill.
+    if (optional && g_.passes[res.producer].culled) {
+      g_.passes[pass_].inputsLeftOut.push_back(slot + " <- " + source + " (" +
+                                               g_.passes[res.producer].cullReason + ")");
+      return kNoResource;
+    }
     res.readers.push_back(pass_);
     g_.passes[pass_].reads.push_back(*found);
     return *found;

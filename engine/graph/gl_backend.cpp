@@ -91,6 +91,10 @@ void GlBackend::endTimer() {
   // frame's first flush and read as most of a frame (measured 999 ms on a 1069 ms frame).
   gl::glFlush();
 }
+void GlBackend::finish() {
+  gl::glFinish();
+}
+
 double GlBackend::timerMs(std::size_t slot) const {
   DIPTYCH_CHECK(slot < timers_.size(), "timer query " + std::to_string(slot) + " never started");
   return timers_[slot].milliseconds();

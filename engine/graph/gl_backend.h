@@ -20,13 +20,16 @@ class GlBackend {
   void readback(int handle, CpuImage& into);
   void upload(const CpuImage& from, int handle);
   void fill(int handle, const vec4& value);
-  // GL_TIME_ELAPSED query number `slot` (one per graph node, created on first use) around
+  // GL_TIME_ELAPSED query number `slot` (created on first use; the executor gives each node of
+  // each frame its own until the results are read) around
   // the node's GL commands. Neither call waits for the GL: the result is read by timerMs.
   void beginTimer(std::size_t slot);
   void endTimer();  // and glFlush: submits the node's commands without waiting
-  // The result of query `slot`. Read after the frame's last node, when its readbacks have
-  // already waited for the GL work, so the results are in and nothing stalls the frame.
+  // The result of query `slot`. Read after the measured frames (or every few frames), when
+  // their readbacks have already waited for the GL work, so nothing stalls a frame.
   double timerMs(std::size_t slot) const;
+  // Waits until every GL command issued so far has completed (glFinish).
+  void finish();
 
  private:
   std::size_t checked(int handle) const;  // DIPTYCH_CHECK: a handle createTexture returned

@@ -35,7 +35,9 @@ class PassBuilder {
   // Reads the resource connected to input `slot` in the recipe. Errors name the pass and slot
   // when the slot is unconnected, the producer never writes it, or the format differs.
   [[nodiscard]] virtual ResourceId read(const std::string& slot, Format expected) = 0;
-  // Like read(), but an unconnected slot yields kNoResource instead of an error.
+  // Like read(), but an unconnected slot yields kNoResource instead of an error, and so does a
+  // slot whose producer the scene culled (the input leaves the frame; no default fill): the
+  // pass must treat kNoResource as its input's fallback.
   [[nodiscard]] virtual ResourceId readOptional(const std::string& slot, Format expected) = 0;
   // Declares a new resource "<pass>.<output>". `fallback` is what consumers read when this pass
   // is culled because the scene lacks something it needs.

@@ -1,5 +1,7 @@
 #include "engine/scene/environment_sky.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -29,7 +31,8 @@ Environment bakeSky(const SkyParams& sky) {
   const int width = std::max(sky.width, 2), height = std::max(1, width / 2);
   env.equirect = Image(width, height, 3);
   const float pi = glm::pi<float>();
-  for (int y = 0; y < height; ++y) {
+  // Rows in parallel: each texel is written once, so the bake is the same on any thread count.
+  tbb::parallel_for(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       vec3 sum(0.f);
       for (int s = 0; s < 4; ++s) {
@@ -43,7 +46,7 @@ Environment bakeSky(const SkyParams& sky) {
       }
       for (int ch = 0; ch < 3; ++ch) env.equirect.at(x, y, ch) = 0.25f * sum[ch];
     }
-  }
+  });
   return env;
 }
 

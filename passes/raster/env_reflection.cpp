@@ -61,6 +61,8 @@ Image resized(const Image& in, int width, int height) {
 // resized to its level: it bounds the one-time cost for large sources.
 constexpr int kPrefilterCubeCap = 64, kPrefilter2dCap = 256;
 constexpr int kPrefilterSourceSize = 128;  // cube face side of the prefilter's source chain
+// Resampled map sizes when `resolution` is 0 (the default) and the source has another layout.
+constexpr int kDefaultCubeSide = 256, kDefaultEquirectHeight = 512;
 
 // The map of one kind for the world's environment, built on the CPU (env_maps.h) or uploaded
 // from the scene's own images when they already have the right layout. A solid colour becomes
@@ -72,20 +74,27 @@ gl::Texture buildMap(const Environment& env, EnvMapKind kind, int resolution,
                      const mat3& eyeToWorld, bool prefilter, double& prefilterMs,
                      const envmap::PrefilteredCube* sphereLevels) {
   const bool constant = env.type == EnvironmentType::Color;
+  // resolution 0 (cube, equirect): the source's own map when it has the map's layout, else the
+  // default side. A source of that layout is used as is when the sizes agree, else resampled.
   const int res = constant ? 1 : resolution;
+  const bool cubeAsIs =
+      env.type == EnvironmentType::Cube && (res == 0 || res == env.cubeFaces[0].width);
+  const bool equirectAsIs =
+      env.type == EnvironmentType::Equirect && (res == 0 || res == env.equirect.height);
   std::vector<Image> base;  // level 0, one image per layer
   switch (kind) {
     case EnvMapKind::Cube:
-      if (env.type == EnvironmentType::Cube)
+      if (cubeAsIs)
         for (int f = 0; f < 6; ++f)
           base.push_back(envmap::rgbaScaled(env.cubeFaces[f], env.intensity));
       else
-        for (Image& face : envmap::cubeFacesFrom(env, res)) base.push_back(std::move(face));
+        for (Image& face : envmap::cubeFacesFrom(env, res > 0 ? res : kDefaultCubeSide))
+          base.push_back(std::move(face));
       break;
     case EnvMapKind::Equirect:
-      base.push_back(env.type == EnvironmentType::Equirect
+      base.push_back(equirectAsIs
                          ? envmap::rgbaScaled(env.equirect, env.intensity)
-                         : envmap::equirectFrom(env, res));
+                         : envmap::equirectFrom(env, res > 0 ? res : kDefaultEquirectHeight));
       break;
     case EnvMapKind::Sphere:
       base.push_back(envmap::sphereMapFrom(env, res, eyeToWorld));
@@ -209,18 +218,25 @@ struct EnvReflectionGl {
   }
 };
 
+ParamSpec prefilterParam() {
+  return ParamSpec::boolean("prefilter", true,
+                            "GGX-prefiltered levels for rough glTF materials (split sum); false: "
+                            "one mirror lookup, faded by roughness");
+}
+
 }  // namespace
 
 ParamSchema EnvReflectionPass::schema(EnvMapKind kind) {
-  // Sides of a resampled map: cube face, sphere map, lat-long height (width = 2 height). A
-  // cube-face source for env_cube and a lat-long source for env_equirect are used as they are.
-  return {ParamSpec::integer("resolution", kind == EnvMapKind::Cube ? 256 : 512, 1, 8192,
-                             kind == EnvMapKind::Cube     ? "cube face side of a resampled map"
-                             : kind == EnvMapKind::Sphere ? "sphere map side"
-                                                          : "lat-long height of a resampled map"),
-          ParamSpec::boolean("prefilter", true,
-                             "GGX-prefiltered levels for rough glTF materials (split sum); false: "
-                             "one mirror lookup, faded by roughness")};
+  // Sides of a map: cube face, sphere map, lat-long height (width = 2 height). For env_cube
+  // and env_equirect, 0 uses a source of the map's own layout (cube faces, lat-long) as it is
+  // and resamples any other at 256 / 512; a non-zero side resamples unless the source has it.
+  if (kind == EnvMapKind::Sphere)
+    return {ParamSpec::integer("resolution", 512, 1, 8192, "sphere map side"), prefilterParam()};
+  return {ParamSpec::integer("resolution", 0, 0, 8192,
+                             kind == EnvMapKind::Cube
+                                 ? "cube face side; 0: cube-face sources as they are, else 256"
+                                 : "lat-long height; 0: lat-long sources as they are, else 512"),
+          prefilterParam()};
 }
 
 void EnvReflectionPass::setup(PassBuilder& b) {

@@ -53,12 +53,12 @@ std::string extensionOf(const std::string& path) {
 void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const RenderOptions& o) {
   std::printf(
       "per-node timings: median of %d frames after %d warm-up frames (CPU: steady_clock; GPU: "
-      "GL_TIME_ELAPSED, read after the frame's last node, so no node waits on its query: a GL "
-      "node's cpu ms is the time to issue its commands, and the GL work it queued shows in its "
-      "gpu ms and in the cpu ms of the first node that waits for it, normally a readback)\n",
+      "the node's own GL_TIME_ELAPSED, read after the measured frames, so no node waits on its "
+      "query; gl wait: before a GL node or transfer starts, the wait for GL work that earlier "
+      "nodes issued, kept out of its cpu ms; CPU nodes do not wait, GL work overlaps them)\n",
       o.frames, o.warmup);
-  std::printf("%-34s %-9s %-4s %11s %11s %14s\n", "node", "kind", "dom", "cpu ms", "gpu ms",
-              "Mrays/s");
+  std::printf("%-34s %-9s %-4s %11s %11s %11s %14s\n", "node", "kind", "dom", "cpu ms", "gpu ms",
+              "gl wait ms", "Mrays/s");
   double total = 0;
   for (std::size_t n = 0; n < g.nodes.size(); ++n) {
     const NodeTiming& t = ex.timings()[n];
@@ -66,14 +66,18 @@ void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const Ren
     total += cpu;
     const std::string gpu =
         t.gpuMs.empty() ? "-" : fmt::format("{:.3f}", summarize(t.gpuMs).median);
+    const std::string wait =
+        t.glWaitMs.empty() ? "-" : fmt::format("{:.3f}", summarize(t.glWaitMs).median);
     std::string rate = "-";
     if (auto it = t.counters.find("rays"); it != t.counters.end() && cpu > 0)
       rate = fmt::format("{:.2f}", it->second / (cpu * 1e3));
-    std::printf("%-34s %-9s %-4s %11.3f %11s %14s\n", g.nodes[n].name.c_str(),
+    std::printf("%-34s %-9s %-4s %11.3f %11s %11s %14s\n", g.nodes[n].name.c_str(),
                 nodeKindName(g.nodes[n].kind), domainName(g.nodes[n].domain), cpu, gpu.c_str(),
-                rate.c_str());
+                wait.c_str(), rate.c_str());
   }
-  std::printf("%-34s %-9s %-4s %11.3f\n", "total (sum of medians)", "", "", total);
+  std::printf("%-34s %-9s %-4s %11.3f\n", "total (sum of cpu medians)", "", "", total);
+  std::printf("%-34s %-9s %-4s %11.3f\n", "frame wall (median)", "", "",
+              summarize(ex.frameMs()).median);
   for (const GraphPass& p : g.passes)
     if (p.culled)
       std::printf("culled: %s (%s): %s\n", p.name.c_str(), p.type.c_str(), p.cullReason.c_str());
@@ -188,11 +192,13 @@ void runRender(const RenderOptions& o) {
   if (!o.timingsOut.empty()) {
     nlohmann::json j = graphToJson(graph, &executor.timings());
     j["method"] = fmt::format(
-        "median of {} frames after {} warm-up frames; CPU wall clock (steady_clock) "
-        "per node, GL_TIME_ELAPSED queries for GL nodes and transfers, read after the frame's "
-        "last node (no node waits on its query: a GL node's cpu_ms is the time to issue its "
-        "commands, and the wait for GL work falls in the first node that synchronises)",
+        "median of {} frames after {} warm-up frames; per node: cpu_ms (steady_clock), "
+        "process_cpu_ms (CPU time of all threads), gpu_ms (the node's own GL_TIME_ELAPSED "
+        "query, read after the measured frames: no node waits on its query) and, for GL "
+        "nodes and transfers, gl_wait_ms (the wait, before the node's clocks, for GL work "
+        "earlier nodes issued; that work is in their gpu_ms). frame_ms: wall time per frame",
         o.frames, o.warmup);
+    j["frame_ms"] = timingStatsJson(executor.frameMs());
     j["scene"] = o.scene;
     j["devices"] = devices;
     j["one_time_ms"] = world.oneTimeMs;

@@ -12,7 +12,7 @@
 #    image. Scene data (meshes, materials, the BVH) is not counted: for these scenes it is a few
 #    kB to MB that stay in cache, and counting it would only raise the nodes' figures;
 #  - time: the node's median cpu_ms (wall) over 5 frames after 1 warm-up, and, because other
-#    processes stretch wall time on a loaded machine, also its process_cpu_ms counter (CPU time
+#    processes stretch wall time on a loaded machine, also its process_cpu_ms median (CPU time
 #    of all threads over the node, last frame) divided by nproc: the wall time it would take
 #    with the cores to itself;
 #  - slowdown = bandwidth / (bytes / time): 1 is a node that runs at memcpy's speed; the goal
@@ -69,7 +69,7 @@ for n in t["schedule"]:
     else:  # "default:RESOURCE": a fill of one image
         touched = size.get(n["name"].split(":", 1)[1], 0)
     ms = n["timing"]["cpu_ms"]["median"]
-    cpu = n["timing"].get("counters", {}).get("process_cpu_ms", float("nan")) / cores
+    cpu = n["timing"].get("process_cpu_ms", {}).get("median", float("nan")) / cores
     rate = touched / (ms * 1e-3) / 1e9 if ms > 0 else float("inf")
     rate_cpu = touched / (cpu * 1e-3) / 1e9 if cpu > 0 else float("inf")
     print(f"| {n['name']} | {n['kind']} | {touched / 1e6:.1f} | {ms:.2f} | {rate:.2f} | "

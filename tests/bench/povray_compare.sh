@@ -13,7 +13,7 @@
 #    program. Diptych's includes the OSMesa context, scene load and BVH build; POV-Ray's its
 #    parsing and setup. The timed Diptych run above renders 6 frames (1 warm-up + 5), so it
 #    is not used for this; a separate `--frames 1 --warmup 0` run is.
-#  - CPU time of the render phase: Diptych's is the `reference` node's process_cpu_ms counter
+#  - CPU time of the render phase: Diptych's is the `reference` node's process_cpu_ms median
 #    (CPU time of all the process's threads over the node, last timed frame); POV-Ray's is the
 #    "CPU-seconds total" it reports for its Trace Time.
 #    On a loaded machine (other builds sharing the cores) wall times stretch with whatever else
@@ -64,7 +64,7 @@ print(next(n["timing"]["cpu_ms"]["median"] for n in nodes if n["name"] == "refer
   diptych_cpu+=("$(python3 -c '
 import json, sys
 nodes = json.load(open(sys.argv[1]))["schedule"]
-print(next(n["timing"]["counters"]["process_cpu_ms"] for n in nodes if n["name"] == "reference"))
+print(next(n["timing"]["process_cpu_ms"]["median"] for n in nodes if n["name"] == "reference"))
 ' "$out/t-$r.json")")
 
   # 2) Whole-process timing of Diptych: one frame, no warm-up, PNG written (as POV-Ray does).

@@ -17,7 +17,7 @@
 # Runs are interleaved (Diptych, tutorials, POV-Ray, Diptych, ...) so a change of load hits all.
 # Two rates per program: rays per wall-clock second (what each prints), and rays per CPU-second
 # of all its threads, which hardly moves when other processes load the machine: Diptych's node
-# process_cpu_ms counter (--timings: CPU time of all threads over the node, last frame), a tutorial's rays (its Mrays/s over its fps, times the 18 frames
+# process_cpu_ms (--timings: CPU time of all threads over the node, median over the frames), a tutorial's rays (its Mrays/s over its fps, times the 18 frames
 # of --benchmark 2 16, or 10 of 2 8) over its process user + sys seconds (/usr/bin/time; OBJ
 # loading and BVH build included, which only lowers the tutorial's figure, by < 5% here).
 # Usage (from the repository root, after building diptych_cli and diptych_rt_bench):
@@ -92,7 +92,7 @@ def node(name, node_name, r, cpu=False):  # (ms, rays) of a node in run r
     for n in json.load(open(f"{out}/{name}-{r}.json"))["schedule"]:
         if n["name"] == node_name:
             t, counters = n["timing"], n["timing"].get("counters", {})
-            ms = counters["process_cpu_ms"] if cpu else t["cpu_ms"]["median"]
+            ms = t["process_cpu_ms"]["median"] if cpu else t["cpu_ms"]["median"]
             return ms, counters.get("rays", 0.0)
     raise SystemExit(f"{name}-{r}.json has no node {node_name}")
 

@@ -37,5 +37,21 @@ string(JSON embree GET "${timings}" devices embree version)
 if(renderer STREQUAL "" OR embree STREQUAL "")
   message(FATAL_ERROR "--timings must name the GL renderer and the Embree version")
 endif()
+# Timings are summaries over the measured frames (one here), the frame's wall time included;
+# process_cpu_ms is one of them, not a last-frame counter; a GL node carries its GL wait apart.
+string(JSON frames GET "${timings}" frame_ms samples)
+string(JSON first GET "${timings}" schedule 0 name)
+string(JSON process GET "${timings}" schedule 0 timing process_cpu_ms samples)
+string(JSON wait GET "${timings}" schedule 0 timing gl_wait_ms samples)
+if(NOT frames EQUAL 1 OR NOT process EQUAL 1 OR NOT wait EQUAL 1 OR NOT first STREQUAL "gbuffer")
+  message(FATAL_ERROR "--timings: expected frame_ms, and process_cpu_ms and gl_wait_ms over 1 "
+          "frame on the first node (gbuffer): ${timings}")
+endif()
+# --context auto picks EGL on a hardware device, else OSMesa, and the devices line says which.
+expect_success(render-auto ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --context auto
+               --size 96x72 --frames 1 --warmup 0 --out auto.exr FILES auto.exr)
+if(NOT LAST_STDOUT MATCHES "devices: GL: .* via (osmesa|egl)")
+  message(FATAL_ERROR "--context auto must name the context it picked:\n${LAST_STDOUT}")
+endif()
 expect_failure(bad-context EXPECT "--context" "vulkan" ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json"
                --context vulkan)

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "engine/graph/executor.h"
+#include "engine/graph/export.h"
 #include "engine/graph/frame_graph.h"
 #include "engine/graph/render_world.h"
 #include "engine/scene/load.h"
@@ -17,9 +18,9 @@
 
 using namespace diptych;
 
-TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
-  const Scene scene =
-      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
+namespace {
+
+Recipe shadowRecipe() {
   Recipe recipe;
   recipe.passes = {{.name = "gbuffer", .type = "gbuffer", .place = "passes[0]"},
                    {.name = "sm",
@@ -31,6 +32,15 @@ TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
                     .type = "rt_shadows",
                     .inputs = {{"hits", "gbuffer.hits"}},
                     .place = "passes[2]"}};
+  return recipe;
+}
+
+}  // namespace
+
+TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
+  const Scene scene =
+      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
+  const Recipe recipe = shadowRecipe();
   const CompiledGraph graph =
       compileGraph(recipe, builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
                    {"sm.visibility", "rt.visibility"});
@@ -65,4 +75,54 @@ TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
     }
   }
   EXPECT_GE(glNodes, 3);  // gbuffer, sm and at least the readbacks of the outputs
+}
+
+// The exported timings (diptych render --timings): every figure is a summary over the measured
+// frames; GL nodes and transfers carry their own GL time and, apart, the wait for earlier nodes'
+// GL work; CPU nodes carry neither. Per frame, the nodes' CPU times and waits are disjoint
+// intervals inside the frame's wall time, so their sum cannot exceed it (before this, the wait
+// sat inside the CPU time of the first node that synchronised).
+TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) {
+  const Scene scene =
+      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
+  const CompiledGraph graph =
+      compileGraph(shadowRecipe(), builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
+                   {"sm.visibility", "rt.visibility"});
+  RenderWorld world(scene, &gl::testing::osmesaContext());
+  GraphExecutor ex(graph, world);
+  ex.runFrame();
+  ex.clearTimings();
+  constexpr int kFrames = 4;
+  for (int f = 0; f < kFrames; ++f) ex.runFrame();
+  ASSERT_EQ(ex.frameMs().size(), std::size_t(kFrames));
+  const nlohmann::json j = graphToJson(graph, &ex.timings());
+  ASSERT_EQ(j["schedule"].size(), graph.nodes.size());
+  int waits = 0;
+  for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
+    const GraphNode& node = graph.nodes[n];
+    const nlohmann::json& t = j["schedule"][n]["timing"];
+    SCOPED_TRACE(node.name);
+    const bool gl = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
+                    node.kind == NodeKind::Upload;
+    std::vector<std::string> figures = {"cpu_ms", "process_cpu_ms"};
+    if (gl) figures.insert(figures.end(), {"gpu_ms", "gl_wait_ms"});
+    for (const std::string& f : figures) {
+      ASSERT_TRUE(t.contains(f)) << f;
+      EXPECT_EQ(t[f]["samples"], kFrames) << f;
+      EXPECT_GE(t[f]["min"].get<double>(), 0.0) << f;
+      EXPECT_LE(t[f]["min"].get<double>(), t[f]["median"].get<double>()) << f;
+      EXPECT_LE(t[f]["median"].get<double>(), t[f]["max"].get<double>()) << f;
+    }
+    EXPECT_EQ(t.contains("gpu_ms"), gl);
+    EXPECT_EQ(t.contains("gl_wait_ms"), gl);
+    EXPECT_FALSE(t.contains("counters") && t["counters"].contains("process_cpu_ms"));
+    waits += gl;
+  }
+  EXPECT_GE(waits, 3);
+  for (int f = 0; f < kFrames; ++f) {
+    double inside = 0;
+    for (const NodeTiming& t : ex.timings())
+      inside += t.cpuMs[f] + (t.glWaitMs.empty() ? 0.0 : t.glWaitMs[f]);
+    EXPECT_LE(inside, ex.frameMs()[f]) << "frame " << f;
+  }
 }

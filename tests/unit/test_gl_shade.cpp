@@ -134,11 +134,12 @@ TEST(GlShade, ReadsOneVisibilityLayerPerLight) {
   }
 }
 
-// The albedo input (the texture-filtering slot's signal) replaces C on both sides alike. No
-// producer of that slot exists on this branch, so an RGBA32F signal of the right size stands in
-// for it: the reflection slot's, which on cornell (no mirror: env_cube is culled) is its
-// fallback 0, i.e. C = 0 everywhere. A third shade without albedo shows that the input changes
-// the frame (the diffuse and ambient terms vanish).
+// The albedo input (the texture-filtering slot's signal) replaces C on both sides alike. An
+// RGBA32F signal of the right size stands in for it: the reflection slot's (env_cube), live
+// because one cornell material is made a mirror here, which is 0 off that material, i.e. C = 0
+// on most pixels. (A culled producer's signal cannot stand in: an optional input of a culled
+// producer leaves the frame.) A third shade without albedo shows that the input changes the
+// frame (the diffuse and ambient terms vanish).
 TEST(GlShade, AlbedoInputReplacesTheBaseColourOnBothSides) {
   Recipe recipe = testing::withShadeInBothDomains(recipeFile("raster"));
   RecipePass plain;
@@ -149,8 +150,11 @@ TEST(GlShade, AlbedoInputReplacesTheBaseColourOnBothSides) {
   plain.name = "shade_plain";
   recipe.passes.push_back(plain);
   recipe.outputs.push_back("shade_plain.color");
-  auto f = testing::renderHybridFrame(fs::path(DIPTYCH_SAMPLES_DIR) / "scenes/cornell.json", 160,
-                                      120, {}, recipe);
+  Scene cornell = loadScene(fs::path(DIPTYCH_SAMPLES_DIR) / "scenes/cornell.json");
+  ASSERT_FALSE(cornell.materials.empty());
+  cornell.materials.back().kps = 0.5f;
+  auto f = testing::renderHybridFrame(std::move(cornell), 160, 120, {}, recipe);
+  ASSERT_FALSE(f->pass("reflection")->culled);
   EXPECT_LE(measure(*f).relativeRmse, kParityBound);
   const CpuImage& with = f->output("shade_gl.color");
   const CpuImage& without = f->output("shade_plain.color");

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 
+#include "engine/graph/export.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
@@ -41,6 +42,35 @@ TEST(HybridCulling, WhittedKeepsEveryPassAndCastsShadows) {
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) zeros += vis.f(x, y, 0) == 0.f;
   EXPECT_GT(zeros, 0) << "the spheres must shadow the floor";
+}
+
+// Whitted has no colour texture: the texture_filtering slot is culled, and because shade reads
+// its albedo as an optional input, the slot leaves the frame entirely: no pass node, no default
+// fill, shade does not read it, and the export says so (DESIGN.md: leave out of a frame whatever
+// the scene does not need). The image is that of a recipe without the slot at all.
+TEST(HybridCulling, WhittedFrameHasNoTextureFilteringNodeOrFill) {
+  auto f = testing::renderHybridFrame(kWhitted, kW, kH, {});
+  EXPECT_TRUE(f->pass("texture_filtering")->culled);
+  EXPECT_EQ(testing::scheduledNode(f->graph, "texture_filtering"), nullptr);
+  EXPECT_EQ(testing::scheduledNode(f->graph, "default:texture_filtering.albedo"), nullptr);
+  for (const GraphNode& n : f->graph.nodes)
+    EXPECT_EQ(n.name.find("texture_filtering"), std::string::npos) << n.name;
+  const GraphPass* shade = f->pass("shade");
+  for (ResourceId r : shade->reads)
+    EXPECT_NE(f->graph.resources[r].name, "texture_filtering.albedo");
+  ASSERT_EQ(shade->inputsLeftOut.size(), 1u);
+  EXPECT_EQ(shade->inputsLeftOut[0],
+            "albedo <- texture_filtering.albedo (scene has no colour-textured materials)");
+  const nlohmann::json j = graphToJson(f->graph, nullptr);
+  for (const auto& node : j["schedule"])
+    EXPECT_EQ(node["name"].get<std::string>().find("texture_filtering"), std::string::npos);
+
+  Recipe bare = defaultHybridRecipe();
+  bare.file = "<hybrid recipe without texture_filtering>";
+  std::erase_if(bare.passes, [](const RecipePass& p) { return p.name == "texture_filtering"; });
+  for (RecipePass& p : bare.passes) p.inputs.erase("albedo");
+  auto without = testing::renderHybridFrame(loadScene(kWhitted), kW, kH, {}, bare);
+  EXPECT_EQ(f->output("shade.color").words, without->output("shade.color").words);
 }
 
 TEST(HybridCulling, LightsThatCastNoShadowsCullTheShadowPassAndShadeReadsVisibilityOne) {

@@ -20,7 +20,8 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
     ex.runFrame();
     if (f == 0)
       for (const NodeTiming& t : ex.timings())
-        if (!t.cpuMs.empty()) run.firstFrameMs += t.cpuMs.back();
+        if (!t.cpuMs.empty())
+          run.firstFrameMs += t.cpuMs.back() + (t.glWaitMs.empty() ? 0.0 : t.glWaitMs.back());
   }
   run.timings = ex.timings();
   for (std::size_t n = 0; n < run.graph.nodes.size(); ++n) {
@@ -28,9 +29,9 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
     const double ms = summarize(t.cpuMs).median;
     // GL timer queries are not waited on per node (executor.cpp): a GL pass's CPU time is the
     // time to issue its commands (on llvmpipe that includes vertex processing and binning on
-    // the calling thread) and its GL time the rest, so its figure is their sum. A transfer's CPU
-    // time also holds the wait for earlier passes' GL work: its figure is its own GL time. The
-    // frame total stays the CPU sum, which includes that wait (docs/frame-graph.md).
+    // the calling thread) and its GL time the rest, so its figure is their sum; a transfer's
+    // figure is its own GL time. The wait for earlier nodes' GL work is kept out of every
+    // node's CPU time (glWaitMs); the frame total adds it back (docs/frame-graph.md).
     const GraphNode& node = run.graph.nodes[n];
     const bool transfer = node.kind != NodeKind::Pass;
     const double gl = t.gpuMs.empty() ? 0.0 : summarize(t.gpuMs).median;
@@ -39,6 +40,8 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
     // work: the frame's own output (outputs[0], the image) still counts.
     const bool measurementOnly = node.forOutputOnly && !outputs.empty() &&
                                  run.graph.resources[node.resource].name != outputs.front();
+    // The wait before a node is for earlier frame work, measured or not: it always counts.
+    run.totalMs += t.glWaitMs.empty() ? 0.0 : summarize(t.glWaitMs).median;
     if (!measurementOnly) run.totalMs += ms;
     if (auto it = run.timings[n].counters.find("rays"); it != run.timings[n].counters.end())
       run.rays += it->second;

@@ -68,6 +68,7 @@ void Viewer::screenshot(const std::string& name) {
       nlohmann::json& node = nodes[live->graph.nodes[i].name];
       node = {{"cpu_ms", summarize(t.cpuMs).median}, {"frames", t.cpuMs.size()}};
       if (!t.gpuMs.empty()) node["gpu_ms"] = summarize(t.gpuMs).median;
+      if (!t.glWaitMs.empty()) node["gl_wait_ms"] = summarize(t.glWaitMs).median;
     }
     nlohmann::json culled = nlohmann::json::object();
     for (const GraphPass& p : live->graph.passes)

@@ -187,18 +187,22 @@ void Viewer::timingPanel() {
   const CompiledGraph& g = live->graph;
   if (ImGui::Button("time 10 frames")) session_.timeFrames(10);
   ImGui::TextDisabled("median of the last <= 32 frames after the first;");
-  ImGui::TextDisabled("CPU steady_clock, GPU GL_TIME_ELAPSED (render --timings)");
-  if (ImGui::BeginTable("timings", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+  ImGui::TextDisabled(
+      "CPU steady_clock, GPU GL_TIME_ELAPSED, GL wait: for earlier nodes' GL work (render "
+      "--timings)");
+  if (ImGui::BeginTable("timings", 5, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn("node");
     ImGui::TableSetupColumn("dom");
     ImGui::TableSetupColumn("cpu ms");
     ImGui::TableSetupColumn("gpu ms");
+    ImGui::TableSetupColumn("gl wait ms");
     ImGui::TableHeadersRow();
     double total = 0;
     for (std::size_t n = 0; n < g.nodes.size(); ++n) {
       const NodeTiming& t = live->executor->timings()[n];
       const double cpu = t.cpuMs.empty() ? 0 : summarize(t.cpuMs).median;
-      total += cpu;
+      const double wait = t.glWaitMs.empty() ? 0 : summarize(t.glWaitMs).median;
+      total += cpu + wait;  // the waits are frame time too, kept out of the nodes' cpu ms
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(g.nodes[n].name.c_str());  // readback:/upload: are the transfers
@@ -214,13 +218,18 @@ void Viewer::timingPanel() {
         ImGui::TextUnformatted("-");
       else
         ImGui::Text("%.2f", summarize(t.gpuMs).median);
+      ImGui::TableNextColumn();
+      if (t.glWaitMs.empty())
+        ImGui::TextUnformatted("-");
+      else
+        ImGui::Text("%.2f", wait);
     }
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted("total");
     ImGui::TableNextColumn();
     ImGui::TableNextColumn();
-    ImGui::Text("%.2f", total);
+    ImGui::Text("%.2f", total);  // cpu ms plus GL waits
     ImGui::EndTable();
   }
   for (const GraphPass& p : g.passes)
