@@ -55,6 +55,16 @@ class RenderWorld {
     return *static_cast<T*>(slot.get());
   }
 
+  // One T per world for CPU products the passes of a frame share (the exact-hit buffer,
+  // passes/common/exact_hits.h): built empty on first use; T decides when its contents are stale.
+  template <class T>
+  T& cpuCached() {
+    const std::lock_guard lock(cpuCacheMutex_);
+    auto& slot = cpuCache_[std::type_index(typeid(T))];
+    if (!slot) slot = std::make_shared<T>();
+    return *static_cast<T*>(slot.get());
+  }
+
  private:
   void makeContextCurrent();
   const Scene& scene_;
@@ -66,6 +76,8 @@ class RenderWorld {
   std::unique_ptr<gl::GlSceneBuffers> glScene_;
   std::unique_ptr<gl::GlShadingBuffers> glShading_;
   std::map<std::type_index, std::shared_ptr<void>> glCache_;
+  std::map<std::type_index, std::shared_ptr<void>> cpuCache_;
+  std::mutex cpuCacheMutex_;
 };
 
 }  // namespace diptych

@@ -20,6 +20,7 @@ inline std::optional<SurfaceHit> hitsTexel(const CpuImage& hits, int x, int y) {
 // (quadric or SDF) is moved onto the exact surface along the pixel-centre ray the G-buffer traced
 // (liftToAnalytic), so rt_shadows, rt_reflection, rt_transmission and the CPU shade pass shade the
 // point the Whitted reference finds; raster producers keep reading hitsTexel (the triangles).
+// Those passes read it from the frame's exact-hit buffer (exact_hits.h), built once from this.
 // `pinhole`: the camera frame at the hits image's size, built once per image by per-pixel loops
 // (primaryRay would rebuild it for every lifted texel; the ray is the same bit for bit).
 inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeometry& world,

@@ -6,7 +6,7 @@
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
 #include "engine/shading/shading.h"
-#include "passes/common/hits_texel.h"
+#include "passes/common/exact_hits.h"
 #include "passes/raster/gbuffer_surface.h"
 #include "passes/raster/gl_shade.h"
 #include "passes/slots.h"
@@ -70,11 +70,11 @@ void ShadePass::execute(PassContext& c) {
 
   // The camera frame once per image (PinholeFrame::ray == primaryRay bit for bit).
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
-  const PinholeFrame hitsPinhole(frame.camera, hits.desc.width, hits.desc.height);
+  const ExactHitBuffer& exact = exactHits(world, hits, frame.camera);
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
-      const auto hit = exactTexel(hits, world.geometry(), hitsPinhole, x, y);
+      const auto hit = exact.at(x, y);
       vec3 radiance;
       if (!hit) {
         radiance = sampleEnvironment(scene.environment, eye.direction);

@@ -8,7 +8,7 @@
 #include "engine/rt/ray_cone.h"
 #include "engine/rt/whitted.h"
 #include "engine/shading/shading.h"
-#include "passes/common/hits_texel.h"
+#include "passes/common/exact_hits.h"
 #include "passes/rt/sdf_steps.h"
 
 namespace diptych {
@@ -44,20 +44,19 @@ void RtSecondaryPass::execute(PassContext& c) {
   const bool reflection = kind_ == Kind::Reflection;
 
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
-  const PinholeFrame hitsPinhole(frame.camera, hits.desc.width, hits.desc.height);
+  const ExactHitBuffer& exact = exactHits(world, hits, frame.camera);
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
       beginSdfPixel();
-      // The material decides first: only its pixels pay for lifting an analytic texel.
-      const auto texel = hitsTexel(hits, x, y);
+      // The material decides first: only its pixels pay for rebuilding the surface point.
+      const auto hit = exact.at(x, y);
       const Material* m =
-          texel ? &scene.material(
-                      scene.meshes[scene.instances.at(std::size_t(texel->instance)).mesh].material)
-                : nullptr;
+          hit ? &scene.material(
+                    scene.meshes[scene.instances.at(std::size_t(hit->instance)).mesh].material)
+              : nullptr;
       if (m && (reflection ? shading::materialHasReflection(*m)
                            : shading::materialHasTransmission(*m))) {
-        const auto hit = exactTexel(hits, world.geometry(), hitsPinhole, x, y);
         const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
         const std::optional<SurfacePoint> sp =
             hit ? std::optional(makeSurfacePoint(scene, world.geometry(), *hit, eye.direction))

@@ -5,7 +5,7 @@
 #include "engine/graph/render_world.h"
 #include "engine/rt/ray_offset.h"
 #include "engine/rt/shadow_rays.h"
-#include "passes/common/hits_texel.h"
+#include "passes/common/exact_hits.h"
 
 namespace diptych {
 
@@ -36,11 +36,11 @@ void RtShadowsPass::execute(PassContext& c) {
   const std::size_t n = std::size_t(rowCount[h]);
   std::vector<std::uint32_t> pixelOf(n);  // pixel index: also the area-light sample seed
   std::vector<ShadowReceiver> receivers(n);
-  const PinholeFrame pinhole(c.frame().camera, w, h);
+  const ExactHitBuffer& exact = exactHits(world, hits, c.frame().camera);
   tbb::parallel_for(0, h, [&](int y) {
     std::size_t i = std::size_t(rowCount[y]);
     for (int x = 0; x < w; ++x) {
-      const auto hit = exactTexel(hits, world.geometry(), pinhole, x, y);
+      const auto hit = exact.at(x, y);
       if (!hit) continue;
       receivers[i] = shadowReceiver(world.geometry(), *hit);
       pixelOf[i++] = std::uint32_t(y * w + x);

@@ -1,0 +1,49 @@
+#include "passes/common/exact_hits.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+#include "engine/graph/render_world.h"
+#include "passes/common/hits_texel.h"
+
+namespace diptych {
+namespace {
+
+bool sameCamera(const Camera& a, const Camera& b) {
+  // Only what PinholeFrame reads: the pixel-centre rays the lift intersects.
+  return a.position == b.position && a.target == b.target && a.up == b.up &&
+         a.verticalFov == b.verticalFov;
+}
+
+}  // namespace
+
+bool ExactHitBuffer::builtFrom(const CpuImage& hits, const Camera& camera) const {
+  return camera_ && sameCamera(*camera_, camera) && width_ == hits.desc.width &&
+         height_ == hits.desc.height && source_ == hits.words;
+}
+
+void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camera& camera) {
+  width_ = hits.desc.width;
+  height_ = hits.desc.height;
+  hits_.assign(std::size_t(width_) * std::size_t(height_), SurfaceHit{});
+  const PinholeFrame pinhole(camera, width_, height_);
+  const WorldGeometry& geometry = world.geometry();
+  tbb::parallel_for(0, height_, [&](int y) {
+    for (int x = 0; x < width_; ++x)
+      if (const auto hit = exactTexel(hits, geometry, pinhole, x, y))
+        hits_[std::size_t(y) * std::size_t(width_) + std::size_t(x)] = *hit;
+  });
+  source_ = hits.words;
+  camera_ = camera;
+  ++builds_;
+}
+
+const ExactHitBuffer& exactHits(RenderWorld& world, const CpuImage& hits, const Camera& camera) {
+  ExactHitBuffer& buffer = world.cpuCached<ExactHitBuffer>();
+  const std::lock_guard lock(buffer.mutex_);
+  if (!buffer.builtFrom(hits, camera)) buffer.build(world, hits, camera);
+  return buffer;
+}
+
+}  // namespace diptych

@@ -1,0 +1,85 @@
+// The frame's exact-hit buffer (passes/common/exact_hits.h): every exact consumer of a hybrid
+// frame reads the G-buffer texels lifted onto the analytic surfaces from one buffer, built once
+// per distinct hits image and camera, and equal texel for texel to lifting each texel itself.
+#include <gtest/gtest.h>
+
+#include "passes/common/exact_hits.h"
+#include "passes/common/hits_texel.h"
+#include "tests/support/hybrid_frame.h"
+#include "tests/support/test_paths.h"
+
+using namespace diptych;
+using namespace diptych::testing;
+
+namespace {
+
+constexpr int kW = 160, kH = 120;
+
+std::unique_ptr<HybridFrame> whittedFrame() {
+  return renderHybridFrame(std::filesystem::path(samplesDir()) / "scenes/whitted.json", kW, kH,
+                           {"shade.color", "gbuffer.hits"});
+}
+
+bool sameHit(const std::optional<SurfaceHit>& a, const std::optional<SurfaceHit>& b) {
+  if (!a || !b) return !a && !b;
+  return a->instance == b->instance && a->primitive == b->primitive && a->u == b->u &&
+         a->v == b->v && a->analytic == b->analytic;
+}
+
+}  // namespace
+
+TEST(ExactHits, EqualsLiftingEachTexel) {
+  auto f = whittedFrame();
+  const CpuImage& hits = f->output("gbuffer.hits");
+  const Camera camera = cameraOf(f->scene);
+  const ExactHitBuffer& exact = exactHits(*f->world, hits, camera);
+  int lifted = 0, background = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const auto expected = exactTexel(hits, f->world->geometry(), camera, x, y);
+      ASSERT_TRUE(sameHit(exact.at(x, y), expected)) << "pixel " << x << "," << y;
+      lifted += expected && expected->analytic ? 1 : 0;
+      background += expected ? 0 : 1;
+    }
+  }
+  EXPECT_GT(lifted, 500) << "whitted.json's spheres should cover many pixels";
+  EXPECT_GT(background, 0);
+}
+
+TEST(ExactHits, BuiltOncePerFrameForAllConsumers) {
+  // The default hybrid recipe: rt_shadows, rt_reflection, rt_transmission and the CPU shade all
+  // read it; texture_supersample needs coverage only.
+  auto f = whittedFrame();
+  const ExactHitBuffer& exact = f->world->cpuCached<ExactHitBuffer>();
+  EXPECT_EQ(exact.builds(), 1);
+  f->executor->runFrame();  // same G-buffer, same camera: nothing to rebuild
+  EXPECT_EQ(exact.builds(), 1);
+}
+
+TEST(ExactHits, RebuiltWhenTheHitsOrTheCameraChange) {
+  auto f = whittedFrame();
+  CpuImage hits = f->output("gbuffer.hits");
+  const Camera camera = cameraOf(f->scene);
+  int ax = -1, ay = -1;  // a texel on an analytic sphere
+  for (int y = 0; y < kH && ax < 0; ++y)
+    for (int x = 0; x < kW && ax < 0; ++x)
+      if (const auto h = exactHits(*f->world, hits, camera).at(x, y); h && h->analytic) {
+        ax = x;
+        ay = y;
+      }
+  ASSERT_GE(ax, 0);
+  const int before = f->world->cpuCached<ExactHitBuffer>().builds();
+
+  hits.setU(ax, ay, 0, 0u);  // now background
+  EXPECT_FALSE(exactHits(*f->world, hits, camera).at(ax, ay));
+  EXPECT_EQ(f->world->cpuCached<ExactHitBuffer>().builds(), before + 1);
+
+  hits = f->output("gbuffer.hits");
+  Camera moved = camera;
+  moved.position += vec3(0.f, 0.05f, 0.f);
+  const auto there = exactHits(*f->world, hits, moved).at(ax, ay);
+  const auto expected = exactTexel(hits, f->world->geometry(), moved, ax, ay);
+  EXPECT_TRUE(sameHit(there, expected));
+  EXPECT_FALSE(sameHit(there, exactTexel(hits, f->world->geometry(), camera, ax, ay)));
+  EXPECT_EQ(f->world->cpuCached<ExactHitBuffer>().builds(), before + 2);
+}
