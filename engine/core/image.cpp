@@ -32,6 +32,11 @@ Image readFrom(OIIO::ImageInput* in, const std::string& name) {
                          std::to_string(kMaxImageSide) + " per side, 64 channels and " +
                          std::to_string(kMaxImageValues) + " values");
   if (spec.deep) throw InputError(name, "", "deep images are not supported");
+  // A volume (depth > 1, e.g. a 3D TIFF) would decode depth times the values allocated here.
+  if (spec.depth > 1)
+    throw InputError(name, "",
+                     "image is a volume of depth " + std::to_string(spec.depth) +
+                         "; only 2D images are supported");
   Image img(spec.width, spec.height, spec.nchannels);
   bool ok = false;
   if (spec.format == OIIO::TypeDesc::FLOAT || !spec.channelformats.empty()) {

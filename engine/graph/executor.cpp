@@ -141,10 +141,11 @@ void GraphExecutor::runFrame() {
   // Attribution (docs/frame-graph.md, Timing): a GL node's GL work is its own GL_TIME_ELAPSED
   // query, read after the measured frames (no node waits on a query). Before a GL node or
   // transfer starts its clocks, the executor waits for the GL work earlier nodes issued and
-  // records that wait apart (glWaitMs): without it, llvmpipe's compute dispatches and every
-  // readback, which synchronise, carried the earlier passes' GL work in their CPU time. CPU
-  // nodes do not wait, so GL work still overlaps them.
+  // records that wait apart (glWaitMs, and its CPU time glWaitCpuMs): without it, llvmpipe's
+  // compute dispatches and every readback, which synchronise, carried the earlier passes' GL work
+  // in their CPU time. CPU nodes do not wait, so GL work still overlaps them.
   Stopwatch frameClock;
+  world_.beginFrame();
   std::vector<PendingQuery> frameQueries;
   for (std::size_t n = 0; n < graph_.nodes.size(); ++n) {
     const GraphNode& node = graph_.nodes[n];
@@ -155,8 +156,10 @@ void GraphExecutor::runFrame() {
     std::optional<gl::ScopedGlLabel> label;
     if (glWork) {
       Stopwatch wait;
+      const double waitCpuStart = processCpuMs();
       if (glIssued_) gl_->finish();
       timing.glWaitMs.push_back(glIssued_ ? wait.milliseconds() : 0.0);
+      timing.glWaitCpuMs.push_back(processCpuMs() - waitCpuStart);
       label.emplace(node.name);
       const std::size_t slot = pending_.size() + frameQueries.size();
       gl_->beginTimer(slot);

@@ -20,6 +20,9 @@ struct NodeTiming {
   // GL nodes and transfers only: the time spent, before this node's clocks started, waiting
   // for GL work that earlier nodes issued (their time is in their gpuMs), per frame.
   std::vector<double> glWaitMs;
+  // The CPU time of all threads over that wait: on llvmpipe the rasterizer threads run the
+  // earlier nodes' GL work in it, so CPU-time totals of a frame must add it (docs/frame-graph.md).
+  std::vector<double> glWaitCpuMs;
   std::map<std::string, double> counters;  // last frame's counters (e.g. rays)
 };
 

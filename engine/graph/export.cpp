@@ -21,6 +21,7 @@ nlohmann::json timingJson(const NodeTiming& t) {
   if (!t.processCpuMs.empty()) j["process_cpu_ms"] = timingStatsJson(t.processCpuMs);
   if (!t.gpuMs.empty()) j["gpu_ms"] = timingStatsJson(t.gpuMs);
   if (!t.glWaitMs.empty()) j["gl_wait_ms"] = timingStatsJson(t.glWaitMs);
+  if (!t.glWaitCpuMs.empty()) j["gl_wait_cpu_ms"] = timingStatsJson(t.glWaitCpuMs);
   for (const auto& [name, value] : t.counters) j["counters"][name] = value;
   return j;
 }

@@ -2,6 +2,7 @@
 // Per-scene state shared by the passes of a frame: the scene, its world-space triangles, and
 // the Embree scene and GL buffers built from them on first use (so a frame that needs no ray
 // tracing never builds a BVH, and a CPU-only frame never touches OpenGL).
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -55,6 +56,12 @@ class RenderWorld {
     return *static_cast<T*>(slot.get());
   }
 
+  // Frames begun on this world (GraphExecutor::runFrame). Per-frame products (cpuCached) compare
+  // it, so that each frame pays for its own as it would with a moving camera: a product kept
+  // across frames of a still camera would leave its cost out of every timed frame.
+  void beginFrame() { ++frameSerial_; }
+  std::uint64_t frameSerial() const { return frameSerial_; }
+
   // One T per world for CPU products the passes of a frame share (the exact-hit buffer,
   // passes/common/exact_hits.h): built empty on first use; T decides when its contents are stale.
   template <class T>
@@ -67,6 +74,7 @@ class RenderWorld {
 
  private:
   void makeContextCurrent();
+  std::uint64_t frameSerial_ = 0;
   const Scene& scene_;
   WorldGeometry world_;
   gl::GlContext* context_ = nullptr;

@@ -42,7 +42,11 @@ void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camer
 const ExactHitBuffer& exactHits(RenderWorld& world, const CpuImage& hits, const Camera& camera) {
   ExactHitBuffer& buffer = world.cpuCached<ExactHitBuffer>();
   const std::lock_guard lock(buffer.mutex_);
-  if (!buffer.builtFrom(hits, camera)) buffer.build(world, hits, camera);
+  // Once per frame: kept across frames, a still camera's timed frames would never pay the lift.
+  if (buffer.frame_ != world.frameSerial() || !buffer.builtFrom(hits, camera)) {
+    buffer.build(world, hits, camera);
+    buffer.frame_ = world.frameSerial();
+  }
   return buffer;
 }
 

@@ -42,14 +42,16 @@ class ExactHitBuffer {
   void build(RenderWorld& world, const CpuImage& hits, const Camera& camera);
 
   int width_ = 0, height_ = 0, builds_ = 0;
-  std::vector<SurfaceHit> hits_;       // instance -1: background
-  std::vector<std::uint32_t> source_;  // the hits texels it was built from
-  std::optional<Camera> camera_;       // and the camera whose pixel rays lifted them
+  std::uint64_t frame_ = ~std::uint64_t(0);  // RenderWorld::frameSerial() it was built in
+  std::vector<SurfaceHit> hits_;             // instance -1: background
+  std::vector<std::uint32_t> source_;        // the hits texels it was built from
+  std::optional<Camera> camera_;             // and the camera whose pixel rays lifted them
   std::mutex mutex_;
 };
 
 // The frame's exact hits for `hits` (a gbuffer.hits image) seen by `camera`: built on the first
-// call of a frame, shared by the later ones. Passes run one at a time, so the reference stays
+// call of a frame (RenderWorld::frameSerial) or for other hits or another camera, shared by the
+// later calls of that frame. Passes run one at a time, so the reference stays
 // valid for the caller's execute().
 const ExactHitBuffer& exactHits(RenderWorld& world, const CpuImage& hits, const Camera& camera);
 

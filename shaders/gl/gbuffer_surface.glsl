@@ -1,5 +1,5 @@
-// The surface point of a G-buffer pixel as the G-buffer pass stored it (gbuffer.frag with
-// GBUFFER_SURFACE; layout in engine/gl/gbuffer_raster.h): three texel reads in place of
+// The surface point of a G-buffer pixel as the G-buffer pass stored it (resolved from the hits
+// by gbuffer_surface.comp; layout in engine/gl/gbuffer_raster.h): three texel reads in place of
 // surfaceFromHits' ~30 buffer gathers (indices, positions, normals, uvs, tangents, instance),
 // the cost every full-screen pass paid per pixel (docs/benchmarks.md). The values are the ones
 // surfaceFromHits computes for the same hit. Include after gl/scene_shading.glsl; the pass binds

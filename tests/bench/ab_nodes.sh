@@ -2,7 +2,7 @@
 # Before/after of a change, per frame-graph node, in ONE run: two diptych binaries (e.g. one built
 # from main, one from a branch) render the same scene and recipe alternately, RUNS times each,
 # and the medians of every node's process_cpu_ms (CPU time of all threads over the node,
-# last timed frame; --timings) and wall median are printed side by side with their ratio.
+# median over the timed frames; --timings) and wall median are printed side by side with their ratio.
 # Interleaving puts a change of machine load on both sides; on a loaded machine trust the CPU
 # columns. The images of each pair are compared byte for byte (tests/tools/compare_exr.py).
 # Usage (from the repository root):
@@ -32,6 +32,8 @@ for side in ("old", "new"):
             # (the "old" side) wrote the last frame's value as a counter.
             cpu = (t["process_cpu_ms"]["median"] if "process_cpu_ms" in t
                    else t.get("counters", {}).get("process_cpu_ms", 0.0))
+            # The wait before a GL node is CPU time of the frame too (llvmpipe's threads).
+            cpu += t.get("gl_wait_cpu_ms", {}).get("median", 0.0)
             total += cpu
             nodes.setdefault(n["name"], {"old": [], "new": []})[side].append(
                 (cpu, t.get("cpu_ms", {}).get("median", 0.0)))

@@ -105,7 +105,7 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
     const bool gl = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
                     node.kind == NodeKind::Upload;
     std::vector<std::string> figures = {"cpu_ms", "process_cpu_ms"};
-    if (gl) figures.insert(figures.end(), {"gpu_ms", "gl_wait_ms"});
+    if (gl) figures.insert(figures.end(), {"gpu_ms", "gl_wait_ms", "gl_wait_cpu_ms"});
     for (const std::string& f : figures) {
       ASSERT_TRUE(t.contains(f)) << f;
       EXPECT_EQ(t[f]["samples"], kFrames) << f;
@@ -115,6 +115,7 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
     }
     EXPECT_EQ(t.contains("gpu_ms"), gl);
     EXPECT_EQ(t.contains("gl_wait_ms"), gl);
+    EXPECT_EQ(t.contains("gl_wait_cpu_ms"), gl);
     EXPECT_FALSE(t.contains("counters") && t["counters"].contains("process_cpu_ms"));
     waits += gl;
   }
