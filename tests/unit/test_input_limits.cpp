@@ -4,8 +4,10 @@
 #include <sys/stat.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <limits>
+#include <vector>
 
 #include "engine/core/error.h"
 #include "engine/core/exr_header.h"
@@ -176,4 +178,31 @@ TEST(ExrHeader, AnAttributeLargerThanTheFileIsRefusedBeforeOpening) {
   std::string found(std::istreambuf_iterator<char>(in), {});
   ASSERT_GT(found.size(), 1u);
   EXPECT_NE(exrHeaderProblem(found.data() + 1, found.size() - 1), "");
+}
+
+// A volume image (depth > 1: a DDS volume texture here) is refused with a named error before
+// decoding: its depth x width x height values used to be decoded into a width x height buffer.
+TEST(ImageRead, AVolumeImageIsRefusedBeforeDecoding) {
+  const fs::path dir = ::diptych::testing::scratchDir("diptych_volume_image");
+  fs::create_directories(dir);
+  const fs::path path = dir / "volume.dds";
+  const std::uint32_t w = 4, h = 3, d = 5;
+  // DDS header (Microsoft's DDS_HEADER): CAPS|HEIGHT|WIDTH|PIXELFORMAT|DEPTH, an uncompressed
+  // 32-bit RGBA pixel format, caps TEXTURE|COMPLEX, caps2 VOLUME; then w*h*d texels.
+  std::vector<std::uint32_t> header = {124, 0x1 | 0x2 | 0x4 | 0x1000 | 0x800000, h, w, w * 4, d, 0};
+  header.resize(7 + 11, 0);  // reserved
+  for (std::uint32_t v : {32u, 0x41u, 0u, 32u, 0xff0000u, 0xff00u, 0xffu, 0xff000000u})
+    header.push_back(v);
+  for (std::uint32_t v : {0x1008u, 0x200000u, 0u, 0u, 0u}) header.push_back(v);
+  {
+    std::ofstream out(path, std::ios::binary);
+    out.write("DDS ", 4);
+    out.write(reinterpret_cast<const char*>(header.data()),
+              std::streamsize(header.size() * sizeof(std::uint32_t)));
+    const std::vector<char> texels(std::size_t(w * h * d * 4), char(0x40));
+    out.write(texels.data(), std::streamsize(texels.size()));
+  }
+  const std::string message = errorOf([&] { readImage(path); });
+  EXPECT_NE(message.find("volume.dds"), std::string::npos) << message;
+  EXPECT_NE(message.find("volume of depth 5"), std::string::npos) << message;
 }
