@@ -9,15 +9,7 @@
 layout(binding = UNIT_GBUFFER_SURFACE) uniform sampler2DArray uGBufferSurface;
 
 SceneSurface surfaceFromGBuffer(ivec2 p, uvec4 hits) {
-  SceneSurface s;
-  s.hit = hits.x != 0u;
-  s.instance = int(hits.x) - 1;
-  // Background: surfaceFromHits' defaults.
-  s.position = vec3(0.0);
-  s.faceNormal = vec3(0.0, 1.0, 0.0);
-  s.shadingNormal = s.faceNormal;
-  s.uv = vec2(0.0);
-  s.material = -1;
+  SceneSurface s = sceneSurfaceDefaults(hits);
   if (!s.hit) return s;
   vec4 a = texelFetch(uGBufferSurface, ivec3(p, 0), 0);
   vec4 b = texelFetch(uGBufferSurface, ivec3(p, 1), 0);

@@ -284,7 +284,9 @@ struct SceneSurface {
   int material;        // -1: default material
 };
 
-SceneSurface surfaceFromHits(uvec4 texel) {
+// A hits texel's instance and hit flag, every other field at its background value (what a
+// background pixel keeps; surfaceFromHits and surfaceFromGBuffer fill the rest on a hit).
+SceneSurface sceneSurfaceDefaults(uvec4 texel) {
   SceneSurface s;
   s.hit = texel.x != 0u;
   s.instance = int(texel.x) - 1;
@@ -293,6 +295,11 @@ SceneSurface surfaceFromHits(uvec4 texel) {
   s.shadingNormal = s.faceNormal;
   s.uv = vec2(0.0);
   s.material = -1;
+  return s;
+}
+
+SceneSurface surfaceFromHits(uvec4 texel) {
+  SceneSurface s = sceneSurfaceDefaults(texel);
   if (!s.hit) return s;
   float u = uintBitsToFloat(texel.z), v = uintBitsToFloat(texel.w);
   uvec3 tri = sceneTriangle(sceneInstanceFirstTriangle(s.instance) + texel.y);
