@@ -77,7 +77,9 @@ void ShadePass::execute(PassContext& c) {
     // Two sweeps per row: first every surface point, then the shading. In one sweep the shading
     // copied each point's material (passed by value, shading.glsl) right after makeSurfacePoint
     // wrote it, and those loads stalled on the not yet retired stores (store-to-load forwarding
-    // fails across store widths): about a third of this loop's time (perf, issue 14).
+    // fails across store widths): about a third of this loop's time (perf, issue 14). The
+    // scratch is per thread: nothing in a row's body spawns TBB work, so no thread interleaves
+    // rows.
     thread_local std::vector<SurfacePoint> points;
     thread_local std::vector<vec3> eyes;
     thread_local std::vector<char> covered;
