@@ -26,18 +26,6 @@ const char* formatName(Format f) {
   return "?";
 }
 
-int formatChannels(Format f) {
-  switch (f) {
-    case Format::RG32F:
-      return 2;
-    case Format::RGBA32F:
-    case Format::RGBA32UI:
-      return 4;
-    default:
-      return 1;
-  }
-}
-
 bool formatIsInteger(Format f) {
   return f == Format::R32UI || f == Format::RGBA32UI;
 }

@@ -16,7 +16,10 @@ const char* domainName(Domain d);
 
 enum class Format { R32F, RG32F, RGBA32F, R32UI, RGBA32UI, D32F };
 const char* formatName(Format f);
-int formatChannels(Format f);
+// Inline: CpuImage's per-texel accessors call it on every read and write.
+constexpr int formatChannels(Format f) {
+  return f == Format::RG32F ? 2 : (f == Format::RGBA32F || f == Format::RGBA32UI) ? 4 : 1;
+}
 bool formatIsInteger(Format f);
 
 struct ResourceDesc {

@@ -26,13 +26,16 @@ bool ExactHitBuffer::builtFrom(const CpuImage& hits, const Camera& camera) const
 void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camera& camera) {
   width_ = hits.desc.width;
   height_ = hits.desc.height;
-  hits_.assign(std::size_t(width_) * std::size_t(height_), SurfaceHit{});
+  // Every element is written below: resize keeps last frame's storage (no fill, no page faults).
+  hits_.resize(std::size_t(width_) * std::size_t(height_));
   const PinholeFrame pinhole(camera, width_, height_);
   const WorldGeometry& geometry = world.geometry();
   tbb::parallel_for(0, height_, [&](int y) {
-    for (int x = 0; x < width_; ++x)
-      if (const auto hit = exactTexel(hits, geometry, pinhole, x, y))
-        hits_[std::size_t(y) * std::size_t(width_) + std::size_t(x)] = *hit;
+    SurfaceHit* row = hits_.data() + std::size_t(y) * std::size_t(width_);
+    for (int x = 0; x < width_; ++x) {
+      const auto hit = exactTexel(hits, geometry, pinhole, x, y);
+      row[x] = hit ? *hit : SurfaceHit{};  // instance -1: background
+    }
   });
   source_ = hits.words;
   camera_ = camera;

@@ -17,10 +17,10 @@ namespace {
 // The texture_filtering slot's C and coverage replace shade's own level-0 lookup (a = -1: none
 // there). Not for materials whose metallic-roughness texture re-maps C per texel: the signal is
 // C = colour x texture, which that mapping does not take as input (docs/textures.md).
-void applyAlbedo(SurfacePoint& sp, const Scene& scene, const CpuImage& albedo, int x, int y) {
-  const float a = albedo.f(x, y, 3);
+void applyAlbedo(SurfacePoint& sp, const Scene& scene, const CpuFloatRow& albedo, int x) {
+  const float a = albedo(x, 3);
   if (a < 0.f || scene.material(sp.material).metallicRoughnessTexture >= 0) return;
-  sp.resolved.color = vec3(albedo.f(x, y, 0), albedo.f(x, y, 1), albedo.f(x, y, 2));
+  sp.resolved.color = albedo.rgb(x);
   sp.resolved.baseColor = sp.resolved.color;  // the glTF model's C
   sp.resolved.alpha = a;
 }
@@ -64,24 +64,43 @@ void ShadePass::execute(PassContext& c) {
   std::vector<shading::ShadingLight> lights;
   for (const Light& l : scene.lights) lights.push_back(shading::toShadingLight(l));
   const int visibilityLayers = visibility ? visibility->desc.layers : 0;
-  auto rgb = [](const CpuImage* s, int x, int y) {
-    return s ? vec3(s->f(x, y, 0), s->f(x, y, 1), s->f(x, y, 2)) : vec3(0.f);
-  };
 
   // The camera frame once per image (PinholeFrame::ray == primaryRay bit for bit).
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
   const ExactHitBuffer& exact = exactHits(world, hits, frame.camera);
+  const int outChannels = out.channels();
   tbb::parallel_for(0, frame.height, [&](int y) {
+    // Row addresses once per row (issue 14: per-texel accessors were a tenth of this loop).
+    const CpuFloatRow reflectionRow(reflection, y), transmissionRow(transmission, y);
+    const CpuFloatRow albedoRow(albedo, y);
+    std::uint32_t* outRow = out.row(y);
+    // Two sweeps per row: first every surface point, then the shading. In one sweep the shading
+    // copied each point's material (passed by value, shading.glsl) right after makeSurfacePoint
+    // wrote it, and those loads stalled on the not yet retired stores (store-to-load forwarding
+    // fails across store widths): about a third of this loop's time (perf, issue 14). The
+    // scratch is per thread: nothing in a row's body spawns TBB work, so no thread interleaves
+    // rows.
+    thread_local std::vector<SurfacePoint> points;
+    thread_local std::vector<vec3> eyes;
+    thread_local std::vector<char> covered;
+    points.resize(std::size_t(frame.width));
+    eyes.resize(std::size_t(frame.width));
+    covered.resize(std::size_t(frame.width));
     for (int x = 0; x < frame.width; ++x) {
-      const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
+      eyes[x] = pinhole.ray(x + 0.5f, y + 0.5f).direction;
       const auto hit = exact.at(x, y);
+      covered[x] = hit.has_value();
+      if (!hit) continue;
+      points[x] = makeSurfacePoint(scene, world.geometry(), *hit, eyes[x]);
+      if (albedoRow) applyAlbedo(points[x], scene, albedoRow, x);
+    }
+    for (int x = 0; x < frame.width; ++x) {
       vec3 radiance;
-      if (!hit) {
-        radiance = sampleEnvironment(scene.environment, eye.direction);
+      if (!covered[x]) {
+        radiance = sampleEnvironment(scene.environment, eyes[x]);
       } else {
-        SurfacePoint sp = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
-        if (albedo) applyAlbedo(sp, scene, *albedo, x, y);
-        const vec3 v = -eye.direction;
+        const SurfacePoint& sp = points[x];
+        const vec3 v = -eyes[x];
         radiance = shading::emittedAndAmbient(sp.resolved, scene.ambient);
         for (std::size_t i = 0; i < lights.size(); ++i) {
           const float vis = int(i) < visibilityLayers ? visibility->f(x, y, 0, int(i)) : 1.f;
@@ -89,13 +108,13 @@ void ShadePass::execute(PassContext& c) {
           radiance += shading::lightContribution(sp.resolved, sp.shadingNormal, v, s, vis);
         }
         // The reflection signal's alpha says whether it is a mirror ray or a prefiltered lobe.
-        const float reflectionAlpha = reflection ? reflection->f(x, y, 3) : 0.f;
         radiance +=
-            shading::secondaryTermsOf(sp.resolved, sp.shadingNormal, v, rgb(reflection, x, y),
-                                      reflectionAlpha, rgb(transmission, x, y));
+            shading::secondaryTermsOf(sp.resolved, sp.shadingNormal, v, reflectionRow.rgb(x),
+                                      reflectionRow(x, 3), transmissionRow.rgb(x));
       }
-      for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, radiance[ch]);
-      out.setF(x, y, 3, 1.f);
+      std::uint32_t* texel = outRow + std::size_t(x) * std::size_t(outChannels);
+      for (int ch = 0; ch < 3; ++ch) texel[ch] = std::bit_cast<std::uint32_t>(radiance[ch]);
+      texel[3] = std::bit_cast<std::uint32_t>(1.f);
     }
   });
 }

@@ -1,6 +1,9 @@
 #include "passes/rt/rt_shadows.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+
+#include <bit>
 
 #include "engine/graph/render_world.h"
 #include "engine/rt/ray_offset.h"
@@ -28,31 +31,40 @@ void RtShadowsPass::execute(PassContext& c) {
   const RtScene& rt = world.rtScene();
 
   // Receivers for covered pixels only, built in parallel per row, then compacted in order.
-  std::vector<int> rowCount(h + 1, 0);
+  rowCount_.assign(std::size_t(h) + 1, 0);
   tbb::parallel_for(0, h, [&](int y) {
-    for (int x = 0; x < w; ++x) rowCount[y + 1] += hits.u(x, y, 0) != 0u ? 1 : 0;
+    const std::uint32_t* row = hits.row(y);
+    const std::size_t stride = std::size_t(hits.channels());
+    int count = 0;
+    for (int x = 0; x < w; ++x) count += row[std::size_t(x) * stride] != 0u ? 1 : 0;
+    rowCount_[std::size_t(y) + 1] = count;
   });
-  for (int y = 0; y < h; ++y) rowCount[y + 1] += rowCount[y];
-  const std::size_t n = std::size_t(rowCount[h]);
-  std::vector<std::uint32_t> pixelOf(n);  // pixel index: also the area-light sample seed
-  std::vector<ShadowReceiver> receivers(n);
+  for (int y = 0; y < h; ++y) rowCount_[y + 1] += rowCount_[y];
+  const std::size_t n = std::size_t(rowCount_[h]);
+  pixelOf_.resize(n);  // pixel index: also the area-light sample seed
+  receivers_.resize(n);
   const ExactHitBuffer& exact = exactHits(world, hits, c.frame().camera);
   tbb::parallel_for(0, h, [&](int y) {
-    std::size_t i = std::size_t(rowCount[y]);
+    std::size_t i = std::size_t(rowCount_[y]);
     for (int x = 0; x < w; ++x) {
       const auto hit = exact.at(x, y);
       if (!hit) continue;
-      receivers[i] = shadowReceiver(world.geometry(), *hit);
-      pixelOf[i++] = std::uint32_t(y * w + x);
+      receivers_[i] = shadowReceiver(world.geometry(), *hit);
+      pixelOf_[i++] = std::uint32_t(y * w + x);
     }
   });
   const std::vector<float> visibility =
-      traceShadowRays(rt, lights, receivers, areaSamples_, pixelOf);
+      traceShadowRays(rt, lights, receivers_, areaSamples_, pixelOf_);
   out.fill(vec4(1.f));
   for (std::size_t l = 0; l < lights.size(); ++l) {
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
-      out.setF(int(pixelOf[i] % w), int(pixelOf[i] / w), 0, visibility[l * n + i], int(l));
-    });
+    // Layer l is R32F: pixel p's texel is word p of the layer.
+    std::uint32_t* layer = out.row(0, int(l));
+    const float* v = visibility.data() + l * n;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i < r.end(); ++i)
+                          layer[pixelOf_[i]] = std::bit_cast<std::uint32_t>(v[i]);
+                      });
   }
   std::size_t active = 0;
   for (const Light& light : lights)

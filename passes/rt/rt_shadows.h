@@ -1,5 +1,9 @@
 #pragma once
+#include <cstdint>
+#include <vector>
+
 #include "engine/graph/pass.h"
+#include "engine/rt/shadow_rays.h"
 #include "passes/slots.h"
 
 namespace diptych {
@@ -18,6 +22,10 @@ class RtShadowsPass : public Pass {
  private:
   int areaSamples_ = 16;
   SlotIo io_;
+  // Per-frame arrays kept across frames (same size each frame: no allocation, no page faults).
+  std::vector<int> rowCount_;
+  std::vector<std::uint32_t> pixelOf_;
+  std::vector<ShadowReceiver> receivers_;
 };
 
 }  // namespace diptych
