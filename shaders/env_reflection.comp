@@ -47,9 +47,11 @@ void main() {
   ivec2 size = imageSize(uReflection);
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= size.x || p.y >= size.y) return;
-  SceneSurface s = gbufferSurface(p, texelFetch(uHits, p, 0));
+  uvec4 hits = texelFetch(uHits, p, 0);
   vec4 result = vec4(0.0);
-  if (s.hit) {
+  // The material decides first: only pixels of a material that can reflect rebuild the surface.
+  if (sceneHitMayReflect(hits, uMaxLod > 0.0)) {
+    SceneSurface s = gbufferSurface(p, hits);
     ShadingMaterial m = sceneMaterial(s.material, s.uv);
     bool lobe = uMaxLod > 0.0 && m.model == SHADING_MODEL_GLTF;
     if (hasReflection(m, lobe)) {

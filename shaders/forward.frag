@@ -36,6 +36,8 @@ void main() {
   SceneSurface first = surfaceFromHits(texel);  // background: no first surface
   if (uBehind != 0) {
     texel = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
+    // The first surface's material decides before its surface is rebuilt (sceneHitMayTransmit).
+    if (uTransmissiveOnly != 0 && !sceneHitMayTransmit(texel)) discard;
     first = gbufferSurface(ivec2(gl_FragCoord.xy), texel);
     if (uTransmissiveOnly != 0 && !(first.hit && hasTransmission(sceneMaterial(first.material, first.uv))))
       discard;
