@@ -67,8 +67,8 @@ const gl::Texture& ShadowMapGl::mapsFor(RenderWorld& world, const std::vector<Li
     // A one-time cost: wait for llvmpipe (or the GPU) to finish the maps so that the time is
     // the render's, not just its submission.
     gl::glFinish();
-    built.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                   .count();
+    built.ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
   return maps.texture;
 }

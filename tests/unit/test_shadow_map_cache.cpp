@@ -100,7 +100,8 @@ TEST(ShadowMapCache, AChangedLightOrMapSettingRendersAgain) {
   const Frame after = shadowFrame(scene, world, scene.camera, "static");
   EXPECT_EQ(after.builds, 1.0) << "the light moved: its maps must be rendered again";
   RenderWorld fresh(scene, &gl::testing::osmesaContext());
-  EXPECT_EQ(after.visibility.words, shadowFrame(scene, fresh, scene.camera, "static").visibility.words);
+  EXPECT_EQ(after.visibility.words,
+            shadowFrame(scene, fresh, scene.camera, "static").visibility.words);
   EXPECT_NE(after.visibility.words, before.visibility.words) << "the shadows must have moved";
 
   // Another resolution is another set of maps; coming back to 256 finds the 256 maps current.

@@ -202,8 +202,8 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
     std::string oneTimeParts;
     for (const auto& [what, ms] : v.value("one_time_ms", nlohmann::json::object()).items()) {
       oneTimeMs += ms.get<double>();
-      oneTimeParts += fmt::format("{}{} {:.1f} ms", oneTimeParts.empty() ? "" : ", ", what,
-                                  ms.get<double>());
+      oneTimeParts +=
+          fmt::format("{}{} {:.1f} ms", oneTimeParts.empty() ? "" : ", ", what, ms.get<double>());
     }
     page += fmt::format(
         "<tr class=\"{}\"><td>{}</td><td>{:.2f}</td><td>{:.2f}x</td><td title=\"{}\">{:.1f}</td>"
