@@ -131,8 +131,8 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
     csv << v["name"].get<std::string>() << "," << v["total_ms"].get<double>() << ","
         << v["rays"].get<double>() << "," << (v["pareto"].get<bool>() ? 1 : 0) << ",";
     double oneTime = 0;  // the sum of the variant's one-time costs (results.json lists them)
-    for (const auto& [what, ms] : v.value("one_time_ms", nlohmann::json::object()).items())
-      oneTime += ms.get<double>();
+    const nlohmann::json costs = v.value("one_time_ms", nlohmann::json::object());
+    for (const auto& [what, ms] : costs.items()) oneTime += ms.get<double>();
     csv << oneTime;
     for (const auto& m : metricNames)
       csv << "," << (v["metrics"].contains(m) ? v["metrics"][m].dump() : "");
@@ -200,7 +200,9 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
     // outside its frame time, listed in the cell's tooltip.
     double oneTimeMs = 0;
     std::string oneTimeParts;
-    for (const auto& [what, ms] : v.value("one_time_ms", nlohmann::json::object()).items()) {
+    // Named: the range of a range-for over a temporary's items() would dangle.
+    const nlohmann::json costs = v.value("one_time_ms", nlohmann::json::object());
+    for (const auto& [what, ms] : costs.items()) {
       oneTimeMs += ms.get<double>();
       oneTimeParts +=
           fmt::format("{}{} {:.1f} ms", oneTimeParts.empty() ? "" : ", ", what, ms.get<double>());
