@@ -13,8 +13,11 @@ layout(binding = 0) uniform usampler2D uHits;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
+  uvec4 hits = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
   outColor = vec4(0.0);
+  // The material decides first: only pixels of a transmissive material rebuild the surface.
+  if (!sceneHitMayTransmit(hits)) return;
+  SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), hits);
   if (s.hit && hasTransmission(sceneMaterial(s.material, s.uv))) {
     bool front = dot(s.faceNormal, s.position - uEye) <= 0.0;
     outColor = vec4(front ? sceneVolumeTransmittance(s.material) : vec3(1.0), 1.0);

@@ -36,12 +36,14 @@ void main() {
   SceneSurface first = surfaceFromHits(texel);  // background: no first surface
   if (uBehind != 0) {
     texel = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
+    // "Behind the first visible surface": the first surface itself (same instance and
+    // primitive) is excluded by identity, everything else by its distance along the same ray
+    // below. Both this test and the material gate need only the hits texel, so they come before
+    // the first surface is rebuilt (the front faces of a blended object are all discarded here).
+    if (texel.x != 0u && texel.x - 1u == uInstance && texel.y == uint(gl_PrimitiveID)) discard;
+    if (uTransmissiveOnly != 0 && !sceneHitMayTransmit(texel)) discard;
     first = gbufferSurface(ivec2(gl_FragCoord.xy), texel);
     if (uTransmissiveOnly != 0 && !(first.hit && hasTransmission(sceneMaterial(first.material, first.uv))))
-      discard;
-    // "Behind the first visible surface": the first surface itself (same instance and
-    // primitive) is excluded by identity, everything else by its distance along the same ray.
-    if (first.hit && uint(first.instance) == uInstance && texel.y == uint(gl_PrimitiveID))
       discard;
   }
   vec3 dir = pixelRayDirection();

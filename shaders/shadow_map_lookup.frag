@@ -219,7 +219,12 @@ void main() {
     outVisibility = 1.0;
     return;
   }
-  SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
+  uvec4 hits = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
+  // Background pixels keep the cleared 1 (lit). Discarded, not returned from: llvmpipe skips the
+  // rest of the shader for blocks whose pixels are all discarded, not for a divergent branch.
+  // Receiver-plane bias keeps them in its quads: its screen derivatives read their lanes.
+  if (uBias != BIAS_RECEIVER_PLANE && hits.x == 0u) discard;
+  SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), hits);
   ShadowLight light = shadowLights[uLight];
   gFirst = light.info.y;
   gLightPos = light.positionNear.xyz;

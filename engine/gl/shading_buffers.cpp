@@ -50,6 +50,15 @@ int wrapCode(WrapMode w) {
 
 // std430 layout of scene_shading.glsl's GpuMaterial: nine vec4, then the glTF model's three,
 // then the four of the textures.
+// Which secondary signals some point of the material can have (shading::materialHas*, bounds
+// over its textures), as bits of GpuMaterial.modelTransSpec.w: the GL producers' gate before
+// rebuilding any surface (scene_shading.glsl sceneHitMay*), as rt_secondary.cpp decides first.
+float materialGates(const Material& m) {
+  return float((shading::materialHasReflection(m, false) ? 1 : 0) |
+               (shading::materialHasReflection(m, true) ? 2 : 0) |
+               (shading::materialHasTransmission(m) ? 4 : 0));
+}
+
 void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& out) {
   const shading::ShadingMaterial s = shading::toShadingMaterial(m);
   const bool checker = m.checker.has_value();
@@ -90,7 +99,7 @@ void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& 
   out.insert(out.end(), {lane.layer, lane.width, lane.height, lane.flags});
   out.insert(out.end(), {s.baseColor.x, s.baseColor.y, s.baseColor.z, s.metallic,            //
                          s.specularTint.x, s.specularTint.y, s.specularTint.z, s.roughness,  //
-                         float(s.model), s.transmission, s.specularWeight, 0.f});
+                         float(s.model), s.transmission, s.specularWeight, materialGates(m)});
   // --- textures (scene_shading.glsl's GpuMaterial.texColorEmitMrAo .. texRoughness) ---
   // Texture indices as float (-1: none; exact for indices below 2^24), and the glTF inputs that
   // resolveMaterial re-maps per texel with gltfPbrToLecture.

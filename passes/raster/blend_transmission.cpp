@@ -132,6 +132,9 @@ void BlendTransmissionPass::execute(PassContext& c) {
       covered.empty() ? glm::ivec4(0) : glm::ivec4(covered.lo, covered.hi - covered.lo);
   c.count("blend_scissor_pixels", covered.empty() ? 0.0 : double(scissor->z) * scissor->w);
 
+  // The slot's 0 outside the scissor (the passes below clear and write inside it only).
+  clearToZero(out);
+
   // Lines 1-3 of the lecture's algorithm: opaque polygons with depth (and the background).
   gl::ForwardOptions opaque;
   opaque.instances = gl::InstanceSet::Opaque;
@@ -168,7 +171,9 @@ void BlendTransmissionPass::execute(PassContext& c) {
   transparent.transmissiveFirstOnly = true;
   renderer.render(world.forwardScene(), view, out, cache.depth, transparent);
 
-  // The slot's contract: 0 where the first surface transmits nothing.
+  // The slot's contract: 0 where the first surface transmits nothing. Inside the scissor only:
+  // outside it every pixel is already 0 (a full-screen mask rebuilt every pixel's surface).
+  if (covered.empty()) return;
   gl::glBindTextureUnit(0, hits.id());
   bindSurface(c, surface_);
   std::optional<FullscreenResolve>& mask = cache.mask[surface_ != kNoResource ? 1 : 0];
@@ -177,7 +182,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
         gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"},
                         gl::withDefines(world.glShading().defines, surfaceDefines(surface_))));
   mask->program().set("uEye", view.eye);
-  mask->draw(world, out, /*multiply=*/true);
+  mask->draw(world, out, /*multiply=*/true, scissor);
 }
 
 }  // namespace diptych

@@ -18,6 +18,7 @@
 #include "engine/shading/shading.h"
 #include "passes/raster/env_maps.h"
 #include "passes/raster/env_prefilter.h"
+#include "passes/raster/fullscreen_resolve.h"
 #include "passes/raster/gbuffer_surface.h"
 
 namespace diptych {
@@ -162,12 +163,13 @@ struct EnvReflectionGl {
     gl::Texture texture;
     mat3 eyeToWorld{1.f};  // the frame a sphere map was built for
   };
-  std::map<std::pair<EnvMapKind, bool>, gl::Program> programs;  // (kind, stored surface)
+  // (kind, stored surface) -> the full-screen lookup (shaders/env_reflection.frag)
+  std::map<std::pair<EnvMapKind, bool>, FullscreenResolve> programs;
   std::map<std::tuple<EnvMapKind, int, bool>, Map> maps;
 
   // Compiled for the world's scene (engine/gl/shader_features.h): the material paths it lacks
   // are folded away.
-  const gl::Program& program(EnvMapKind kind, const std::vector<gl::ShaderDefine>& scene,
+  FullscreenResolve& program(EnvMapKind kind, const std::vector<gl::ShaderDefine>& scene,
                              ResourceId surface) {
     auto it = programs.find({kind, surface != kNoResource});
     if (it != programs.end()) return it->second;
@@ -175,10 +177,11 @@ struct EnvReflectionGl {
                          : kind == EnvMapKind::Sphere ? "ENV_SPHERE"
                                                       : "ENV_EQUIRECT";
     return programs
-        .emplace(std::pair(kind, surface != kNoResource),
-                 gl::loadProgram({"env_reflection.comp"},
-                                 gl::withDefines(gl::withDefines(scene, {{define, ""}}),
-                                                 surfaceDefines(surface))))
+        .emplace(
+            std::pair(kind, surface != kNoResource),
+            FullscreenResolve(gl::loadProgram(
+                {"fullscreen.vert", "env_reflection.frag"},
+                gl::withDefines(gl::withDefines(scene, {{define, ""}}), surfaceDefines(surface)))))
         .first->second;
   }
 
@@ -272,12 +275,10 @@ void EnvReflectionPass::execute(PassContext& c) {
                map.levels() - 1, built.prefilterMs);
   }
   const gl::GlShadingBuffers& shading = world.glShading();
-  const gl::Program& program = state.program(kind_, shading.defines, surface_);
+  FullscreenResolve& pass = state.program(kind_, shading.defines, surface_);
+  const gl::Program& program = pass.program();
 
-  world.glScene().bindStorage();
-  shading.bindStorage();
   const gl::Texture& out = c.glTexture(io_.signal);
-  program.use();
   program.set("uLightCount", shading.lightCount);
   program.set("uCameraPosition", camera.position);
   program.set("uWorldToEye", mat4(worldToEye));
@@ -287,11 +288,9 @@ void EnvReflectionPass::execute(PassContext& c) {
   gl::glBindTextureUnit(0, c.glTexture(io_.hits).id());
   gl::glBindTextureUnit(1, map.id());
   bindSurface(c, surface_);
-  gl::glBindImageTexture(0, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  gl::glDispatchCompute(GLuint((out.width() + 7) / 8), GLuint((out.height() + 7) / 8), 1);
-  // Later passes and readbacks fetch or copy the image written here.
-  gl::glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
-                      GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  // 0 where the material cannot reflect: those pixels are discarded before any surface work.
+  clearToZero(out);
+  pass.draw(world, out);
 }
 
 }  // namespace diptych

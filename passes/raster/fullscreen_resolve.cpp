@@ -11,7 +11,8 @@ FullscreenResolve::FullscreenResolve(gl::Program program)
       framebuffer_(gl::Framebuffer::create()),
       empty_(gl::VertexArray::create()) {}
 
-void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target, bool multiply) {
+void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target, bool multiply,
+                             const std::optional<glm::ivec4>& scissor) {
   world.glScene().bindStorage();
   world.glShading().bindStorage();
   framebuffer_.attachColor(0, target);
@@ -27,12 +28,17 @@ void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target, bool
   }
   gl::glDisable(GL_CULL_FACE);
   gl::glDisable(GL_SCISSOR_TEST);
+  if (scissor) {
+    gl::glEnable(GL_SCISSOR_TEST);
+    gl::glScissor(scissor->x, scissor->y, scissor->z, scissor->w);
+  }
   gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   program_.set("uViewportSize", vec2(float(target.width()), float(target.height())));
   program_.use();
   empty_.bind();
   gl::glDrawArrays(GL_TRIANGLES, 0, 3);
   gl::glBindVertexArray(0);
+  gl::glDisable(GL_SCISSOR_TEST);
   if (multiply) {
     gl::glDisable(GL_BLEND);
     gl::glBlendFunc(GL_ONE, GL_ZERO);

@@ -3,6 +3,9 @@
 // for the per-pixel steps of the forward producers (mask, resolve). The scene and shading
 // SSBOs are bound so that the fragment shader can rebuild G-buffer points
 // (shaders/gl/scene_shading.glsl, surfaceFromHits).
+#include <optional>
+
+#include "engine/core/math.h"
 #include "engine/gl/objects.h"
 
 namespace diptych {
@@ -12,9 +15,10 @@ class FullscreenResolve {
  public:
   explicit FullscreenResolve(gl::Program program);
   const gl::Program& program() const { return program_; }
-  // Draws over all of `target` (no depth, no blending, or with `multiply` dst * src); the caller
-  // set uniforms and textures.
-  void draw(RenderWorld& world, const gl::Texture& target, bool multiply = false);
+  // Draws over all of `target` (no depth, no blending, or with `multiply` dst * src), or over
+  // the `scissor` rectangle (x, y, width, height) only; the caller set uniforms and textures.
+  void draw(RenderWorld& world, const gl::Texture& target, bool multiply = false,
+            const std::optional<glm::ivec4>& scissor = std::nullopt);
 
  private:
   gl::Program program_;

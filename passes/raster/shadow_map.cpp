@@ -25,14 +25,20 @@ void ShadowMapPass::execute(PassContext& c) {
                                  .pointLightSize = settings_.lightFraction * diagonal,
                                  .directionalAngle = settings_.lightAngle});
   auto& state = world.glCached<shadowmap::ShadowMapGl>();
-  const gl::Texture& maps =
-      state.maps(settings_.resolution, std::max(1, shadowmap::totalLayers(frusta)));
-  const int draws = state.renderMaps(world, frusta, settings_, maps);
+  shadowmap::ShadowMapGl::Built built;
+  const gl::Texture& maps = state.mapsFor(world, frusta, settings_, built);
   state.lookup(world, frusta, settings_, maps, c.glTexture(io_.hits),
                surface_ != kNoResource ? &c.glTexture(surface_) : nullptr, c.glTexture(io_.signal));
+  // Counters of this frame (read by tests: counts, not times). With static update the render is
+  // a one-time cost of the world, reported apart from the frame as env_*'s prefilter is.
   c.count("shadow_map_texels",
           double(maps.width()) * maps.height() * shadowmap::totalLayers(frusta));
-  c.count("shadow_map_caster_draws", draws);
+  c.count("shadow_map_caster_draws", built.draws);
+  c.count("shadow_map_builds", built.rendered ? 1.0 : 0.0);
+  if (built.rendered && settings_.update == shadowmap::Update::Static) {
+    c.count("shadow_map_build_ms", built.ms);
+    world.oneTimeMs["shadow_map build"] += built.ms;
+  }
 }
 
 }  // namespace diptych

@@ -23,8 +23,19 @@ namespace diptych::shadowmap {
 class ShadowMapGl {
  public:
   ShadowMapGl();
-  // The D32F array holding `layers` maps of resolution^2 (allocated on first request).
-  const gl::Texture& maps(int resolution, int layers);
+  // What mapsFor did this frame, for the pass's counters and the world's one-time costs.
+  struct Built {
+    int draws = 0;          // caster draws issued (0 when the cached maps were used)
+    bool rendered = false;  // the maps were rendered
+    double ms = 0;          // render time including glFinish (static update only), ms
+  };
+  // The D32F array with every light's maps for `settings`. Static update (an engine's cached
+  // shadow maps) renders only when the key of what the depth depends on changed: the map
+  // settings (resolution, layer count, slope offset), every layer's view-projection (the light's
+  // kind, position, direction, cone and the scene bounds it is fitted to) and the caster set
+  // (which meshes cast, and which are alpha-tested). EveryFrame renders each call.
+  const gl::Texture& mapsFor(RenderWorld& world, const std::vector<LightFrustum>& frusta,
+                             const Settings& settings, Built& built);
   // Renders the depth of every shadow-casting mesh into each light's layers, skipping meshes
   // outside a layer's frustum; returns the number of mesh draws issued.
   int renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
@@ -49,7 +60,13 @@ class ShadowMapGl {
   gl::Framebuffer depthFbo_, lookupFbo_;
   gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle
   gl::Buffer layers_, lights_;
-  std::map<std::pair<int, int>, gl::Texture> maps_;  // (resolution, layers) -> D32F array
+  // One D32F array per (resolution, layers, slope factor, slope units): passes of one graph
+  // with other map settings keep their own maps. `key` is what the contents were rendered for.
+  struct Maps {
+    gl::Texture texture;
+    std::vector<float> key;
+  };
+  std::map<std::array<float, 4>, Maps> maps_;
   std::vector<vec2> poisson_;
   std::vector<Aabb> meshBounds_;  // world bounds of each GlSceneBuffers mesh
 };

@@ -144,6 +144,9 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
     lookupFbo_.attachDepth(lookupDepth_);
     lookupFbo_.checkComplete("shadow_map.lookup");
     lookupFbo_.bind();
+    // Lit (1) where the lookup discards: background pixels (shadow_map_lookup.frag).
+    const GLfloat lit[4] = {1.f, 1.f, 1.f, 1.f};
+    gl::glClearNamedFramebufferfv(lookupFbo_.id(), GL_COLOR, 0, lit);
     // A layer without a light (a scene with no lights still has one) reads as lit.
     const bool hasLight = light < int(frusta.size());
     const ViewKind kind = hasLight ? frusta[std::size_t(light)].kind : ViewKind::Unshadowed;

@@ -2,6 +2,7 @@
 // each layer of the D32F array, reversed-Z (see shadow_map_frusta.h), depth only.
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdint>
 
 #include "engine/gl/debug.h"
@@ -19,15 +20,6 @@ ShadowMapGl::ShadowMapGl()
       emptyVao_(gl::VertexArray::create()),
       poisson_(poissonDisk(64)) {}
 
-const gl::Texture& ShadowMapGl::maps(int resolution, int layers) {
-  auto& tex = maps_[{resolution, layers}];
-  if (!tex) {
-    tex = gl::Texture::create2DArray(gl::TextureFormat::D32F, resolution, resolution, layers);
-    tex.setLabel("shadow_map.maps");
-  }
-  return tex;
-}
-
 namespace {
 
 bool castsShadow(const Scene& scene, int material) {
@@ -36,6 +28,50 @@ bool castsShadow(const Scene& scene, int material) {
 }
 
 }  // namespace
+
+const gl::Texture& ShadowMapGl::mapsFor(RenderWorld& world, const std::vector<LightFrustum>& frusta,
+                                        const Settings& settings, Built& built) {
+  const int layers = std::max(1, totalLayers(frusta));
+  // glPolygonOffset is baked into the depth: only slope bias renders differently.
+  const bool slope = settings.bias == Bias::Slope;
+  Maps& maps = maps_[{float(settings.resolution), float(layers), slope ? settings.slopeFactor : 0.f,
+                      slope ? settings.slopeUnits : 0.f}];
+  if (!maps.texture) {
+    maps.texture = gl::Texture::create2DArray(gl::TextureFormat::D32F, settings.resolution,
+                                              settings.resolution, layers);
+    maps.texture.setLabel("shadow_map.maps");
+  }
+  // The key: every layer's view-projection (it encodes the light and the bounds it is fitted
+  // to), then per mesh of the scene buffers whether it casts and how alpha is drawn. The world
+  // geometry itself is fixed for the RenderWorld this object lives in.
+  std::vector<float> key;
+  for (const LightFrustum& f : frusta) {
+    key.push_back(float(f.kind));
+    for (const mat4& m : f.viewProj)
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) key.push_back(m[c][r]);
+  }
+  const gl::GlSceneBuffers& scene = world.glScene();
+  const gl::GlShadingBuffers& shading = world.glShading();
+  for (const gl::GlMeshRange& mesh : scene.meshes)
+    key.push_back(castsShadow(world.scene(), mesh.material)
+                      ? 1.f + float(int(shading.alphaDraw(mesh.material)))
+                      : 0.f);
+  const bool everyFrame = settings.update == Update::EveryFrame;
+  if (!everyFrame && maps.key == key) return maps.texture;
+  const auto start = std::chrono::steady_clock::now();
+  built.draws = renderMaps(world, frusta, settings, maps.texture);
+  built.rendered = true;
+  maps.key = std::move(key);
+  if (!everyFrame) {
+    // A one-time cost: wait for llvmpipe (or the GPU) to finish the maps so that the time is
+    // the render's, not just its submission.
+    gl::glFinish();
+    built.ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+  return maps.texture;
+}
 
 bool boxOutsideFrustum(const Aabb& box, const mat4& viewProj) {
   // The six clip planes are linear in homogeneous clip space (-w <= x, y <= w, 0 <= z <= w for

@@ -21,6 +21,8 @@ constexpr std::array<std::pair<const char*, Filter>, 4> kFilters{{{"none", Filte
                                                                   {"pcf", Filter::Pcf},
                                                                   {"poisson", Filter::Poisson},
                                                                   {"pcss", Filter::Pcss}}};
+constexpr std::array<std::pair<const char*, Update>, 2> kUpdates{
+    {{"static", Update::Static}, {"every_frame", Update::EveryFrame}}};
 
 template <class Enum, std::size_t N>
 std::vector<std::string> namesOf(const std::array<std::pair<const char*, Enum>, N>& table) {
@@ -71,6 +73,9 @@ ParamSchema schema() {
                 "PCSS: directional light angular diameter, radians (the sun's)"),
       P::number("max_radius", 32.0, 1.0, 256.0,
                 "PCSS: cap of the blocker search and penumbra radius, texels"),
+      P::choice("update", "static", namesOf(kUpdates),
+                "static: maps rendered once per world, again only when the lights, casters or map "
+                "settings change (a one-time cost); every_frame: rendered in every frame"),
   };
 }
 
@@ -91,6 +96,7 @@ Settings readSettings(const PassParams& p) {
   s.lightFraction = float(p.number("light_fraction"));
   s.lightAngle = float(p.number("light_angle"));
   s.maxRadius = float(p.number("max_radius"));
+  s.update = parseEnum(p, "update", kUpdates);
   if (s.kernel % 2 == 0)
     p.fail("kernel", "kernel must be odd (got " + std::to_string(s.kernel) +
                          "): an N x N PCF kernel is centred on the receiver's texel");

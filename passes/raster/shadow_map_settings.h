@@ -9,6 +9,9 @@ namespace diptych::shadowmap {
 // Values match the BIAS_* / FILTER_* constants of shaders/shadow_map_lookup.frag.
 enum class Bias { None = 0, Constant, Slope, NormalOffset, ReceiverPlane, Adaptive };
 enum class Filter { None = 0, Pcf, Poisson, Pcss };
+// When the maps are rendered: Static = once per world and again only when their key changes
+// (ShadowMapGl::mapsFor); EveryFrame = every frame, as before caching.
+enum class Update { Static = 0, EveryFrame };
 
 // The values of schema()'s parameters (their defaults and docs are there).
 struct Settings {
@@ -19,6 +22,7 @@ struct Settings {
   Filter filter = Filter::None;
   int kernel = 0, taps = 0;
   float radius = 0, lightFraction = 0, lightAngle = 0, maxRadius = 0;
+  Update update = Update::Static;
 };
 
 // The shadow_map pass's parameters: names, ranges, defaults, doc lines.

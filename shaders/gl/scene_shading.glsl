@@ -16,7 +16,7 @@ struct GpuMaterial {
   vec4 alphaMask;       // layer of uSceneAlphaMasks (-1: none), width, height, flags
   vec4 baseMetallic;    // glTF model: base colour, metallic
   vec4 tintRoughness;   // KHR_materials_specular colour, roughness
-  vec4 modelTransSpec;  // SHADING_MODEL_*, transmission, specular weight, unused
+  vec4 modelTransSpec;  // SHADING_MODEL_*, transmission, specular weight, gates (sceneHitMay*)
   // --- textures (engine/gl/shading_buffers.cpp packMaterial; -1: none) ---
   vec4 texColorEmitMrAo;      // base colour, emission, metallic-roughness, occlusion textures
   vec4 texNormalScales;       // normal texture, normal scale, occlusion strength, transmission
@@ -272,6 +272,21 @@ bool sceneLightCastsShadows(int i) { return sceneLights[i].directionShadow.w > 0
 
 int sceneInstanceMaterial(int instance) { return sceneInstances[instance].x - 1; }
 uint sceneInstanceFirstTriangle(int instance) { return uint(sceneInstances[instance].y); }
+
+// Whether the material of a hits texel can have a reflection (`lobe`: as hasReflection) or a
+// transmission signal at any of its points (bits packed by engine/gl/shading_buffers.cpp from
+// shading::materialHas*): false means hasReflection / hasTransmission is false at every point,
+// so a producer writes its zero without rebuilding the surface (as passes/rt/rt_secondary.cpp).
+bool sceneHitMayReflect(uvec4 hits, bool lobe) {
+  if (hits.x == 0u) return false;
+  int gates = int(sceneMaterials[sceneInstanceMaterial(int(hits.x) - 1) + 1].modelTransSpec.w);
+  return (gates & (lobe ? 2 : 1)) != 0;
+}
+bool sceneHitMayTransmit(uvec4 hits) {
+  if (hits.x == 0u) return false;
+  int gates = int(sceneMaterials[sceneInstanceMaterial(int(hits.x) - 1) + 1].modelTransSpec.w);
+  return (gates & 4) != 0;
+}
 
 // A point on the scene named by a visibility texel (instance + 1, primitive, u bits, v bits).
 struct SceneSurface {

@@ -69,15 +69,55 @@ TEST(MaterialGates, TheGltfModelDecidesNotTheLectureMapping) {
   EXPECT_FALSE(shading::materialHasTransmission(ground));
 }
 
+// Pixels per material name, and how many of them have a non-zero reflection / transmission,
+// after one frame of gbuffer + the two producers.
+struct Counts {
+  std::map<std::string, int> pixels, reflected, transmitted;
+};
+Counts countSignals(const Scene& scene, const std::string& reflection,
+                    const std::string& transmission);
+
 // The exact producers follow the same gate: rt_reflection leaves the Glossy sphere at 0 and
 // traces the Ground, rt_transmission traces the Glass.
 TEST(MaterialGates, RtProducersTraceWhatTheModelWeights) {
+  Counts c = countSignals(editedScene(), "rt_reflection", "rt_transmission");
+  ASSERT_GT(c.pixels["Glossy"], 50);
+  ASSERT_GT(c.pixels["Ground"], 500);
+  ASSERT_GT(c.pixels["Glass"], 50);
+  EXPECT_EQ(c.reflected["Glossy"], 0);
+  EXPECT_GT(c.reflected["Ground"], c.pixels["Ground"] / 2);
+  EXPECT_GT(c.transmitted["Glass"], c.pixels["Glass"] / 2);
+  EXPECT_EQ(c.transmitted["Ground"], 0);
+}
+
+// The GL producers decide by the material before rebuilding the surface (the gate bits packed
+// by engine/gl/shading_buffers.cpp, scene_shading.glsl sceneHitMay*): the same pixels as the
+// exact producers, in particular the Ground (k_ps = 0, yet the glTF model reflects) keeps its
+// environment reflection, with GGX-prefiltered levels (the lobe gate) and without.
+TEST(MaterialGates, GlProducersGateByTheModelBeforeRebuildingTheSurface) {
   const Scene scene = editedScene();
+  for (const char* reflection : {"env_cube", "env_cube:prefilter=false"}) {
+    SCOPED_TRACE(reflection);
+    Counts c = countSignals(scene, reflection, "sorted_blend");
+    ASSERT_GT(c.pixels["Ground"], 500);
+    EXPECT_EQ(c.reflected["Glossy"], 0);
+    EXPECT_GT(c.reflected["Ground"], c.pixels["Ground"] / 2);
+    EXPECT_GT(c.transmitted["Glass"], c.pixels["Glass"] / 2);
+    EXPECT_EQ(c.transmitted["Ground"], 0);
+  }
+}
+
+Counts countSignals(const Scene& scene, const std::string& reflection,
+                    const std::string& transmission) {
+  nlohmann::json reflectionPass = {{"name", "refl"}, {"inputs", {{"hits", "gbuffer.hits"}}}};
+  const auto colon = reflection.find(':');
+  reflectionPass["type"] = reflection.substr(0, colon);
+  if (colon != std::string::npos) reflectionPass["params"] = {{"prefilter", false}};
   const nlohmann::json recipe = {
       {"passes",
        {{{"name", "gbuffer"}, {"type", "gbuffer"}},
-        {{"name", "refl"}, {"type", "rt_reflection"}, {"inputs", {{"hits", "gbuffer.hits"}}}},
-        {{"name", "trans"}, {"type", "rt_transmission"}, {"inputs", {{"hits", "gbuffer.hits"}}}}}},
+        reflectionPass,
+        {{"name", "trans"}, {"type", transmission}, {"inputs", {{"hits", "gbuffer.hits"}}}}}},
       {"outputs", {"refl.reflection", "trans.transmission", "gbuffer.hits"}}};
   const FrameSettings frame{.width = 96, .height = 64, .camera = scene.camera};
   const CompiledGraph graph =
@@ -88,7 +128,8 @@ TEST(MaterialGates, RtProducersTraceWhatTheModelWeights) {
   const CpuImage& hits = executor.output("gbuffer.hits");
   const CpuImage& refl = executor.output("refl.reflection");
   const CpuImage& trans = executor.output("trans.transmission");
-  std::map<std::string, int> pixels, reflected, transmitted;
+  Counts c;
+  auto& [pixels, reflected, transmitted] = c;
   for (int y = 0; y < frame.height; ++y)
     for (int x = 0; x < frame.width; ++x) {
       const auto texel = hitsTexel(hits, x, y);
@@ -102,13 +143,7 @@ TEST(MaterialGates, RtProducersTraceWhatTheModelWeights) {
       if (refl.f(x, y, 0) + refl.f(x, y, 1) + refl.f(x, y, 2) > 0.f) ++reflected[name];
       if (trans.f(x, y, 0) + trans.f(x, y, 1) + trans.f(x, y, 2) > 0.f) ++transmitted[name];
     }
-  ASSERT_GT(pixels["Glossy"], 50);
-  ASSERT_GT(pixels["Ground"], 500);
-  ASSERT_GT(pixels["Glass"], 50);
-  EXPECT_EQ(reflected["Glossy"], 0);
-  EXPECT_GT(reflected["Ground"], pixels["Ground"] / 2);
-  EXPECT_GT(transmitted["Glass"], pixels["Glass"] / 2);
-  EXPECT_EQ(transmitted["Ground"], 0);
+  return c;
 }
 
 }  // namespace

@@ -89,7 +89,7 @@ std::string csvOf(const nlohmann::json& results) {
       if (std::find(signal.begin(), signal.end(), k) == signal.end()) signal.push_back(k);
   std::string csv = "index";
   for (const auto& k : keys) csv += "," + k;
-  csv += ",producer_ms,total_ms,texel_world,incidence_deg";
+  csv += ",producer_ms,total_ms,one_time_ms,texel_world,incidence_deg";
   for (const auto& k : signal) csv += "," + k;
   csv += "\n";
   for (const auto& p : results["points"]) {
@@ -98,7 +98,8 @@ std::string csvOf(const nlohmann::json& results) {
       const auto& v = p["params"][k];
       csv += "," + (v.is_string() ? v.get<std::string>() : v.dump());
     }
-    csv += fmt::format(",{},{},{},{}", p["producer_ms"].dump(), p["total_ms"].dump(),
+    csv += fmt::format(",{},{},{},{},{}", p["producer_ms"].dump(), p["total_ms"].dump(),
+                       p.value("one_time_total_ms", nlohmann::json(0.0)).dump(),
                        p["geometry"]["texel_world"].dump(), p["geometry"]["incidence_deg"].dump());
     for (const auto& k : signal)
       csv += "," + (p["signal"].contains(k) ? p["signal"][k].dump() : "");
@@ -266,12 +267,25 @@ nlohmann::json runSweep(const SweepOptions& o) {
       stateKey = statePart.dump();
     }
     const Recipe recipe = pointRecipe(base, passPart);
+    const std::map<std::string, double> oneTimeBefore = state->world->oneTimeMs;
     const GraphRun run = runGraph(recipe, *state->world, frame, {signal}, o.warmup, o.frames);
     const std::string node = signal.substr(0, signal.find('.'));
+    // What this point built once (a static shadow map at this point's resolution, ...): outside
+    // the frame medians, so a resolution sweep shows the cost of resolution here.
+    nlohmann::json oneTime = nlohmann::json::object();
+    double oneTimeTotal = 0;
+    for (const auto& [what, ms] : state->world->oneTimeMs) {
+      const auto it = oneTimeBefore.find(what);
+      const double paid = ms - (it == oneTimeBefore.end() ? 0.0 : it->second);
+      if (paid > 0) oneTime[what] = paid;
+      oneTimeTotal += std::max(paid, 0.0);
+    }
     nlohmann::json row = {{"index", int(i)},
                           {"params", point},
                           {"producer_ms", run.passMs.value(node, 0.0)},
                           {"total_ms", run.totalMs},
+                          {"one_time_ms", oneTime},
+                          {"one_time_total_ms", oneTimeTotal},
                           {"pass_ms", run.passMs}};
     const CpuImage& mine = run.outputs.at(signal);
     const CpuImage& exact = state->exact.outputs.at(state->exactSignal);

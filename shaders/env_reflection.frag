@@ -2,16 +2,17 @@
 // reflective material, the environment radiance along r = reflect(-v, n_shading); for a glTF
 // material with prefiltered levels (uMaxLod > 0), the GGX lobe's prefiltered radiance at
 // lod = roughness uMaxLod (split sum, Karis 2013; passes/raster/env_prefilter.h), alpha 2.
-// One of ENV_CUBE, ENV_SPHERE, ENV_EQUIRECT is defined by the pass.
+// One of ENV_CUBE, ENV_SPHERE, ENV_EQUIRECT is defined by the pass. A full-screen fragment pass
+// into the cleared signal, not a compute pass: a pixel whose material cannot reflect is
+// discarded before any surface work, and llvmpipe skips the rest of the shader for blocks whose
+// pixels are all discarded, which it does not for a divergent branch (docs/benchmarks.md).
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
 #include "gl/gbuffer_surface.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
-
 layout(binding = 0) uniform usampler2D uHits;  // gbuffer.hits (RGBA32UI)
-layout(binding = 0, rgba32f) writeonly uniform image2D uReflection;
+layout(location = 0) out vec4 outReflection;
 #ifdef ENV_CUBE
 layout(binding = 1) uniform samplerCube uEnvironment;
 #else
@@ -44,12 +45,14 @@ vec3 environmentAlong(vec3 r, float lod) {
 }
 
 void main() {
-  ivec2 size = imageSize(uReflection);
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (p.x >= size.x || p.y >= size.y) return;
-  SceneSurface s = gbufferSurface(p, texelFetch(uHits, p, 0));
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  uvec4 hits = texelFetch(uHits, p, 0);
+  // The material decides first: only pixels of a material that can reflect rebuild the surface;
+  // the others keep the cleared 0.
+  if (!sceneHitMayReflect(hits, uMaxLod > 0.0)) discard;
   vec4 result = vec4(0.0);
-  if (s.hit) {
+  {
+    SceneSurface s = gbufferSurface(p, hits);
     ShadingMaterial m = sceneMaterial(s.material, s.uv);
     bool lobe = uMaxLod > 0.0 && m.model == SHADING_MODEL_GLTF;
     if (hasReflection(m, lobe)) {
@@ -61,5 +64,5 @@ void main() {
       result = vec4(environmentAlong(r, lod), lobe ? 2.0 : 1.0);
     }
   }
-  imageStore(uReflection, p, result);
+  outReflection = result;
 }
