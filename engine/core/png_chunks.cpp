@@ -51,7 +51,8 @@ std::string pngChunkProblem(std::istream& in, std::uint64_t size) {
              std::to_string(end - offset) + " bytes, the file has " +
              std::to_string(size - offset) + " left";
     if (type == "'IEND'") return "";
-    in.ignore(std::streamsize(length) + 4);
+    // Skip the data and CRC without reading them (they lie inside the file: checked above).
+    in.seekg(std::streamoff(length) + 4, std::ios::cur);
     offset = end;
   }
 }

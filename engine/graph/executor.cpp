@@ -109,6 +109,34 @@ void GraphExecutor::clearTimings() {
   frameMs_.clear();
 }
 
+GraphExecutor::MeasuredRun GraphExecutor::runMeasured(
+    int warmup, int frames, const std::function<void(int, int)>& onFrame) {
+  MeasuredRun run;
+  const std::map<std::string, double> before = world_.oneTimeMs;
+  int total = warmup + frames;
+  for (int f = 0; f < total; ++f) {
+    if (f == warmup) clearTimings();
+    const std::map<std::string, double> frameBefore = world_.oneTimeMs;
+    runFrame();
+    if (f == 0)
+      for (const NodeTiming& t : timings_)
+        if (!t.cpuMs.empty())
+          run.firstFrameMs += t.cpuMs.back() + (t.glWaitMs.empty() ? 0.0 : t.glWaitMs.back());
+    if (f >= warmup && world_.oneTimeMs != frameBefore && !run.repeatedAFrame) {
+      run.repeatedAFrame = true;
+      clearTimings();
+      total = f + 1 + frames;
+    }
+    if (onFrame) onFrame(f + 1, total);
+  }
+  for (const auto& [what, ms] : world_.oneTimeMs) {
+    const auto it = before.find(what);
+    const double paid = ms - (it == before.end() ? 0.0 : it->second);
+    if (paid > 0) run.oneTimeMs[what] = paid;
+  }
+  return run;
+}
+
 const std::vector<NodeTiming>& GraphExecutor::timings() const {
   readQueries();
   return timings_;

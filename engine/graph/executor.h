@@ -2,6 +2,7 @@
 // Runs a compiled graph frame after frame: allocates pooled storage once, executes every node
 // in order, checks that passes touch only what they declared, and times every node (CPU clock
 // for all, GL timer queries for GL work and transfers, read after the frame without stalling).
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -37,6 +38,20 @@ class GraphExecutor {
 
   void runFrame();
   void clearTimings();  // drop warm-up samples
+
+  // What runMeasured did besides its frames.
+  struct MeasuredRun {
+    double firstFrameMs = 0;  // CPU time of the first frame (every node, GL waits included)
+    std::map<std::string, double> oneTimeMs;  // RenderWorld::oneTimeMs added during the run
+    bool repeatedAFrame = false;              // see runMeasured
+  };
+  // Runs `warmup` frames, drops their timings, then `frames` measured ones. A measured frame in
+  // which a pass did one-time work for the world (RenderWorld::oneTimeMs grew: a static shadow
+  // map, a prefiltered environment; with no warm-up the first frame does) is not a steady
+  // frame: its samples are dropped and the measured frames start again, once, so that work is
+  // reported apart and never inside a frame median. `onFrame(done, total)` after each frame.
+  MeasuredRun runMeasured(int warmup, int frames,
+                          const std::function<void(int, int)>& onFrame = nullptr);
   // Reads any GL timer results not read yet (they are read every kQueryBatch frames and here).
   const std::vector<NodeTiming>& timings() const;
   // Wall time of each measured frame, from its first node to its last.

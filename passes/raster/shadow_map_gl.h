@@ -60,13 +60,15 @@ class ShadowMapGl {
   gl::Framebuffer depthFbo_, lookupFbo_;
   gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle
   gl::Buffer layers_, lights_;
-  // One D32F array per (resolution, layers, slope factor, slope units): passes of one graph
-  // with other map settings keep their own maps. `key` is what the contents were rendered for.
+  // One D32F array per (resolution, layers); `key` is what its contents were rendered for (the
+  // slope offset among them). A sweep of the slope offset re-renders one array instead of
+  // keeping one per value (a 4096 cube is 384 MiB); two passes of one graph that differ only in
+  // their slope offset re-render it in turn.
   struct Maps {
     gl::Texture texture;
     std::vector<float> key;
   };
-  std::map<std::array<float, 4>, Maps> maps_;
+  std::map<std::array<int, 2>, Maps> maps_;
   std::vector<vec2> poisson_;
   std::vector<Aabb> meshBounds_;  // world bounds of each GlSceneBuffers mesh
 };

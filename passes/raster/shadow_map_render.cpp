@@ -34,17 +34,16 @@ const gl::Texture& ShadowMapGl::mapsFor(RenderWorld& world, const std::vector<Li
   const int layers = std::max(1, totalLayers(frusta));
   // glPolygonOffset is baked into the depth: only slope bias renders differently.
   const bool slope = settings.bias == Bias::Slope;
-  Maps& maps = maps_[{float(settings.resolution), float(layers), slope ? settings.slopeFactor : 0.f,
-                      slope ? settings.slopeUnits : 0.f}];
+  Maps& maps = maps_[{settings.resolution, layers}];
   if (!maps.texture) {
     maps.texture = gl::Texture::create2DArray(gl::TextureFormat::D32F, settings.resolution,
                                               settings.resolution, layers);
     maps.texture.setLabel("shadow_map.maps");
   }
-  // The key: every layer's view-projection (it encodes the light and the bounds it is fitted
-  // to), then per mesh of the scene buffers whether it casts and how alpha is drawn. The world
-  // geometry itself is fixed for the RenderWorld this object lives in.
-  std::vector<float> key;
+  // The key: the slope offset, every layer's view-projection (it encodes the light and the bounds
+  // it is fitted to), then per mesh of the scene buffers whether it casts and how alpha is drawn.
+  // The world geometry itself is fixed for the RenderWorld this object lives in.
+  std::vector<float> key = {slope ? settings.slopeFactor : 0.f, slope ? settings.slopeUnits : 0.f};
   for (const LightFrustum& f : frusta) {
     key.push_back(float(f.kind));
     for (const mat4& m : f.viewProj)

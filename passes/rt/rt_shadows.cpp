@@ -5,6 +5,7 @@
 
 #include <bit>
 
+#include "engine/core/check.h"
 #include "engine/graph/render_world.h"
 #include "engine/rt/ray_offset.h"
 #include "engine/rt/shadow_rays.h"
@@ -56,6 +57,10 @@ void RtShadowsPass::execute(PassContext& c) {
   const std::vector<float> visibility =
       traceShadowRays(rt, lights, receivers_, areaSamples_, pixelOf_);
   out.fill(vec4(1.f));
+  // The row-pointer writes below assume one float per texel, the frame's size, a layer a light.
+  DIPTYCH_CHECK(out.channels() == 1 && out.desc.width == w && out.desc.height == h &&
+                    out.desc.layers >= int(lights.size()),
+                "rt_shadows: visibility is not R32F of the frame's size with a layer per light");
   for (std::size_t l = 0; l < lights.size(); ++l) {
     // Layer l is R32F: pixel p's texel is word p of the layer.
     std::uint32_t* layer = out.row(0, int(l));

@@ -273,16 +273,10 @@ void runCompare(const CompareOptions& o) {
       tracedTriangles += m.indices.size() / 3;
       tracedBytes += 12 * (m.positions.size() + m.indices.size() / 3);
     }
-    const std::map<std::string, double> oneTimeBefore = variantWorld.oneTimeMs;
     const GraphRun run = runGraph(recipe, variantWorld, frame, outs, o.warmup, o.frames);
     // Work this variant did once for the world (a static shadow map, a prefiltered environment),
     // outside its frame medians. Variants share the world: what an earlier one built is reused.
-    nlohmann::json variantOneTime = nlohmann::json::object();
-    for (const auto& [what, ms] : variantWorld.oneTimeMs) {
-      const auto it = oneTimeBefore.find(what);
-      const double paid = ms - (it == oneTimeBefore.end() ? 0.0 : it->second);
-      if (paid > 0) variantOneTime[what] = paid;
-    }
+    const nlohmann::json variantOneTime = run.oneTimeMs;
     ReportVariant rv;
     rv.name = v.name;
     rv.image = run.outputs.at(recipe.outputs.front()).toImage();

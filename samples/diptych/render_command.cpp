@@ -152,12 +152,9 @@ void runRender(const RenderOptions& o) {
   const nlohmann::json devices = describeDevices(context.get());
   GraphExecutor executor(graph, world);
   const bool tty = isatty(fileno(stderr));
-  const int total = o.warmup + o.frames;
-  for (int f = 0; f < total; ++f) {
-    if (f == o.warmup) executor.clearTimings();
-    executor.runFrame();
-    if (tty) std::fprintf(stderr, "\rframe %d/%d%s", f + 1, total, f + 1 == total ? "\n" : "");
-  }
+  executor.runMeasured(o.warmup, o.frames, [&](int done, int total) {
+    if (tty) std::fprintf(stderr, "\rframe %d/%d%s", done, total, done == total ? "\n" : "");
+  });
 
   // The first output goes to --out; any further one beside it, named after the resource
   // (out.png + "shade.variance" -> out.shade.variance.png). All are checked before any is

@@ -15,7 +15,7 @@ string(FIND "${LAST_STDERR}" "sweep: 12/12" pos)
 if(pos EQUAL -1)
   message(FATAL_ERROR "no progress line 12/12:\n${LAST_STDERR}")
 endif()
-execute_process(COMMAND /usr/bin/python3 -c "
+expect_python("sweep results" [=[
 import csv, json, sys
 r = json.load(open(sys.argv[1]))
 rows = list(csv.DictReader(open(sys.argv[2])))
@@ -35,10 +35,7 @@ assert 'one_time_ms' in rows[0]
 # Interrupt: keep the first 7 points, as a killed run leaves them.
 r['points'] = r['points'][:7]
 json.dump(r, open(sys.argv[1], 'w'))
-" "${WORK_DIR}/sw/results.json" "${WORK_DIR}/sw/results.csv" RESULT_VARIABLE rc ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "results check failed: ${err}")
-endif()
+]=] "${WORK_DIR}/sw/results.json" "${WORK_DIR}/sw/results.csv")
 expect_success(sweep-resume ARGS ${args} FILES sw/results.json)
 string(FIND "${LAST_STDERR}" "12 points, 7 resumed" pos)
 string(REGEX MATCHALL "exact reference" refs "${LAST_STDERR}")
@@ -47,14 +44,11 @@ list(LENGTH refs count)
 if(pos EQUAL -1 OR NOT count EQUAL 1)
   message(FATAL_ERROR "resume did not reuse the 7 written points:\n${LAST_STDERR}")
 endif()
-execute_process(COMMAND /usr/bin/python3 -c "
+expect_python("resumed sweep results" [=[
 import json, sys
 r = json.load(open(sys.argv[1]))
 assert [p['index'] for p in r['points']] == list(range(12)), [p['index'] for p in r['points']]
-" "${WORK_DIR}/sw/results.json" RESULT_VARIABLE rc ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "resumed results wrong: ${err}")
-endif()
+]=] "${WORK_DIR}/sw/results.json")
 # Another sweep into the same folder is refused, not mixed in.
 expect_failure(sweep-other-spec EXPECT "results.json" "different sweep"
                ARGS sweep "${scene}" --slot visibility=shadow_map --vary resolution=64 --out sw)
@@ -109,7 +103,7 @@ list(LENGTH refs count)
 if(NOT count EQUAL 4)
   message(FATAL_ERROR "expected 4 exact references (2 sizes x 2 cameras), got ${count}:\n${LAST_STDERR}")
 endif()
-execute_process(COMMAND /usr/bin/python3 -c "
+expect_python("view sweep results" [=[
 import csv, json, struct, sys
 r = json.load(open(sys.argv[1] + '/results.json'))
 rows = list(csv.DictReader(open(sys.argv[1] + '/results.csv')))
@@ -126,10 +120,7 @@ def seen(p):
     s = p['signal']
     return (s['lit_outside'], s['shadow_outside'], s['misclassified'])
 assert seen(r['points'][2]) != seen(r['points'][3]), (seen(r['points'][2]), seen(r['points'][3]))
-" "${WORK_DIR}/view" RESULT_VARIABLE rc ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "view sweep results wrong: ${err}")
-endif()
+]=] "${WORK_DIR}/view")
 
 # The output folder is locked while a sweep writes into it: a second run (here flock(1) holds
 # the lock, as a running sweep would) stops with one error instead of interleaving rows.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <filesystem>
 #include <initializer_list>
 #include <random>
 #include <vector>
@@ -46,13 +47,16 @@ class RandomInputs {
   float extremeShare_;
 };
 
-// The cases, written `inStride` floats apart into buffer 0, run by `program` (one invocation per
-// case, local size 64, uniform uCount) into buffer 1, `outStride` floats apart; returns buffer 1.
-// Fails the calling test if GL reported an error.
+// The cases, written `inStride` floats apart into buffer 0, run by the compute shader `shader`
+// with `defines` (one invocation per case, local size 64, uniform uCount) into buffer 1,
+// `outStride` floats apart; returns buffer 1. Fails the calling test if GL reported an error,
+// compiling the shader included.
 template <typename Case>
 std::vector<float> dispatchCases(const std::vector<Case>& cases, int inStride, int outStride,
-                                 const gl::Program& program) {
+                                 const std::filesystem::path& shader,
+                                 const std::vector<gl::ShaderDefine>& defines = {}) {
   const int errorsBefore = gl::glDebugErrorCount();
+  const gl::Program program = gl::loadProgram({shader}, defines);
   const int count = int(cases.size());
   std::vector<float> in(std::size_t(count) * inStride, 0.f);
   for (int i = 0; i < count; ++i) cases[std::size_t(i)].write(&in[std::size_t(i) * inStride]);

@@ -121,8 +121,7 @@ TEST(PbrParity, GlslAndCppAgreeOnRandomGrazingAndExtremeRoughness) {
   for (int i = 0; i < kCases; ++i) cases.push_back(gen.next());
   const std::vector<float> gpu = testing::dispatchCases(
       cases, kInStride, kOutStride,
-      gl::loadProgram({std::filesystem::path(DIPTYCH_TESTS_DIR) / "unit/shaders/pbr_parity.comp"},
-                      {}));
+      std::filesystem::path(DIPTYCH_TESTS_DIR) / "unit/shaders/pbr_parity.comp");
 
   std::map<std::string, double> worst, worstConditioned;
   std::map<std::string, int> failures;

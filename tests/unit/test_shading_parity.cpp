@@ -179,8 +179,8 @@ TEST(ShadingParity, GlslAndCppAgreeOnRandomAndExtremeInputs) {
   CaseGenerator gen(20240611u);
   std::vector<Case> cases;
   for (int i = 0; i < kCases; ++i) cases.push_back(gen.next());
-  const std::vector<float> gpu = testing::dispatchCases(
-      cases, kInStride, kOutStride, gl::loadProgram({kShader}, {{"SHADING_CASES", ""}}));
+  const std::vector<float> gpu =
+      testing::dispatchCases(cases, kInStride, kOutStride, kShader, {{"SHADING_CASES", ""}});
 
   std::map<std::string, double> worst;
   std::map<std::string, int> failures;

@@ -15,14 +15,9 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
   GraphRun run;
   run.graph = compileGraph(recipe, builtinPasses(), world.scene(), frame, outputs);
   GraphExecutor ex(run.graph, world);
-  for (int f = 0; f < warmup + frames; ++f) {
-    if (f == warmup) ex.clearTimings();
-    ex.runFrame();
-    if (f == 0)
-      for (const NodeTiming& t : ex.timings())
-        if (!t.cpuMs.empty())
-          run.firstFrameMs += t.cpuMs.back() + (t.glWaitMs.empty() ? 0.0 : t.glWaitMs.back());
-  }
+  const GraphExecutor::MeasuredRun measured = ex.runMeasured(warmup, frames);
+  run.firstFrameMs = measured.firstFrameMs;
+  run.oneTimeMs = measured.oneTimeMs;
   run.timings = ex.timings();
   for (std::size_t n = 0; n < run.graph.nodes.size(); ++n) {
     const NodeTiming& t = run.timings[n];

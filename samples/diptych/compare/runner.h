@@ -20,6 +20,8 @@ struct GraphRun {
   // The first frame's CPU time (every node): it carries one-time work (shader compilation, pool
   // allocation, first-use caches) that the median of the measured frames leaves out.
   double firstFrameMs = 0;
+  // One-time work the run did for the world (a static shadow map, ...): never in a median.
+  std::map<std::string, double> oneTimeMs;
   double rays = 0;                                   // rays counted by the passes in the last frame
   nlohmann::json passMs = nlohmann::json::object();  // node name -> median ms (runner.cpp: GL
                                                      // passes CPU + GL, transfers GL)

@@ -267,19 +267,13 @@ nlohmann::json runSweep(const SweepOptions& o) {
       stateKey = statePart.dump();
     }
     const Recipe recipe = pointRecipe(base, passPart);
-    const std::map<std::string, double> oneTimeBefore = state->world->oneTimeMs;
     const GraphRun run = runGraph(recipe, *state->world, frame, {signal}, o.warmup, o.frames);
     const std::string node = signal.substr(0, signal.find('.'));
     // What this point built once (a static shadow map at this point's resolution, ...): outside
-    // the frame medians, so a resolution sweep shows the cost of resolution here.
-    nlohmann::json oneTime = nlohmann::json::object();
+    // the frame medians (runMeasured), so a resolution sweep shows the cost of resolution here.
+    const nlohmann::json oneTime = run.oneTimeMs;
     double oneTimeTotal = 0;
-    for (const auto& [what, ms] : state->world->oneTimeMs) {
-      const auto it = oneTimeBefore.find(what);
-      const double paid = ms - (it == oneTimeBefore.end() ? 0.0 : it->second);
-      if (paid > 0) oneTime[what] = paid;
-      oneTimeTotal += std::max(paid, 0.0);
-    }
+    for (const auto& [what, ms] : run.oneTimeMs) oneTimeTotal += ms;
     nlohmann::json row = {{"index", int(i)},
                           {"params", point},
                           {"producer_ms", run.passMs.value(node, 0.0)},
