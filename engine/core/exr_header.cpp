@@ -1,7 +1,8 @@
 #include "engine/core/exr_header.h"
 
 #include <array>
-#include <streambuf>
+
+#include "engine/core/memory_stream.h"
 
 namespace diptych {
 namespace {
@@ -11,14 +12,6 @@ constexpr std::uint32_t kLongNames = 0x400, kMultiPart = 0x1000;
 // Far above any real file (OpenEXR's standard attributes are about 20) and low enough that a
 // header of empty attributes is rejected long before it costs anything.
 constexpr int kMaxAttributes = 1 << 16;
-
-// A read-only view of memory as a stream (ignore/get only: no seeking is needed).
-struct MemoryBuffer : std::streambuf {
-  MemoryBuffer(const void* data, std::size_t size) {
-    char* p = static_cast<char*>(const_cast<void*>(data));
-    setg(p, p, p + size);
-  }
-};
 
 std::uint32_t littleEndian32(const unsigned char* b) {
   return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |

@@ -12,6 +12,7 @@
 #include "engine/core/error.h"
 #include "engine/core/exr_header.h"
 #include "engine/core/input_file.h"
+#include "engine/core/png_chunks.h"
 #include "engine/core/tonemap.h"
 
 namespace diptych {
@@ -39,8 +40,12 @@ Image readFrom(OIIO::ImageInput* in, const std::string& name) {
                          "; only 2D images are supported");
   Image img(spec.width, spec.height, spec.nchannels);
   bool ok = false;
-  if (spec.format == OIIO::TypeDesc::FLOAT || !spec.channelformats.empty()) {
+  if (!spec.channelformats.empty()) {
+    // Channels of different formats (EXR): only OpenImageIO's converting read handles them.
     ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data());
+  } else if (spec.format == OIIO::TypeDesc::FLOAT) {
+    // Already float (HDR, float EXR/TIFF): a native read, for the same 64 MB reason as below.
+    ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UNKNOWN, img.pixels.data());
   } else {
     // Native bytes, then our own conversion: OpenImageIO 2.4's converting read_scanlines
     // allocates a 64 MB chunk whatever the image's size (imageinput.cpp, "around 64 MB"), which
@@ -67,16 +72,22 @@ Image readImage(const std::filesystem::path& path) {
   const std::uintmax_t size = checkInputFile(path, kMaxBinaryFileBytes);
   {
     std::ifstream file(path, std::ios::binary);
-    if (const std::string problem = exrHeaderProblem(file, size); !problem.empty())
-      throw InputError(path.string(), "", problem);
+    std::string problem = exrHeaderProblem(file, size);
+    if (problem.empty()) {
+      file.clear();
+      file.seekg(0);
+      problem = pngChunkProblem(file, size);
+    }
+    if (!problem.empty()) throw InputError(path.string(), "", problem);
   }
   auto in = OIIO::ImageInput::open(path.string());
   return readFrom(in.get(), path.string());
 }
 
 Image readImageFromMemory(const std::string& name, const void* data, std::size_t size) {
-  if (const std::string problem = exrHeaderProblem(data, size); !problem.empty())
-    throw InputError(name, "", problem);
+  std::string problem = exrHeaderProblem(data, size);
+  if (problem.empty()) problem = pngChunkProblem(data, size);
+  if (!problem.empty()) throw InputError(name, "", problem);
   OIIO::Filesystem::IOMemReader reader(data, size);
   auto in = OIIO::ImageInput::open(name, nullptr, &reader);
   return readFrom(in.get(), name);

@@ -13,11 +13,15 @@ namespace diptych {
 // kNoResource or that pass writes no such output; an InputError when its format differs. With
 // `glOnly`, the read holds only while the reader runs on GL: compile drops it from a pass placed
 // on the CPU (placement.h, dropGlOnlyReads), so it never costs a readback.
-ResourceId readCompanion(PassBuilder& builder, ResourceId of, const std::string& output,
-                         Format expected, bool glOnly);
+inline ResourceId readCompanion(PassBuilder& builder, ResourceId of, const std::string& output,
+                                Format expected, bool glOnly) {
+  return builder.readCompanion(of, output, expected, glOnly);
+}
 
 // Whether a live pass reads `id` or the frame outputs it (during execute); true outside the
 // frame graph's executor.
-bool consumed(PassContext& context, ResourceId id);
+inline bool consumed(const PassContext& context, ResourceId id) {
+  return context.consumed(id);
+}
 
 }  // namespace diptych

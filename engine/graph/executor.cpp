@@ -41,7 +41,7 @@ class ExecutionContext final : public PassContext {
     check(id, false);
     return ex_.graph_.resources[id].desc;
   }
-  bool consumed(ResourceId id) const {
+  bool consumed(ResourceId id) const override {
     check(id, false);
     const CompiledGraph& g = ex_.graph_;
     if (std::find(g.outputs.begin(), g.outputs.end(), id) != g.outputs.end()) return true;
@@ -84,11 +84,6 @@ class ExecutionContext final : public PassContext {
   const GraphPass& pass_;
   NodeTiming& timing_;
 };
-
-bool consumed(PassContext& context, ResourceId id) {
-  auto* execution = dynamic_cast<ExecutionContext*>(&context);
-  return !execution || execution->consumed(id);
-}
 
 GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world)
     : graph_(graph), world_(world), timings_(graph.nodes.size()) {

@@ -47,6 +47,12 @@ class PassBuilder {
   [[nodiscard]] virtual ResourceId modify(const std::string& slot, const std::string& output,
                                           Format expected) = 0;
   virtual void needs(SceneNeed need) = 0;
+  // Reads the output `output` of the pass that wrote `of`, without a recipe connection
+  // (companion.h says when and why); kNoResource outside the frame graph's compiler.
+  [[nodiscard]] virtual ResourceId readCompanion(ResourceId /*of*/, const std::string& /*output*/,
+                                                 Format /*expected*/, bool /*glOnly*/) {
+    return kNoResource;
+  }
 
   virtual const Scene& scene() const = 0;
   virtual const FrameSettings& frame() const = 0;
@@ -64,6 +70,9 @@ class PassContext {
   virtual const FrameSettings& frame() const = 0;
   // Work counters a pass reports (e.g. "rays"); summed into the timing table and exports.
   virtual void count(const std::string& counter, double amount) = 0;
+  // Whether a live pass reads `id` or the frame outputs it (companion.h); true outside the frame
+  // graph's executor, which is the safe answer: the output is written.
+  virtual bool consumed(ResourceId /*id*/) const { return true; }
 };
 
 class Pass {

@@ -28,3 +28,20 @@ string(FIND "${LAST_STDOUT}" "(cached)" pos)
 if(NOT pos EQUAL -1)
   message(FATAL_ERROR "an edited environment image reused the stale reference:\n${LAST_STDOUT}")
 endif()
+
+# A different build (here the same binary with one byte appended, which still runs) must not
+# reuse the reference the first one cached: the key covers the program's own bytes.
+expect_success(again ARGS ${run_args} FILES cmp/results.json)
+string(FIND "${LAST_STDOUT}" "(cached)" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "an unchanged scene did not reuse the cached reference:\n${LAST_STDOUT}")
+endif()
+file(COPY_FILE "${DIPTYCH}" "${WORK_DIR}/diptych-rebuilt")
+file(APPEND "${WORK_DIR}/diptych-rebuilt" "x")
+set(DIPTYCH "${WORK_DIR}/diptych-rebuilt")
+expect_success(rebuilt ARGS ${run_args} FILES cmp/results.json)
+string(FIND "${LAST_STDOUT}" "(cached)" pos)
+if(NOT pos EQUAL -1)
+  message(FATAL_ERROR "a different program binary reused the stale reference:\n${LAST_STDOUT}")
+endif()
+file(REMOVE "${WORK_DIR}/diptych-rebuilt")  # 100+ MB

@@ -12,11 +12,6 @@ mkdir -p "$work/corpus" "$work/crashes"
 seeds=()
 for d in "$@"; do [ -e "$d" ] && seeds+=("$d"); done
 dict=$(dirname "$0")/json.dict
-here=$(cd "$(dirname "$0")" && pwd)
-export LSAN_OPTIONS="suppressions=$here/lsan_suppressions.txt:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-case $harness in  # see lsan_suppressions.txt
-  *fuzz_image) export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}" ;;
-esac
 runs=()
 [ -n "${FUZZ_RUNS:-}" ] && runs=(-runs="$FUZZ_RUNS")
 exec "$harness" "${runs[@]}" -max_total_time="$seconds" -max_len=65536 -timeout="${FUZZ_TIMEOUT:-60}" -rss_limit_mb=4096 \

@@ -12,22 +12,16 @@
 #include <random>
 
 #include "engine/shading/bump.h"
+#include "tests/unit/bump_sinusoid.h"
 
 namespace diptych {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-constexpr float kA = 0.05f, kL = 2.f, kK = 1.5f;
-constexpr int kN = 256;
-
-float height(float u, float v) {
-  return kA * std::sin(2.f * kPi * u) * std::cos(2.f * kPi * v);
-}
+using namespace testing::bump;
 
 vec3 exactNormal(float u, float v) {
-  const float fu = kA * 2.f * kPi * std::cos(2.f * kPi * u) * std::cos(2.f * kPi * v);
-  const float fv = -kA * 2.f * kPi * std::sin(2.f * kPi * u) * std::sin(2.f * kPi * v);
-  return glm::normalize(vec3(-kL * kK * fu, -kL * kK * fv, kL * kL));
+  const vec2 f = heightGradient(u, v);
+  return glm::normalize(vec3(-kL * kK * f.x, -kL * kK * f.y, kL * kL));
 }
 
 Texture heightTexture() {

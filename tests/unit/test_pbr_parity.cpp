@@ -21,6 +21,7 @@
 #include "engine/gl/shader.h"
 #include "engine/shading/shading.h"
 #include "gl_test_context.h"
+#include "parity_support.h"
 #include "tests/support/test_paths.h"
 
 namespace diptych {
@@ -70,9 +71,9 @@ struct Case {
   }
 };
 
-class CaseGenerator {
+class CaseGenerator : testing::RandomInputs {
  public:
-  explicit CaseGenerator(unsigned seed) : rng_(seed) {}
+  explicit CaseGenerator(unsigned seed) : RandomInputs(seed, 0.15f) {}
 
   Case next() {
     Case c;
@@ -98,26 +99,9 @@ class CaseGenerator {
   }
 
  private:
-  float uniform(float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng_); }
-  bool chance(float p) { return uniform(0, 1) < p; }
-  float pick(std::initializer_list<float> extremes, float usual) {
-    if (!chance(0.15f)) return usual;
-    return *(extremes.begin() + int(uniform(0, float(extremes.size()))) % extremes.size());
-  }
-  vec3 unit() {
-    std::normal_distribution<float> g;
-    vec3 x(g(rng_), g(rng_), g(rng_));
-    return glm::length(x) > 0.f ? glm::normalize(x) : vec3(0.f, 1.f, 0.f);
-  }
   vec3 vector() {
     return unit() * (chance(0.05f) ? (chance(0.5f) ? 0.f : 1e30f) : uniform(0.1f, 3.f));
   }
-  vec3 grazing(vec3 n) {
-    const vec3 un = safeNormalize(n), t = safeNormalize(glm::cross(un, unit()));
-    if (glm::length(t) == 0.f || glm::length(un) == 0.f) return unit();
-    return glm::normalize(t + uniform(-1e-3f, 1e-3f) * un);
-  }
-  std::mt19937 rng_;
 };
 
 struct Group {
@@ -131,28 +115,14 @@ constexpr Group kGroups[] = {{"directResponse (pi f n.l)", 0, 3},
 
 TEST(PbrParity, GlslAndCppAgreeOnRandomGrazingAndExtremeRoughness) {
   gl::testing::osmesaContext();
-  const int errorsBefore = gl::glDebugErrorCount();
   constexpr int kCases = 20000;
   CaseGenerator gen(20261128u);
   std::vector<Case> cases;
-  std::vector<float> in(std::size_t(kCases) * kInStride, 0.f);
-  for (int i = 0; i < kCases; ++i) {
-    cases.push_back(gen.next());
-    cases.back().write(&in[std::size_t(i) * kInStride]);
-  }
-  const gl::Buffer inputs = gl::Buffer::create(in.size() * 4, in.data());
-  const gl::Buffer outputs = gl::Buffer::create(std::size_t(kCases) * kOutStride * 4);
-  const gl::Program program = gl::loadProgram(
-      {std::filesystem::path(DIPTYCH_TESTS_DIR) / "unit/shaders/pbr_parity.comp"}, {});
-  program.use();
-  program.set("uCount", kCases);
-  inputs.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  outputs.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  gl::glDispatchCompute(GLuint((kCases + 63) / 64), 1, 1);
-  gl::glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<float> gpu(std::size_t(kCases) * kOutStride);
-  outputs.download(0, gpu.size() * 4, gpu.data());
-  EXPECT_EQ(gl::glDebugErrorCount(), errorsBefore);
+  for (int i = 0; i < kCases; ++i) cases.push_back(gen.next());
+  const std::vector<float> gpu = testing::dispatchCases(
+      cases, kInStride, kOutStride,
+      gl::loadProgram({std::filesystem::path(DIPTYCH_TESTS_DIR) / "unit/shaders/pbr_parity.comp"},
+                      {}));
 
   std::map<std::string, double> worst, worstConditioned;
   std::map<std::string, int> failures;

@@ -28,6 +28,7 @@
 #include "engine/scene/load.h"
 #include "engine/shading/shading.h"
 #include "gl_test_context.h"
+#include "parity_support.h"
 #include "tests/support/test_paths.h"
 
 namespace diptych {
@@ -110,9 +111,9 @@ struct Case {
 // Random inputs, a share of them extreme: zero, tiny (1e-30) and huge (1e30) vectors, points on
 // the light, grazing n.l and n.v, exponent 0 and 1e4, intensities up to FLT_MAX, eta = 1 and
 // near-critical refraction, cosines outside [0, 1].
-class CaseGenerator {
+class CaseGenerator : testing::RandomInputs {
  public:
-  explicit CaseGenerator(unsigned seed) : rng_(seed) {}
+  explicit CaseGenerator(unsigned seed) : RandomInputs(seed, 0.1f) {}
 
   Case next() {
     Case c;
@@ -147,27 +148,8 @@ class CaseGenerator {
   }
 
  private:
-  float uniform(float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng_); }
-  bool chance(float p) { return uniform(0, 1) < p; }
-  // One of `extremes` 10% of the time, else `usual`.
-  float pick(std::initializer_list<float> extremes, float usual) {
-    if (!chance(0.1f)) return usual;
-    return *(extremes.begin() + int(uniform(0, float(extremes.size()))) % extremes.size());
-  }
-  vec3 unit() {
-    std::normal_distribution<float> g;
-    vec3 x(g(rng_), g(rng_), g(rng_));
-    return glm::length(x) > 0.f ? glm::normalize(x) : vec3(0.f, 1.f, 0.f);
-  }
   vec3 vector() { return unit() * pick({0.f, 1e-30f, 1e30f}, uniform(0.1f, 3.f)); }
   vec3 point() { return unit() * pick({0.f, 1e-20f, 1e30f}, uniform(0.f, 10.f)); }
-  // Nearly perpendicular to n: grazing by up to 1e-3 rad, on either side.
-  vec3 grazing(vec3 n) {
-    const vec3 un = safeNormalize(n), t = safeNormalize(glm::cross(un, unit()));
-    if (glm::length(t) == 0.f || glm::length(un) == 0.f) return unit();
-    return glm::normalize(t + uniform(-1e-3f, 1e-3f) * un);
-  }
-  std::mt19937 rng_;
 };
 
 // The spot cone factor a = saturate((cd - cosOuter) / (cosInner - cosOuter)) loses relative
@@ -193,27 +175,12 @@ constexpr Group kGroups[] = {
 
 TEST(ShadingParity, GlslAndCppAgreeOnRandomAndExtremeInputs) {
   gl::testing::osmesaContext();
-  const int errorsBefore = gl::glDebugErrorCount();
   constexpr int kCases = 20000;
   CaseGenerator gen(20240611u);
   std::vector<Case> cases;
-  std::vector<float> in(std::size_t(kCases) * kInStride, 0.f);
-  for (int i = 0; i < kCases; ++i) {
-    cases.push_back(gen.next());
-    cases.back().write(&in[std::size_t(i) * kInStride]);
-  }
-  const gl::Buffer inputs = gl::Buffer::create(in.size() * 4, in.data());
-  const gl::Buffer outputs = gl::Buffer::create(std::size_t(kCases) * kOutStride * 4);
-  const gl::Program program = gl::loadProgram({kShader}, {{"SHADING_CASES", ""}});
-  program.use();
-  program.set("uCount", kCases);
-  inputs.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  outputs.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  gl::glDispatchCompute(GLuint((kCases + 63) / 64), 1, 1);
-  gl::glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<float> gpu(std::size_t(kCases) * kOutStride);
-  outputs.download(0, gpu.size() * 4, gpu.data());
-  EXPECT_EQ(gl::glDebugErrorCount(), errorsBefore);
+  for (int i = 0; i < kCases; ++i) cases.push_back(gen.next());
+  const std::vector<float> gpu = testing::dispatchCases(
+      cases, kInStride, kOutStride, gl::loadProgram({kShader}, {{"SHADING_CASES", ""}}));
 
   std::map<std::string, double> worst;
   std::map<std::string, int> failures;
