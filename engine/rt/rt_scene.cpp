@@ -178,8 +178,11 @@ std::optional<Hit> RtScene::intersect(const Ray& ray, float tnear, float tfar,
                                       bool wantNormal) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit rh{};
-  rh.ray = toEmbreeRay({ray.origin, ray.direction, tnear, tfar});
+  // Field by field, not `RTCRayHit rh{}; rh.ray = toEmbreeRay(...)`: that built the ray in
+  // 4-byte stores and copied it in 16-byte loads, two store-forwarding stalls per ray (perf
+  // annotate, issue 14). Embree reads only the ray and writes the hit (rtcIntersect1 docs).
+  RTCRayHit rh;
+  setEmbreeRay(rh.ray, ray.origin, ray.direction, tnear, tfar);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rh);
@@ -208,7 +211,8 @@ bool RtScene::occluded(const vec3& origin, const vec3& direction, float tnear, f
   if (!(tnear <= tfar)) return false;  // inactive, as in the batch API
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay ray = toEmbreeRay({origin, direction, tnear, tfar});
+  RTCRay ray;
+  setEmbreeRay(ray, origin, direction, tnear, tfar);
   rtcOccluded1(scene_, &context, &ray);
   raysTraced_.add(1);
   // Embree sets tfar to -inf on a hit (rtcOccluded1 docs).

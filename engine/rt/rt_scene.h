@@ -36,6 +36,23 @@ struct OcclusionRay {
   float tfar = 0.f;
 };
 
+// Every field of an Embree ray (mask all ones, time 0, id and flags 0, as the Embree 3 docs ask).
+inline void setEmbreeRay(RTCRay& e, const vec3& origin, const vec3& direction, float tnear,
+                         float tfar) {
+  e.org_x = origin.x;
+  e.org_y = origin.y;
+  e.org_z = origin.z;
+  e.tnear = tnear;
+  e.dir_x = direction.x;
+  e.dir_y = direction.y;
+  e.dir_z = direction.z;
+  e.time = 0.f;
+  e.tfar = tfar;
+  e.mask = ~0u;
+  e.id = 0;
+  e.flags = 0;
+}
+
 // The Embree form of an occlusion ray (mask all ones, time 0, as the Embree 3 docs ask).
 inline RTCRay toEmbreeRay(const OcclusionRay& r) {
   RTCRay e{};

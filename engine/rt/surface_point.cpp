@@ -119,32 +119,37 @@ SurfacePoint makeAnalyticPoint(const Scene& scene, const WorldMesh& mesh, const 
                 " has no analytic part " + std::to_string(hit.primitive));
   const AnalyticInstance& a = *mesh.analytic;
   const int part = int(hit.primitive);
-  SurfacePoint s;
-  s.hit = hit;
-  s.uv = vec2(hit.u, hit.v);
-  analyticPositionAndNormal(a, part, s.uv, s.position, s.faceNormal);
-  s.positionMagnitude = a.magnitude;
-  s.frontFacing = glm::dot(s.faceNormal, incoming) <= 0.f;
-  s.geometricNormal = s.frontFacing ? s.faceNormal : -s.faceNormal;
-  s.material = mesh.material;
+  const vec2 uv(hit.u, hit.v);
+  vec3 position, faceNormal;
+  analyticPositionAndNormal(a, part, uv, position, faceNormal);
+  const bool front = glm::dot(faceNormal, incoming) <= 0.f;
   const Material& material = scene.material(mesh.material);
   // Exact: the gradient is the shading normal, unless a normal or bump map perturbs it; t_u and
   // t_v come from the shape's own parameterisation (analyticTangents).
-  vec3 n = s.faceNormal;
+  vec3 n = faceNormal;
   if ((material.bump || material.normalTexture >= 0) && !a.sdf) {
     vec3 tu, tv;
-    analyticTangents(a, part, s.uv, tu, tv);
+    analyticTangents(a, part, uv, tu, tv);
     if (material.normalTexture >= 0 && material.normalTexture < int(scene.textures.size())) {
       // The frame computeVertexTangents would give: T along dp/du, B = -dp/dv (glTF's v).
       const float w = glm::dot(glm::cross(n, tu), -tv) < 0.f ? -1.f : 1.f;
       n = normalMapped(scene.textures[material.normalTexture], material.normalScale, n, vec4(tu, w),
-                       s.uv);
+                       uv);
     }
-    if (material.bump) n = bumpMapNormal(scene, *material.bump, s.uv, tu, tv, n);
+    if (material.bump) n = bumpMapNormal(scene, *material.bump, uv, tu, tv, n);
   }
-  s.shadingNormal = s.frontFacing ? n : -n;
-  s.resolved = resolveMaterial(scene, material, s.uv);
-  return s;
+  // Built in one aggregate initialisation: the material is resolved straight into the result,
+  // not zero-filled, built apart and copied (the struct is ~250 bytes; issue 14's profile).
+  return SurfacePoint{.hit = hit,
+                      .position = position,
+                      .positionMagnitude = a.magnitude,
+                      .faceNormal = faceNormal,
+                      .geometricNormal = front ? faceNormal : -faceNormal,
+                      .shadingNormal = front ? n : -n,
+                      .frontFacing = front,
+                      .uv = uv,
+                      .material = mesh.material,
+                      .resolved = resolveMaterial(scene, material, uv)};
 }
 
 }  // namespace
@@ -172,33 +177,37 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, co
     throw Error("makeSurfacePoint: primitive " + std::to_string(hit.primitive) +
                 " out of range in instance " + std::to_string(hit.instance));
 
-  SurfacePoint s;
-  s.hit = hit;
-  s.position = interpolatePosition(mesh, hit.primitive, hit.u, hit.v);
+  const vec3 position = interpolatePosition(mesh, hit.primitive, hit.u, hit.v);
   const std::uint32_t* tri = &mesh.indices[3 * std::size_t(hit.primitive)];
-  s.positionMagnitude =
-      vertexMagnitude(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]);
-  s.faceNormal = geometricNormal(mesh, hit.primitive);
+  const vec3 faceNormal = geometricNormal(mesh, hit.primitive);
   // The face is seen from the front when the ray travels against its normal.
-  s.frontFacing = glm::dot(s.faceNormal, incoming) <= 0.f;
-  s.geometricNormal = s.frontFacing ? s.faceNormal : -s.faceNormal;
+  const bool front = glm::dot(faceNormal, incoming) <= 0.f;
   vec3 n = interpolateNormal(mesh, hit.primitive, hit.u, hit.v);
-  s.uv = interpolateUv(mesh, hit.primitive, hit.u, hit.v);
-  s.material = mesh.material;
+  const vec2 uv = interpolateUv(mesh, hit.primitive, hit.u, hit.v);
   const Material& material = scene.material(mesh.material);
   if (material.normalTexture >= 0 && material.normalTexture < int(scene.textures.size()) &&
       !mesh.tangents.empty())
     n = normalMapped(scene.textures[material.normalTexture], material.normalScale, n,
-                     interpolateTangent(mesh, hit.primitive, hit.u, hit.v), s.uv);
+                     interpolateTangent(mesh, hit.primitive, hit.u, hit.v), uv);
   if (material.bump && !mesh.uvs.empty()) {  // the lecture's bump mapping (engine/shading/bump.h)
     const SurfaceTangents t =
         triangleTangents(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]],
                          mesh.uvs[tri[0]], mesh.uvs[tri[1]], mesh.uvs[tri[2]]);
-    n = bumpMapNormal(scene, *material.bump, s.uv, t.tu, t.tv, n);
+    n = bumpMapNormal(scene, *material.bump, uv, t.tu, t.tv, n);
   }
-  s.shadingNormal = s.frontFacing ? n : -n;  // mapped first: the back sees the same surface
-  s.resolved = resolveMaterial(scene, material, s.uv);
-  return s;
+  // One aggregate initialisation, as makeAnalyticPoint's. The shading normal is mapped first:
+  // the back sees the same surface.
+  return SurfacePoint{.hit = hit,
+                      .position = position,
+                      .positionMagnitude = vertexMagnitude(
+                          mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]),
+                      .faceNormal = faceNormal,
+                      .geometricNormal = front ? faceNormal : -faceNormal,
+                      .shadingNormal = front ? n : -n,
+                      .frontFacing = front,
+                      .uv = uv,
+                      .material = mesh.material,
+                      .resolved = resolveMaterial(scene, material, uv)};
 }
 
 Ray spawnRay(const SurfacePoint& p, const vec3& direction) {

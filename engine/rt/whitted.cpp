@@ -40,6 +40,15 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, cons
   return shade(p, -ray.direction, depth, seed);
 }
 
+namespace {
+// shading::lightContribution with its response already computed: the same expression, in the
+// same order, so the sum is bit for bit the one lightContribution gives.
+vec3 contribution(const vec3& response, const shading::LightSample& s, float visibility) {
+  const vec3 lit = shading::saturate01(visibility) * s.radiance * response;
+  return glm::min(lit, vec3(shading::SHADING_FLT_MAX));
+}
+}  // namespace
+
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
   vec3 sum(0.f);
   const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
@@ -47,9 +56,16 @@ vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t s
     const Light& light = scene_.lights[i];
     const shading::LightSample s = shading::sampleLight(lights_[i], p.position);
     if (s.radiance == vec3(0.f)) continue;  // no contribution: skip its shadow rays
+    // The response first, the shadow rays only where it is not zero (pbrt-v4's
+    // PathIntegrator::SampleLd tests f before Unoccluded): V_i S_i 0 is 0 whatever V_i is, so the
+    // image is the same bit for bit. This skips most shadow rays of mirror and glass hits: the
+    // light behind the surface (n.l <= 0, no k_a), or a glossy lobe pow(r.v, e) underflowing to
+    // 0 away from the highlight when k_d is 0.
+    const vec3 response = shading::directResponse(p.resolved, p.shadingNormal, v, s.l);
+    if (response == vec3(0.f)) continue;
     const float visibility = lightVisibility(rt_, light, receiver, settings_.areaSamples, seed);
     rays_.add(std::uint64_t(shadowRaysPerReceiver(light, settings_.areaSamples)));
-    sum += shading::lightContribution(p.resolved, p.shadingNormal, v, s, visibility);
+    sum += contribution(response, s, visibility);
   }
   return sum;
 }

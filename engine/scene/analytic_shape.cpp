@@ -1,6 +1,7 @@
 #include "engine/scene/analytic_shape.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "engine/scene/analytic_tangents.h"
@@ -43,48 +44,51 @@ void stableRoots(double a, double b, double c, double disc, double& t0, double& 
   if (t0 > t1) std::swap(t0, t1);
 }
 
+// The helpers below return the hit distance, or kMiss (NaN) when there is none: a plain double
+// stays in a register, where std::optional<double> went through the stack between the
+// inlined helpers (a store-forwarding stall per call in perf annotate, issue 14).
+constexpr double kMiss = std::numeric_limits<double>::quiet_NaN();
+
 // The first of the roots in (tmin, tmax) whose point passes `accept`.
 template <class Accept>
-std::optional<double> firstRoot(double t0, double t1, double tmin, double tmax, Accept accept) {
-  for (double t : {t0, t1})
-    if (t > tmin && t < tmax && accept(t)) return t;
-  return std::nullopt;
+double firstRoot(double t0, double t1, double tmin, double tmax, Accept accept) {
+  if (t0 > tmin && t0 < tmax && accept(t0)) return t0;
+  if (t1 > tmin && t1 < tmax && accept(t1)) return t1;
+  return kMiss;
 }
 
-std::optional<double> planeHit(double y0, double radius, const dvec3& o, const dvec3& d,
-                               double tmin, double tmax) {
-  if (d.y == 0.0) return std::nullopt;
+double planeHit(double y0, double radius, const dvec3& o, const dvec3& d, double tmin,
+                double tmax) {
+  if (d.y == 0.0) return kMiss;
   const double t = (y0 - o.y) / d.y;
-  if (!(t > tmin && t < tmax)) return std::nullopt;
+  if (!(t > tmin && t < tmax)) return kMiss;
   const double x = o.x + t * d.x, z = o.z + t * d.z;
-  if (x * x + z * z > radius * radius) return std::nullopt;
+  if (x * x + z * z > radius * radius) return kMiss;
   return t;
 }
 
-std::optional<double> sphereHit(double r, const dvec3& o, const dvec3& d, double tmin,
-                                double tmax) {
+double sphereHit(double r, const dvec3& o, const dvec3& d, double tmin, double tmax) {
   // a t^2 + 2 b t + c with f = o (centre at the origin). Discriminant in the form of RTG ch. 7,
   // b^2 - a c = a (r^2 - |f - (b/a) d|^2): the squared distance of the centre from the ray is
   // computed directly instead of as the difference of two large numbers.
   const double a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - r * r;
-  if (a == 0.0) return std::nullopt;
-  const dvec3 l = o - (b / a) * d;
-  const double disc = a * (r - glm::length(l)) * (r + glm::length(l));
-  if (disc < 0.0) return std::nullopt;
+  if (a == 0.0) return kMiss;
+  const double l = glm::length(o - (b / a) * d);
+  const double disc = a * (r - l) * (r + l);
+  if (disc < 0.0) return kMiss;
   double t0, t1;
   stableRoots(a, b, c, disc, t0, t1);
   return firstRoot(t0, t1, tmin, tmax, [](double) { return true; });
 }
 
-std::optional<double> cylinderHit(double r, double h, const dvec3& o, const dvec3& d, double tmin,
-                                  double tmax) {
+double cylinderHit(double r, double h, const dvec3& o, const dvec3& d, double tmin, double tmax) {
   // x^2 + z^2 = r^2 in the xz projection, as the sphere in 2D.
   const dvec2 o2(o.x, o.z), d2(d.x, d.z);
   const double a = glm::dot(d2, d2), b = glm::dot(o2, d2), c = glm::dot(o2, o2) - r * r;
-  if (a == 0.0) return std::nullopt;  // along the axis: never meets the side
+  if (a == 0.0) return kMiss;  // along the axis: never meets the side
   const double l = glm::length(o2 - (b / a) * d2);
   const double disc = a * (r - l) * (r + l);
-  if (disc < 0.0) return std::nullopt;
+  if (disc < 0.0) return kMiss;
   double t0, t1;
   stableRoots(a, b, c, disc, t0, t1);
   return firstRoot(t0, t1, tmin, tmax, [&](double t) {
@@ -93,8 +97,7 @@ std::optional<double> cylinderHit(double r, double h, const dvec3& o, const dvec
   });
 }
 
-std::optional<double> coneHit(double r, double h, const dvec3& o, const dvec3& d, double tmin,
-                              double tmax) {
+double coneHit(double r, double h, const dvec3& o, const dvec3& d, double tmin, double tmax) {
   // F = x^2 + z^2 - k^2 s^2 with k = r / h and s = h/2 - y (depth below the apex), s in [0, h].
   const double k2 = (r / h) * (r / h), s0 = 0.5 * h - o.y;
   const double a = d.x * d.x + d.z * d.z - k2 * d.y * d.y;
@@ -105,12 +108,12 @@ std::optional<double> coneHit(double r, double h, const dvec3& o, const dvec3& d
     return s >= 0.0 && s <= h;
   };
   if (a == 0.0) {  // parallel to a generator line: one root
-    if (b == 0.0) return std::nullopt;
+    if (b == 0.0) return kMiss;
     const double t = -c / (2.0 * b);
     return firstRoot(t, t, tmin, tmax, inside);
   }
   const double disc = discriminant(a, b, c);
-  if (disc < 0.0) return std::nullopt;
+  if (disc < 0.0) return kMiss;
   double t0, t1;
   stableRoots(a, b, c, disc, t0, t1);
   return firstRoot(t0, t1, tmin, tmax, inside);
@@ -157,7 +160,7 @@ void partBounds(const AnalyticShape& s, int part, dvec3& lo, dvec3& hi) {
 std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, const dvec3& o,
                                             const dvec3& d, double tmin, double tmax) {
   const double r = s.radius, h = s.height;
-  std::optional<double> t;
+  double t = kMiss;
   switch (s.type) {
     case ShapeType::Sphere:
       t = sphereHit(r, o, d, tmin, tmax);
@@ -174,6 +177,7 @@ std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, co
       t = part == 0 ? coneHit(r, h, o, d, tmin, tmax) : planeHit(-0.5 * h, r, o, d, tmin, tmax);
       break;
   }
+  if (std::isnan(t)) return std::nullopt;  // every helper's roots compare > tmin: never NaN
   return t;
 }
 

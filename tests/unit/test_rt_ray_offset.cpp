@@ -2,8 +2,12 @@
 // checked on random triangles of scale 1e-4 .. 1e4, near and far from the origin.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <random>
+#include <vector>
 
 #include "engine/rt/ray_offset.h"
 #include "engine/rt/rt_scene.h"
@@ -203,4 +207,34 @@ TEST(RayOffset, LargeTriangleThroughTheOriginNeedsTheVertexMagnitude) {
   }
   EXPECT_GT(plainBelow, 0);
   EXPECT_EQ(extendedBelow, 0);
+}
+
+// The inline nextFloatUp/Down replace std::nextafter in offsetRayOriginByError: they must give
+// the same float for every class of input (zeros, denormals, the largest finite, infinities,
+// NaN) and for random bit patterns.
+TEST(RayOffset, NextFloatUpAndDownAreStdNextafter) {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const auto same = [](float a, float b) {
+    return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b) ||
+           (std::isnan(a) && std::isnan(b));
+  };
+  std::vector<float> inputs = {0.f,
+                               -0.f,
+                               1.f,
+                               -1.f,
+                               std::numeric_limits<float>::denorm_min(),
+                               -std::numeric_limits<float>::denorm_min(),
+                               std::numeric_limits<float>::min(),
+                               -std::numeric_limits<float>::min(),
+                               std::numeric_limits<float>::max(),
+                               -std::numeric_limits<float>::max(),
+                               kInf,
+                               -kInf,
+                               std::numeric_limits<float>::quiet_NaN()};
+  std::mt19937 rng(14);
+  for (int i = 0; i < 100000; ++i) inputs.push_back(std::bit_cast<float>(std::uint32_t(rng())));
+  for (const float x : inputs) {
+    EXPECT_TRUE(same(nextFloatUp(x), std::nextafter(x, kInf))) << x;
+    EXPECT_TRUE(same(nextFloatDown(x), std::nextafter(x, -kInf))) << x;
+  }
 }
