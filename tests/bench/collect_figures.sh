@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the per-pass table of docs/benchmarks.md: runs `diptych render` RUNS times
+# Regenerates the per-pass table of docs/benchmarks-history.md: runs `diptych render` RUNS times
 # (default 3) for each sample scene and size, each run reporting the median of 10 frames after
 # 3 warm-up frames, and prints the median over the runs of each node's CPU and GPU ms, and of
 # rt_shadows rays/s, as Markdown. Then runs Embree's triangle_geometry tutorial for comparison.

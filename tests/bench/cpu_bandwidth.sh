@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every per-pixel CPU node of a frame against this machine's memory bandwidth, in ONE run
 # (issue 14: "`shade` (CPU) and every per-pixel CPU loop at memory bandwidth or within 2x of it
-# for its bytes touched"). docs/benchmarks.md, "CPU passes against memory bandwidth".
+# for its bytes touched"). docs/benchmarks.md (issue 14); earlier runs in docs/benchmarks-history.md, "CPU passes against memory bandwidth".
 #
 # Method:
 #  - bandwidth: diptych_rt_bench bandwidth (memcpy of 256 MB buffers on all threads, TBB; bytes

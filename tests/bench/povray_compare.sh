@@ -2,7 +2,7 @@
 # Times Diptych's Whitted reference (rt_whitted, samples/graphs/whitted.json) against POV-Ray
 # 3.7 on the same scene (tests/bench/whitted.pov, a hand translation of
 # samples/scenes/whitted.json) at 640x480, in one run, on this machine, and prints both medians
-# and their ratios. See docs/benchmarks.md, "Whitted reference vs POV-Ray 3.7".
+# and their ratios. See docs/benchmarks.md (issue 14) and, for earlier runs, docs/benchmarks-history.md.
 #
 # Two ratios, because the two programs report different things:
 #  - render phase: Diptych's `reference` node median (schedule[].timing.cpu_ms.median of

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Per-producer figures (docs/benchmarks.md, "Technique slots"): runs `diptych compare` with the
+# Per-producer figures (docs/benchmarks-history.md, "Technique slots"): runs `diptych compare` with the
 # default variant set on whitted and cornell at 640x480 and 1920x1080 and prints, per variant,
 # the total frame time and the time of the pass that produces the swapped slot, with rays/s for
 # ray producers. Method: each variant is compiled once, warmed up, then timed over N frames;
