@@ -30,12 +30,7 @@ if(NOT pos EQUAL -1)
 endif()
 
 # A different build (here the same binary with one byte appended, which still runs) must not
-# reuse the reference the first one cached: the key covers the program's own bytes.
-expect_success(again ARGS ${run_args} FILES cmp/results.json)
-string(FIND "${LAST_STDOUT}" "(cached)" pos)
-if(pos EQUAL -1)
-  message(FATAL_ERROR "an unchanged scene did not reuse the cached reference:\n${LAST_STDOUT}")
-endif()
+# reuse the reference the `edited` run above cached: the key covers the program's own bytes.
 file(COPY_FILE "${DIPTYCH}" "${WORK_DIR}/diptych-rebuilt")
 file(APPEND "${WORK_DIR}/diptych-rebuilt" "x")
 set(DIPTYCH "${WORK_DIR}/diptych-rebuilt")
