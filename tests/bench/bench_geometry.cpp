@@ -1,5 +1,5 @@
-// Geometry cost per ray (docs/benchmarks-history.md, "Geometry"): closest-hit rays per second on one unit
-// sphere tessellated at several levels against the same sphere as Embree user geometry
+// Geometry cost per ray (docs/benchmarks-history.md, "Geometry"): closest-hit rays per second on
+// one unit sphere tessellated at several levels against the same sphere as Embree user geometry
 // (analytic), and the cost per ray of sphere tracing, plain (Hart 1996) against over-relaxed
 // (Keinert et al. 2014), with the steps each ray took. Method: 640 x 480 pixel-centre primary
 // rays of a camera framing the sphere, single-ray RtScene::intersect on one thread, Embree
