@@ -22,6 +22,9 @@ nlohmann::json timingJson(const NodeTiming& t) {
   if (!t.gpuMs.empty()) j["gpu_ms"] = timingStatsJson(t.gpuMs);
   if (!t.glWaitMs.empty()) j["gl_wait_ms"] = timingStatsJson(t.glWaitMs);
   if (!t.glWaitCpuMs.empty()) j["gl_wait_cpu_ms"] = timingStatsJson(t.glWaitCpuMs);
+  if (!t.glCompletionMs.empty()) j["gl_completion_ms"] = timingStatsJson(t.glCompletionMs);
+  if (!t.glCompletionCpuMs.empty())
+    j["gl_completion_cpu_ms"] = timingStatsJson(t.glCompletionCpuMs);
   for (const auto& [name, value] : t.counters) j["counters"][name] = value;
   return j;
 }

@@ -105,7 +105,9 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
     const bool gl = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
                     node.kind == NodeKind::Upload;
     std::vector<std::string> figures = {"cpu_ms", "process_cpu_ms"};
-    if (gl) figures.insert(figures.end(), {"gpu_ms", "gl_wait_ms", "gl_wait_cpu_ms"});
+    if (gl)
+      figures.insert(figures.end(), {"gpu_ms", "gl_wait_ms", "gl_wait_cpu_ms", "gl_completion_ms",
+                                     "gl_completion_cpu_ms"});
     for (const std::string& f : figures) {
       ASSERT_TRUE(t.contains(f)) << f;
       EXPECT_EQ(t[f]["samples"], kFrames) << f;
@@ -116,6 +118,7 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
     EXPECT_EQ(t.contains("gpu_ms"), gl);
     EXPECT_EQ(t.contains("gl_wait_ms"), gl);
     EXPECT_EQ(t.contains("gl_wait_cpu_ms"), gl);
+    EXPECT_EQ(t.contains("gl_completion_cpu_ms"), gl);
     EXPECT_FALSE(t.contains("counters") && t["counters"].contains("process_cpu_ms"));
     waits += gl;
   }
@@ -125,5 +128,53 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
     for (const NodeTiming& t : ex.timings())
       inside += t.cpuMs[f] + (t.glWaitMs.empty() ? 0.0 : t.glWaitMs[f]);
     EXPECT_LE(inside, ex.frameMs()[f]) << "frame " << f;
+  }
+}
+
+// A GL node's work completes after the node returns; the wait for it, taken before the next GL
+// node or at the frame's end, is charged to the node that issued the work (gl_completion_*), so
+// per node process_cpu_ms + gl_completion_cpu_ms is its whole CPU cost. Each wait is one
+// interval: the next GL node's gl_wait of a frame is the same figure as the previous GL node's
+// completion, and the last GL node's completion (frame end) is inside the frame.
+TEST(ExecutorGlTiming, TheWaitForANodesGlWorkIsChargedToThatNode) {
+  const Scene scene =
+      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
+  const CompiledGraph graph =
+      compileGraph(shadowRecipe(), builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
+                   {"sm.visibility", "rt.visibility"});
+  RenderWorld world(scene, &gl::testing::osmesaContext());
+  GraphExecutor ex(graph, world);
+  ex.runFrame();
+  ex.clearTimings();
+  constexpr int kFrames = 3;
+  for (int f = 0; f < kFrames; ++f) ex.runFrame();
+  std::vector<std::size_t> glNodes;
+  for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
+    const GraphNode& node = graph.nodes[n];
+    const NodeTiming& t = ex.timings()[n];
+    if (node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
+        node.kind == NodeKind::Upload) {
+      glNodes.push_back(n);
+      EXPECT_EQ(t.glCompletionMs.size(), std::size_t(kFrames)) << node.name;
+      EXPECT_EQ(t.glCompletionCpuMs.size(), std::size_t(kFrames)) << node.name;
+    } else {
+      EXPECT_TRUE(t.glCompletionMs.empty()) << node.name << ": CPU nodes issue no GL work";
+    }
+  }
+  ASSERT_GE(glNodes.size(), 3u);
+  for (int f = 0; f < kFrames; ++f) {
+    SCOPED_TRACE("frame " + std::to_string(f));
+    EXPECT_EQ(ex.timings()[glNodes.front()].glWaitMs[f], 0.0)
+        << "the previous frame's GL work completed inside that frame";
+    for (std::size_t k = 1; k < glNodes.size(); ++k) {
+      const NodeTiming& before = ex.timings()[glNodes[k - 1]];
+      const NodeTiming& after = ex.timings()[glNodes[k]];
+      EXPECT_EQ(before.glCompletionMs[f], after.glWaitMs[f]) << graph.nodes[glNodes[k]].name;
+      EXPECT_EQ(before.glCompletionCpuMs[f], after.glWaitCpuMs[f]);
+    }
+    double inside = 0;
+    for (const NodeTiming& t : ex.timings())
+      inside += t.cpuMs[f] + (t.glCompletionMs.empty() ? 0.0 : t.glCompletionMs[f]);
+    EXPECT_LE(inside, ex.frameMs()[f]);
   }
 }
