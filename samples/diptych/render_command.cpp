@@ -81,8 +81,8 @@ void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const Ren
                 nodeKindName(g.nodes[n].kind), domainName(g.nodes[n].domain), cpu, gpu.c_str(),
                 wait.c_str(), threads, rate.c_str());
   }
-  std::printf("%-34s %-9s %-4s %11.3f %11s %11s %15.3f\n", "total (sum of medians)", "", "",
-              total, "", "", totalThreads);
+  std::printf("%-34s %-9s %-4s %11.3f %11s %11s %15.3f\n", "total (sum of medians)", "", "", total,
+              "", "", totalThreads);
   std::printf("%-34s %-9s %-4s %11.3f\n", "frame wall (median)", "", "",
               summarize(ex.frameMs()).median);
   for (const GraphPass& p : g.passes)
