@@ -161,6 +161,7 @@ void GraphExecutor::readQueries() const {
 // issued it (glCompletion*) and, when asked, to the caller (the next node's glWait*).
 void GraphExecutor::waitForGl(double* waitMs, double* waitCpuMs) {
   if (!glIssuedBy_) return;
+  timings_[*glIssuedBy_].glOverlapMs.push_back(glIssuedClock_.milliseconds());
   Stopwatch wait;
   const double cpuStart = processCpuMs();
   gl_->finish();
@@ -186,8 +187,7 @@ void GraphExecutor::runFrame() {
     const GraphNode& node = graph_.nodes[n];
     NodeTiming& timing = timings_[n];
     timing.counters.clear();
-    const bool glWork = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
-                        node.kind == NodeKind::Upload;
+    const bool glWork = node.issuesGlWork();
     std::optional<gl::ScopedGlLabel> label;
     if (glWork) {
       double waitMs = 0, waitCpuMs = 0;
@@ -229,6 +229,7 @@ void GraphExecutor::runFrame() {
     if (glWork) {
       gl_->endTimer();
       glIssuedBy_ = n;
+      glIssuedClock_.restart();
     }
     timing.cpuMs.push_back(clock.milliseconds());
     timing.processCpuMs.push_back(processCpuMs() - cpuStart);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/timing.h"
 #include "engine/graph/frame_graph.h"
 #include "engine/graph/gl_backend.h"
 
@@ -32,6 +33,10 @@ struct NodeTiming {
   // on a hardware GPU it is near zero (the CPU sleeps while the GPU works).
   std::vector<double> glCompletionMs;
   std::vector<double> glCompletionCpuMs;
+  // GL nodes and transfers only: the wall time from the node's return to the start of that
+  // wait, in which the CPU nodes scheduled after it ran beside its GL work (0 when the next
+  // node is GL work itself). The export names those nodes (`overlapped_by`).
+  std::vector<double> glOverlapMs;
   std::map<std::string, double> counters;  // last frame's counters (e.g. rays)
 };
 
@@ -86,6 +91,7 @@ class GraphExecutor {
   // The GL node or transfer whose GL work was issued since the executor last waited for the
   // GL (the wait is charged to it as its completion); none after a wait.
   std::optional<std::size_t> glIssuedBy_;
+  Stopwatch glIssuedClock_;  // since glIssuedBy_ returned
   void waitForGl(double* waitMs, double* waitCpuMs);
 };
 

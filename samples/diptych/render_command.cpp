@@ -57,10 +57,11 @@ void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const Ren
       "query; gl wait: before a GL node or transfer starts, the wait for GL work that earlier "
       "nodes issued, kept out of its cpu ms; CPU nodes do not wait, GL work overlaps them; "
       "all-thread cpu: CPU time of all the process's threads over the node plus over the wait "
-      "for its own GL work to complete, i.e. on llvmpipe the node's rasterization too)\n",
+      "for its own GL work to complete, i.e. on llvmpipe the node's rasterization too; "
+      "overlap: wall time the CPU nodes after a GL node ran while its GL work was pending)\n",
       o.frames, o.warmup);
-  std::printf("%-34s %-9s %-4s %11s %11s %11s %15s %14s\n", "node", "kind", "dom", "cpu ms",
-              "gpu ms", "gl wait ms", "all-thread cpu", "Mrays/s");
+  std::printf("%-34s %-9s %-4s %11s %11s %11s %15s %11s %14s\n", "node", "kind", "dom", "cpu ms",
+              "gpu ms", "gl wait ms", "all-thread cpu", "overlap ms", "Mrays/s");
   double total = 0, totalThreads = 0;
   for (std::size_t n = 0; n < g.nodes.size(); ++n) {
     const NodeTiming& t = ex.timings()[n];
@@ -77,9 +78,11 @@ void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const Ren
         summarize(t.processCpuMs).median +
         (t.glCompletionCpuMs.empty() ? 0.0 : summarize(t.glCompletionCpuMs).median);
     totalThreads += threads;
-    std::printf("%-34s %-9s %-4s %11.3f %11s %11s %15.3f %14s\n", g.nodes[n].name.c_str(),
+    const std::string overlap =
+        t.glOverlapMs.empty() ? "-" : fmt::format("{:.3f}", summarize(t.glOverlapMs).median);
+    std::printf("%-34s %-9s %-4s %11.3f %11s %11s %15.3f %11s %14s\n", g.nodes[n].name.c_str(),
                 nodeKindName(g.nodes[n].kind), domainName(g.nodes[n].domain), cpu, gpu.c_str(),
-                wait.c_str(), threads, rate.c_str());
+                wait.c_str(), threads, overlap.c_str(), rate.c_str());
   }
   std::printf("%-34s %-9s %-4s %11.3f %11s %11s %15.3f\n", "total (sum of medians)", "", "", total,
               "", "", totalThreads);

@@ -56,8 +56,7 @@ TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
     const NodeTiming& t = ex.timings()[n];
     SCOPED_TRACE(node.name);
     EXPECT_EQ(t.cpuMs.size(), std::size_t(kFrames));
-    const bool gl = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
-                    node.kind == NodeKind::Upload;
+    const bool gl = node.issuesGlWork();
     if (!gl) {
       EXPECT_TRUE(t.gpuMs.empty());
       continue;
@@ -102,8 +101,7 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
     const GraphNode& node = graph.nodes[n];
     const nlohmann::json& t = j["schedule"][n]["timing"];
     SCOPED_TRACE(node.name);
-    const bool gl = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
-                    node.kind == NodeKind::Upload;
+    const bool gl = node.issuesGlWork();
     std::vector<std::string> figures = {"cpu_ms", "process_cpu_ms"};
     if (gl)
       figures.insert(figures.end(), {"gpu_ms", "gl_wait_ms", "gl_wait_cpu_ms", "gl_completion_ms",
@@ -152,8 +150,7 @@ TEST(ExecutorGlTiming, TheWaitForANodesGlWorkIsChargedToThatNode) {
   for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
     const GraphNode& node = graph.nodes[n];
     const NodeTiming& t = ex.timings()[n];
-    if (node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
-        node.kind == NodeKind::Upload) {
+    if (node.issuesGlWork()) {
       glNodes.push_back(n);
       EXPECT_EQ(t.glCompletionMs.size(), std::size_t(kFrames)) << node.name;
       EXPECT_EQ(t.glCompletionCpuMs.size(), std::size_t(kFrames)) << node.name;
@@ -177,4 +174,36 @@ TEST(ExecutorGlTiming, TheWaitForANodesGlWorkIsChargedToThatNode) {
       inside += t.cpuMs[f] + (t.glCompletionMs.empty() ? 0.0 : t.glCompletionMs[f]);
     EXPECT_LE(inside, ex.frameMs()[f]);
   }
+}
+
+// GL work is submitted without waiting for it, so the compiler issues a GL pass before the CPU
+// passes that do not depend on it (here listed after them), reads back first what those CPU
+// passes need (the executor waits for all earlier GL work before a transfer), and the CPU passes
+// then run while the GL pass's work is pending: the export names them, the timings measure it.
+TEST(ExecutorGlTiming, CpuPassesRunBesideTheGlWorkOfAPassIssuedBeforeThem) {
+  const Scene scene =
+      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
+  Recipe recipe = shadowRecipe();
+  std::swap(recipe.passes[1], recipe.passes[2]);  // rt_shadows (CPU) listed before shadow_map
+  const CompiledGraph graph =
+      compileGraph(recipe, builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
+                   {"sm.visibility", "rt.visibility"});
+  std::vector<std::string> names;
+  for (const GraphNode& n : graph.nodes) names.push_back(n.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"gbuffer", "readback:gbuffer.hits", "sm", "rt",
+                                             "readback:sm.visibility"}));
+  RenderWorld world(scene, &gl::testing::osmesaContext());
+  GraphExecutor ex(graph, world);
+  ex.runFrame();
+  ex.clearTimings();
+  constexpr int kFrames = 3;
+  for (int f = 0; f < kFrames; ++f) ex.runFrame();
+  const nlohmann::json j = graphToJson(graph, &ex.timings());
+  EXPECT_EQ(j["schedule"][2]["overlapped_by"], nlohmann::json::array({"rt"}));
+  EXPECT_EQ(j["schedule"][1]["overlapped_by"], nlohmann::json::array())
+      << "the shadow map's GL work follows the readback directly";
+  ASSERT_EQ(ex.timings()[2].glOverlapMs.size(), std::size_t(kFrames));
+  for (int f = 0; f < kFrames; ++f)
+    EXPECT_GE(ex.timings()[2].glOverlapMs[f], ex.timings()[3].cpuMs[f])
+        << "the wait for the shadow map's work starts after rt_shadows ran";
 }
