@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <numeric>
+#include <optional>
 
 #include "engine/graph/executor.h"
 #include "engine/graph/export.h"
@@ -35,21 +36,30 @@ Recipe shadowRecipe() {
   return recipe;
 }
 
+// The shadow sphere at 96x72 through `recipe`, one warm-up frame (the first query of a context
+// may read garbage and be dropped) and `frames` measured ones.
+struct TimedRun {
+  Scene scene = loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
+  CompiledGraph graph;
+  RenderWorld world{scene, &gl::testing::osmesaContext()};
+  std::optional<GraphExecutor> ex;
+  TimedRun(const Recipe& recipe, int frames)
+      : graph(compileGraph(recipe, builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
+                           {"sm.visibility", "rt.visibility"})) {
+    ex.emplace(graph, world);
+    ex->runFrame();
+    ex->clearTimings();
+    for (int f = 0; f < frames; ++f) ex->runFrame();
+  }
+};
+
 }  // namespace
 
 TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
-  const Scene scene =
-      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
-  const Recipe recipe = shadowRecipe();
-  const CompiledGraph graph =
-      compileGraph(recipe, builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
-                   {"sm.visibility", "rt.visibility"});
-  RenderWorld world(scene, &gl::testing::osmesaContext());
-  GraphExecutor ex(graph, world);
-  ex.runFrame();  // warm-up: the first query of a context may read garbage and be dropped
-  ex.clearTimings();
   constexpr int kFrames = 3;
-  for (int f = 0; f < kFrames; ++f) ex.runFrame();
+  const TimedRun run(shadowRecipe(), kFrames);
+  const CompiledGraph& graph = run.graph;
+  const GraphExecutor& ex = *run.ex;
   int glNodes = 0;
   for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
     const GraphNode& node = graph.nodes[n];
@@ -82,17 +92,10 @@ TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
 // intervals inside the frame's wall time, so their sum cannot exceed it (before this, the wait
 // sat inside the CPU time of the first node that synchronised).
 TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) {
-  const Scene scene =
-      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
-  const CompiledGraph graph =
-      compileGraph(shadowRecipe(), builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
-                   {"sm.visibility", "rt.visibility"});
-  RenderWorld world(scene, &gl::testing::osmesaContext());
-  GraphExecutor ex(graph, world);
-  ex.runFrame();
-  ex.clearTimings();
   constexpr int kFrames = 4;
-  for (int f = 0; f < kFrames; ++f) ex.runFrame();
+  const TimedRun run(shadowRecipe(), kFrames);
+  const CompiledGraph& graph = run.graph;
+  const GraphExecutor& ex = *run.ex;
   ASSERT_EQ(ex.frameMs().size(), std::size_t(kFrames));
   const nlohmann::json j = graphToJson(graph, &ex.timings());
   ASSERT_EQ(j["schedule"].size(), graph.nodes.size());
@@ -135,17 +138,10 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
 // interval: the next GL node's gl_wait of a frame is the same figure as the previous GL node's
 // completion, and the last GL node's completion (frame end) is inside the frame.
 TEST(ExecutorGlTiming, TheWaitForANodesGlWorkIsChargedToThatNode) {
-  const Scene scene =
-      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
-  const CompiledGraph graph =
-      compileGraph(shadowRecipe(), builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
-                   {"sm.visibility", "rt.visibility"});
-  RenderWorld world(scene, &gl::testing::osmesaContext());
-  GraphExecutor ex(graph, world);
-  ex.runFrame();
-  ex.clearTimings();
   constexpr int kFrames = 3;
-  for (int f = 0; f < kFrames; ++f) ex.runFrame();
+  const TimedRun run(shadowRecipe(), kFrames);
+  const CompiledGraph& graph = run.graph;
+  const GraphExecutor& ex = *run.ex;
   std::vector<std::size_t> glNodes;
   for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
     const GraphNode& node = graph.nodes[n];
@@ -181,23 +177,16 @@ TEST(ExecutorGlTiming, TheWaitForANodesGlWorkIsChargedToThatNode) {
 // passes need (the executor waits for all earlier GL work before a transfer), and the CPU passes
 // then run while the GL pass's work is pending: the export names them, the timings measure it.
 TEST(ExecutorGlTiming, CpuPassesRunBesideTheGlWorkOfAPassIssuedBeforeThem) {
-  const Scene scene =
-      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
   Recipe recipe = shadowRecipe();
   std::swap(recipe.passes[1], recipe.passes[2]);  // rt_shadows (CPU) listed before shadow_map
-  const CompiledGraph graph =
-      compileGraph(recipe, builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
-                   {"sm.visibility", "rt.visibility"});
+  constexpr int kFrames = 3;
+  const TimedRun run(recipe, kFrames);
+  const CompiledGraph& graph = run.graph;
+  const GraphExecutor& ex = *run.ex;
   std::vector<std::string> names;
   for (const GraphNode& n : graph.nodes) names.push_back(n.name);
   EXPECT_EQ(names, (std::vector<std::string>{"gbuffer", "readback:gbuffer.hits", "sm", "rt",
                                              "readback:sm.visibility"}));
-  RenderWorld world(scene, &gl::testing::osmesaContext());
-  GraphExecutor ex(graph, world);
-  ex.runFrame();
-  ex.clearTimings();
-  constexpr int kFrames = 3;
-  for (int f = 0; f < kFrames; ++f) ex.runFrame();
   const nlohmann::json j = graphToJson(graph, &ex.timings());
   EXPECT_EQ(j["schedule"][2]["overlapped_by"], nlohmann::json::array({"rt"}));
   EXPECT_EQ(j["schedule"][1]["overlapped_by"], nlohmann::json::array())
