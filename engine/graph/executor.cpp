@@ -230,6 +230,9 @@ void GraphExecutor::runFrame() {
       gl_->endTimer();
       glIssuedBy_ = n;
       glIssuedClock_.restart();
+      // A readback returns with its work done (it copies into client memory): nothing of it
+      // is pending beside the CPU nodes after it.
+      if (node.kind == NodeKind::Readback) waitForGl(nullptr, nullptr);
     }
     timing.cpuMs.push_back(clock.milliseconds());
     timing.processCpuMs.push_back(processCpuMs() - cpuStart);

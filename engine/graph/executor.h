@@ -35,7 +35,8 @@ struct NodeTiming {
   std::vector<double> glCompletionCpuMs;
   // GL nodes and transfers only: the wall time from the node's return to the start of that
   // wait, in which the CPU nodes scheduled after it ran beside its GL work (0 when the next
-  // node is GL work itself). The export names those nodes (`overlapped_by`).
+  // node is GL work itself, and for a readback, whose work is done when it returns). The
+  // export names those nodes (`overlapped_by`).
   std::vector<double> glOverlapMs;
   std::map<std::string, double> counters;  // last frame's counters (e.g. rays)
 };

@@ -88,7 +88,7 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
       jn["bytes"] = g.resources[node.resource].desc.bytes();
       if (node.forOutputOnly) jn["for_output_only"] = true;
     }
-    if (node.issuesGlWork()) {
+    if (node.issuesGlWork() && node.kind != NodeKind::Readback) {
       // The CPU nodes that run while this node's GL work may still be going on: the executor
       // waits for it before the next GL work, or at the end of the frame.
       jn["overlapped_by"] = nlohmann::json::array();
