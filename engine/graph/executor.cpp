@@ -230,12 +230,12 @@ void GraphExecutor::runFrame() {
       gl_->endTimer();
       glIssuedBy_ = n;
       glIssuedClock_.restart();
-      // A readback returns with its work done (it copies into client memory): nothing of it
-      // is pending beside the CPU nodes after it.
-      if (node.kind == NodeKind::Readback) waitForGl(nullptr, nullptr);
     }
     timing.cpuMs.push_back(clock.milliseconds());
     timing.processCpuMs.push_back(processCpuMs() - cpuStart);
+    // A readback returns with its work done (it copies into client memory): nothing of it is
+    // pending beside the CPU nodes after it. Outside its clocks, like every completion.
+    if (node.kind == NodeKind::Readback) waitForGl(nullptr, nullptr);
   }
   // The last GL node's work completes inside its frame, and is charged to it.
   waitForGl(nullptr, nullptr);
