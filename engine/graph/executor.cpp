@@ -85,11 +85,43 @@ class ExecutionContext final : public PassContext {
   NodeTiming& timing_;
 };
 
-GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world)
-    : graph_(graph), world_(world), timings_(graph.nodes.size()) {
+std::optional<GlSync> parseGlSync(const std::string& name) {
+  if (name == "node") return GlSync::PerNode;
+  if (name == "frame") return GlSync::PerFrame;
+  if (name == "auto") return GlSync::Auto;
+  return std::nullopt;
+}
+
+const char* glSyncName(GlSync sync) {
+  return sync == GlSync::PerFrame ? "frame" : sync == GlSync::PerNode ? "node" : "auto";
+}
+
+namespace {
+
+// Mesa's software rasterizers, by GL_RENDERER ("llvmpipe (LLVM 15.0.6, 256 bits)").
+bool softwareRenderer(const std::string& renderer) {
+  for (const char* name : {"llvmpipe", "softpipe", "SWR", "Software Rasterizer"})
+    if (renderer.find(name) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+GraphExecutor::GraphExecutor(const CompiledGraph& graph, RenderWorld& world, GlSync sync)
+    : graph_(graph), world_(world), timings_(graph.nodes.size()), sync_(sync) {
   if (graph.usesGl()) {
     world_.glContext().makeCurrent();
     gl_ = std::make_unique<GlBackend>();
+  }
+  syncReason_ = std::string(glSyncName(sync)) + " (asked)";
+  if (sync == GlSync::Auto) {
+    const std::string renderer = gl_ ? world_.glContext().info().renderer : std::string();
+    const bool software = !gl_ || softwareRenderer(renderer);
+    sync_ = software ? GlSync::PerNode : GlSync::PerFrame;
+    syncReason_ = std::string(glSyncName(sync_)) + " (auto: " +
+                  (!gl_ ? std::string("no GL work")
+                        : (software ? "software rasterizer " : "hardware renderer ") + renderer) +
+                  ")";
   }
   for (const PoolSlot& slot : graph.pool) {
     const bool cpu = slot.domain == Domain::Cpu;
@@ -107,6 +139,7 @@ void GraphExecutor::clearTimings() {
   readQueries();  // warm-up queries belong to the warm-up: read them before dropping them
   for (NodeTiming& t : timings_) t = NodeTiming{};
   frameMs_.clear();
+  frameGlWaitMs_.clear();
 }
 
 GraphExecutor::MeasuredRun GraphExecutor::runMeasured(
@@ -183,6 +216,7 @@ void GraphExecutor::runFrame() {
   Stopwatch frameClock;
   world_.beginFrame();
   std::vector<PendingQuery> frameQueries;
+  bool glFramePending = false;  // GL work issued in this frame (GlSync::PerFrame)
   for (std::size_t n = 0; n < graph_.nodes.size(); ++n) {
     const GraphNode& node = graph_.nodes[n];
     NodeTiming& timing = timings_[n];
@@ -190,10 +224,12 @@ void GraphExecutor::runFrame() {
     const bool glWork = node.issuesGlWork();
     std::optional<gl::ScopedGlLabel> label;
     if (glWork) {
-      double waitMs = 0, waitCpuMs = 0;
-      waitForGl(&waitMs, &waitCpuMs);
-      timing.glWaitMs.push_back(waitMs);
-      timing.glWaitCpuMs.push_back(waitCpuMs);
+      if (sync_ == GlSync::PerNode) {
+        double waitMs = 0, waitCpuMs = 0;
+        waitForGl(&waitMs, &waitCpuMs);
+        timing.glWaitMs.push_back(waitMs);
+        timing.glWaitCpuMs.push_back(waitCpuMs);
+      }
       label.emplace(node.name);
       const std::size_t slot = pending_.size() + frameQueries.size();
       gl_->beginTimer(slot);
@@ -228,8 +264,11 @@ void GraphExecutor::runFrame() {
     }
     if (glWork) {
       gl_->endTimer();
-      glIssuedBy_ = n;
-      glIssuedClock_.restart();
+      if (sync_ == GlSync::PerNode) {
+        glIssuedBy_ = n;
+        glIssuedClock_.restart();
+      }
+      glFramePending = true;
     }
     timing.cpuMs.push_back(clock.milliseconds());
     timing.processCpuMs.push_back(processCpuMs() - cpuStart);
@@ -237,8 +276,14 @@ void GraphExecutor::runFrame() {
     // pending beside the CPU nodes after it. Outside its clocks, like every completion.
     if (node.kind == NodeKind::Readback) waitForGl(nullptr, nullptr);
   }
-  // The last GL node's work completes inside its frame, and is charged to it.
+  // The frame's GL work completes inside it: per node, charged to the last GL node; per frame,
+  // as the frame's own wait.
   waitForGl(nullptr, nullptr);
+  if (sync_ == GlSync::PerFrame && glFramePending) {
+    Stopwatch wait;
+    gl_->finish();
+    frameGlWaitMs_.push_back(wait.milliseconds());
+  }
   frameMs_.push_back(frameClock.milliseconds());
   for (PendingQuery& q : frameQueries) q.frameMs = frameMs_.back();
   pending_.insert(pending_.end(), frameQueries.begin(), frameQueries.end());

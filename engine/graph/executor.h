@@ -41,11 +41,29 @@ struct NodeTiming {
   std::map<std::string, double> counters;  // last frame's counters (e.g. rays)
 };
 
+// When the executor waits for the GL work of a frame (docs/frame-graph.md, Timing).
+enum class GlSync {
+  // Before every GL node and transfer, for the GL work issued before it (glFinish): that
+  // work's CPU time is charged to the node that issued it (gl_completion_cpu_ms). On a
+  // software rasterizer the "GPU" is the CPU, and without this its work would sit in the CPU
+  // time of whichever node happened to synchronise.
+  PerNode,
+  // Only at the end of the frame: the CPU issues the next GL node while the GPU runs the
+  // previous one, as an engine does; a node's GL time is its timer query alone, and a readback
+  // waits for the GL work before it inside its own time.
+  PerFrame,
+  // PerNode on a software rasterizer (llvmpipe, softpipe, SWR: GL_RENDERER), else PerFrame.
+  Auto,
+};
+std::optional<GlSync> parseGlSync(const std::string& name);  // "node", "frame", "auto"
+const char* glSyncName(GlSync sync);                         // "node" or "frame"
+
 class GraphExecutor {
  public:
   // `world` is handed to passes. GL storage is created on world.glContext() when the graph has
-  // GL work (which then needs a context); a CPU-only graph never touches OpenGL.
-  GraphExecutor(const CompiledGraph& graph, RenderWorld& world);
+  // GL work (which then needs a context); a CPU-only graph never touches OpenGL. `sync` is
+  // resolved here (Auto: by the context's renderer); glSync() says what it became and why.
+  GraphExecutor(const CompiledGraph& graph, RenderWorld& world, GlSync sync = GlSync::Auto);
   ~GraphExecutor();
   GraphExecutor(const GraphExecutor&) = delete;
   GraphExecutor& operator=(const GraphExecutor&) = delete;
@@ -71,6 +89,11 @@ class GraphExecutor {
   // Wall time of each measured frame, from its first node to its last.
   const std::vector<double>& frameMs() const { return frameMs_; }
   const CpuImage& output(const std::string& resourceName) const;
+  GlSync glSync() const { return sync_; }
+  // "node (auto: software rasterizer llvmpipe ...)", "frame (asked)": for reports.
+  const std::string& glSyncReason() const { return syncReason_; }
+  // GlSync::PerFrame: the wait at the end of each measured frame for its GL work.
+  const std::vector<double>& frameGlWaitMs() const { return frameGlWaitMs_; }
 
  private:
   friend class ExecutionContext;
@@ -89,6 +112,9 @@ class GraphExecutor {
   mutable std::vector<NodeTiming> timings_;
   mutable std::vector<PendingQuery> pending_;
   std::vector<double> frameMs_;
+  std::vector<double> frameGlWaitMs_;
+  GlSync sync_ = GlSync::PerNode;
+  std::string syncReason_;
   // The GL node or transfer whose GL work was issued since the executor last waited for the
   // GL (the wait is charged to it as its completion); none after a wait.
   std::optional<std::size_t> glIssuedBy_;

@@ -295,6 +295,7 @@ void runCompare(const CompareOptions& o) {
                  {"traced_geometry_bytes", tracedBytes},
                  {"total_ms", run.totalMs},
                  {"first_frame_ms", run.firstFrameMs},
+                 {"gl_sync", run.glSync},
                  {"one_time_ms", variantOneTime},
                  {"pass_ms", run.passMs},
                  {"rays", run.rays},

@@ -36,6 +36,7 @@ struct RenderOptions {
   std::string scene, recipe, cameraFile, size = "640x480", out = "out.png", graphOut, timingsOut;
   std::vector<std::string> outputs;  // --output, repeatable
   std::string context = "auto";
+  std::string glSync = "auto";  // --gl-sync node|frame|auto
   std::vector<std::string> slots;
   int frames = 5, warmup = 2;
   std::string exposure = "0", tonemap = "clamp";
@@ -86,8 +87,12 @@ void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const Ren
   }
   std::printf("%-34s %-9s %-4s %11.3f %11s %11s %15.3f\n", "total (sum of medians)", "", "", total,
               "", "", totalThreads);
+  if (!ex.frameGlWaitMs().empty())
+    std::printf("%-34s %-9s %-4s %11.3f\n", "gl wait at frame end", "", "",
+                summarize(ex.frameGlWaitMs()).median);
   std::printf("%-34s %-9s %-4s %11.3f\n", "frame wall (median)", "", "",
               summarize(ex.frameMs()).median);
+  std::printf("gl sync: %s\n", ex.glSyncReason().c_str());
   for (const GraphPass& p : g.passes)
     if (p.culled)
       std::printf("culled: %s (%s): %s\n", p.name.c_str(), p.type.c_str(), p.cullReason.c_str());
@@ -113,6 +118,9 @@ void runRender(const RenderOptions& o) {
   } catch (const Error& e) {
     throw InputError("--context", o.context, e.what());
   }
+  const std::optional<GlSync> glSync = parseGlSync(o.glSync);
+  if (!glSync)
+    throw InputError("--gl-sync", "", "expected node, frame or auto, got '" + o.glSync + "'");
   const std::optional<ToneOperator> toneOperator = parseToneOperator(o.tonemap);
   if (!toneOperator)
     throw InputError("--tonemap", "", "expected clamp, reinhard or aces, got '" + o.tonemap + "'");
@@ -160,7 +168,7 @@ void runRender(const RenderOptions& o) {
   if (graph.usesGl()) context = gl::createContext(contextKind, width, height);
   RenderWorld world(scene, context.get());
   const nlohmann::json devices = describeDevices(context.get());
-  GraphExecutor executor(graph, world);
+  GraphExecutor executor(graph, world, *glSync);
   const bool tty = isatty(fileno(stderr));
   executor.runMeasured(o.warmup, o.frames, [&](int done, int total) {
     if (tty) std::fprintf(stderr, "\rframe %d/%d%s", done, total, done == total ? "\n" : "");
@@ -206,10 +214,14 @@ void runRender(const RenderOptions& o) {
         "earlier nodes issued; that work is in their gpu_ms), gl_completion_ms and "
         "gl_completion_cpu_ms (the same wait charged to the node whose GL work it was, taken "
         "before the next GL node or at the frame's end; process_cpu_ms + gl_completion_cpu_ms "
-        "is a node's whole CPU cost, on llvmpipe its rasterization included). frame_ms: wall "
+        "is a node's whole CPU cost, on llvmpipe its rasterization included); with gl_sync "
+        "frame, no wait per node but one at the frame's end (frame_gl_wait_ms). frame_ms: wall "
         "time per frame",
         o.frames, o.warmup);
+    j["gl_sync"] = executor.glSyncReason();
     j["frame_ms"] = timingStatsJson(executor.frameMs());
+    if (!executor.frameGlWaitMs().empty())
+      j["frame_gl_wait_ms"] = timingStatsJson(executor.frameGlWaitMs());
     j["scene"] = o.scene;
     j["devices"] = devices;
     j["one_time_ms"] = world.oneTimeMs;
@@ -267,6 +279,11 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option(
          "--context", options->context,
          "OpenGL context: auto (EGL on a GPU, else OSMesa), osmesa, egl (headless) or glfw")
+      ->capture_default_str();
+  cmd->add_option("--gl-sync", options->glSync,
+                  "When to wait for GL work: node (before every GL node; its CPU time charged to "
+                  "the node that issued it), frame (at the frame's end only: pipelined), auto "
+                  "(node on a software rasterizer, else frame)")
       ->capture_default_str();
   cmd->add_flag("-v,--verbose", options->verbose, "Log debug messages");
   cmd->callback([options, &exitCode] {

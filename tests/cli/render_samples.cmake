@@ -55,3 +55,22 @@ if(NOT LAST_STDOUT MATCHES "devices: GL: .* via (osmesa|egl)")
 endif()
 expect_failure(bad-context EXPECT "--context" "vulkan" ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json"
                --context vulkan)
+# --gl-sync: auto says what it chose and why (OSMesa here: a software rasterizer, so a wait per
+# node); frame waits once per frame, at its end, and gives the same image.
+string(JSON sync GET "${timings}" gl_sync)
+if(NOT sync MATCHES "^node \\(auto: software rasterizer llvmpipe")
+  message(FATAL_ERROR "--gl-sync auto on llvmpipe must resolve to node and say why: ${sync}")
+endif()
+expect_success(render-frame-sync ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --context osmesa
+               --gl-sync frame --size 96x72 --frames 2 --warmup 0 --out frame.exr --timings f.json
+               FILES frame.exr f.json)
+expect_success(frame-vs-node-sync ARGS diff frame.exr osmesa.exr --fail-above rmse=0)
+file(READ "${WORK_DIR}/f.json" timings)
+string(JSON sync GET "${timings}" gl_sync)
+string(JSON frameWait GET "${timings}" frame_gl_wait_ms samples)
+string(JSON nodeWait ERROR_VARIABLE noWait GET "${timings}" schedule 0 timing gl_wait_ms)
+if(NOT sync STREQUAL "frame (asked)" OR NOT frameWait EQUAL 2 OR noWait STREQUAL "NOTFOUND")
+  message(FATAL_ERROR "--gl-sync frame: expected one wait per frame and none per node: ${timings}")
+endif()
+expect_failure(bad-gl-sync EXPECT "--gl-sync" "always" ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json"
+               --gl-sync always)

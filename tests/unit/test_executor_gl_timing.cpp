@@ -43,10 +43,10 @@ struct TimedRun {
   CompiledGraph graph;
   RenderWorld world{scene, &gl::testing::osmesaContext()};
   std::optional<GraphExecutor> ex;
-  TimedRun(const Recipe& recipe, int frames)
+  TimedRun(const Recipe& recipe, int frames, GlSync sync = GlSync::Auto)
       : graph(compileGraph(recipe, builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
                            {"sm.visibility", "rt.visibility"})) {
-    ex.emplace(graph, world);
+    ex.emplace(graph, world, sync);
     ex->runFrame();
     ex->clearTimings();
     for (int f = 0; f < frames; ++f) ex->runFrame();
@@ -205,4 +205,29 @@ TEST(ExecutorGlTiming, CpuPassesRunBesideTheGlWorkOfAPassIssuedBeforeThem) {
     EXPECT_LT(ex.timings()[1].glOverlapMs[f], ex.timings()[3].cpuMs[f])
         << "nothing of the readback is pending while rt_shadows runs";
   }
+}
+
+// GlSync: on OSMesa (llvmpipe) Auto waits per node and says why; PerFrame waits only at the end
+// of each frame (a GPU engine's pipelining: no gl_wait or completion per node, one frame wait)
+// and computes the same signals.
+TEST(ExecutorGlTiming, PerFrameSyncWaitsOnceAtTheFrameEndAndChangesNoSignal) {
+  constexpr int kFrames = 2;
+  const TimedRun perNode(shadowRecipe(), kFrames);
+  EXPECT_EQ(perNode.ex->glSync(), GlSync::PerNode);
+  EXPECT_NE(perNode.ex->glSyncReason().find("auto: software rasterizer llvmpipe"),
+            std::string::npos)
+      << perNode.ex->glSyncReason();
+  EXPECT_TRUE(perNode.ex->frameGlWaitMs().empty());
+  const TimedRun perFrame(shadowRecipe(), kFrames, GlSync::PerFrame);
+  EXPECT_EQ(perFrame.ex->glSyncReason(), "frame (asked)");
+  EXPECT_EQ(perFrame.ex->frameGlWaitMs().size(), std::size_t(kFrames));
+  for (std::size_t n = 0; n < perFrame.graph.nodes.size(); ++n) {
+    const NodeTiming& t = perFrame.ex->timings()[n];
+    SCOPED_TRACE(perFrame.graph.nodes[n].name);
+    EXPECT_TRUE(t.glWaitMs.empty());
+    EXPECT_TRUE(t.glCompletionMs.empty());
+    EXPECT_EQ(t.gpuMs.size(), perFrame.graph.nodes[n].issuesGlWork() ? std::size_t(kFrames) : 0u);
+  }
+  for (const char* signal : {"sm.visibility", "rt.visibility"})
+    EXPECT_EQ(perFrame.ex->output(signal).words, perNode.ex->output(signal).words) << signal;
 }

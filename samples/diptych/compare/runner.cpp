@@ -19,6 +19,9 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
   run.firstFrameMs = measured.firstFrameMs;
   run.oneTimeMs = measured.oneTimeMs;
   run.timings = ex.timings();
+  run.glSync = ex.glSyncReason();
+  // GlSync::PerFrame: the frame's GL work completes in one wait at its end.
+  if (!ex.frameGlWaitMs().empty()) run.totalMs += summarize(ex.frameGlWaitMs()).median;
   for (std::size_t n = 0; n < run.graph.nodes.size(); ++n) {
     const NodeTiming& t = run.timings[n];
     const double ms = summarize(t.cpuMs).median;

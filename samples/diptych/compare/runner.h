@@ -22,7 +22,8 @@ struct GraphRun {
   double firstFrameMs = 0;
   // One-time work the run did for the world (a static shadow map, ...): never in a median.
   std::map<std::string, double> oneTimeMs;
-  double rays = 0;                                   // rays counted by the passes in the last frame
+  std::string glSync;  // when the executor waited for the GL (GraphExecutor::glSyncReason)
+  double rays = 0;     // rays counted by the passes in the last frame
   nlohmann::json passMs = nlohmann::json::object();  // node name -> median ms (runner.cpp: GL
                                                      // passes CPU + GL, transfers GL)
 };
