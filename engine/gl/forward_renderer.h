@@ -67,6 +67,11 @@ struct ForwardOptions {
   // With behindVisibility: the G-buffer's stored surface of the same frame (gbuffer_raster.h),
   // read instead of rebuilding the first surface from the hits in every fragment.
   const Texture* behindSurface = nullptr;
+  // With behindVisibility and transmissiveFirstOnly: per pixel, in .a, the distance from `eye`
+  // to the first visible surface when it transmits, negative where it does not (RGBA32F, same
+  // size; the blend producers' blend_first.frag). Read in place of rebuilding that surface and
+  // its material in every fragment; the same tests, so the same image.
+  const Texture* behindFirst = nullptr;
 };
 
 // What a forward render draws: the scene and its uploaded geometry and shading buffers (passes
@@ -90,7 +95,7 @@ class ForwardRenderer {
   // forward.frag for (behind, transmissive-only) compiled for the scene on first use: constants
   // instead of uniforms, since llvmpipe would run the visibility-texel path for every fragment.
   const Program& surface(const GlShadingBuffers& shading, bool behind, bool transmissiveOnly,
-                         bool storedSurface);
+                         bool storedSurface, bool storedFirst);
   std::map<int, Program> surfaces_;
   Program background_;
   Framebuffer framebuffer_;
