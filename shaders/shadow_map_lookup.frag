@@ -134,20 +134,12 @@ float receiverDepth(int face, ivec2 texel) {
 }
 
 // Bias modes whose receiver depth is the biased point's own depth on its own face, the same for
-// every tap there: project(gFace0, gPb).z, which main() stores as gSc0.z.
+// every tap there: receiverDepth() = project(gFace0, gPb).z, which main() stores as gSc0.z.
 const bool kFlatReceiver = uBias == BIAS_NONE || uBias == BIAS_CONSTANT || uBias == BIAS_SLOPE ||
                            uBias == BIAS_NORMAL_OFFSET;
 
-float tapReceiverDepth(int face, ivec2 texel) {
-  // Every tap of the interior variant, and every in-map tap of a single-face light, reads
-  // gFace0: one projection per pixel, not per tap.
-#ifndef DIPTYCH_INTERIOR
-  if (gKind == KIND_CUBE) return receiverDepth(face, texel);
-#endif
-  return kFlatReceiver ? gSc0.z : receiverDepth(face, texel);
-}
-
-// 3x3 PCF by four textureGather (GL 4.0) instead of nine texelFetch: the gathers cover the 4x4
+// 3x3 PCF by four textureGather (GL 4.0) instead of nine texelFetch (DIPTYCH_PCF_GATHER, the
+// interior pass, whose taps all read gFace0): the gathers cover the 4x4
 // texels from the (-1, -1) tap's, which hold the nine taps' texels, and the same nine compares
 // with the one receiver depth are summed, so the result is the loop's. tap() floors
 // x + offset: x - 1 is exact (x >= 1 inside the map), so the 0 tap's texel is the -1 tap's + 1;
@@ -188,7 +180,7 @@ vec3 tap(vec2 offset) {
   }
 #endif
   float stored = texelFetch(uShadowMaps, ivec3(texel, gFirst + face), 0).r;
-  return vec3(tapReceiverDepth(face, texel) >= stored ? 1.0 : 0.0, stored, 1.0);
+  return vec3(receiverDepth(face, texel) >= stored ? 1.0 : 0.0, stored, 1.0);
 }
 
 // Percentage-closer soft shadows (Fernando 2005): blocker search, penumbra from similar
@@ -223,7 +215,7 @@ float pcss() {
 }
 
 float visibility() {
-#ifdef DIPTYCH_INTERIOR
+#if defined(DIPTYCH_INTERIOR) && defined(DIPTYCH_PCF_GATHER)
   if (uFilter == FILTER_PCF && uKernel == 3 && kFlatReceiver) return pcf3Gathered();
 #endif
   if (uFilter == FILTER_PCF) {

@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 
+#include "engine/gl/bindings.h"
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
@@ -82,6 +83,22 @@ bool overlap(const PixelRect& a, const PixelRect& b) {
 
 }  // namespace
 
+void renderBlendFirst(RenderWorld& world, const gl::Texture& hits, const gl::Texture* surface,
+                      const vec3& eye, const gl::Texture& first, const glm::ivec4& scissor) {
+  auto& cache = world.glCached<BlendCache>();
+  std::optional<FullscreenResolve>& program = cache.firstSurface[surface ? 1 : 0];
+  if (!program) {
+    std::vector<gl::ShaderDefine> own;
+    if (surface) own.push_back({"DIPTYCH_GBUFFER_SURFACE", "1"});  // gl/gbuffer_surface.glsl
+    program.emplace(gl::loadProgram({"fullscreen.vert", "blend_first.frag"},
+                                    gl::withDefines(world.glShading().defines, own)));
+  }
+  gl::glBindTextureUnit(0, hits.id());
+  if (surface) gl::glBindTextureUnit(gl::UNIT_GBUFFER_SURFACE, surface->id());
+  program->program().set("uEye", eye);
+  program->draw(world, first, /*multiply=*/false, scissor);
+}
+
 std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry& world,
                                         const mat4& view) {
   std::vector<std::pair<float, int>> keyed;
@@ -144,21 +161,14 @@ void BlendTransmissionPass::execute(PassContext& c) {
 
   // The first visible surface of each pixel, rebuilt once here (the mask factor and the distance
   // the forward passes' "strictly behind" test needs) rather than in every forward fragment.
-  gl::glBindTextureUnit(0, hits.id());
-  bindSurface(c, surface_);
-  std::optional<FullscreenResolve>& first = cache.firstSurface[surface_ != kNoResource ? 1 : 0];
-  if (!first)
-    first.emplace(
-        gl::loadProgram({"fullscreen.vert", "blend_first.frag"},
-                        gl::withDefines(world.glShading().defines, surfaceDefines(surface_))));
-  first->program().set("uEye", view.eye);
-  first->draw(world, cache.first, /*multiply=*/false, scissor);
+  renderBlendFirst(world, hits, surface_ != kNoResource ? &c.glTexture(surface_) : nullptr,
+                   view.eye, cache.first, scissor);
 
   // Lines 1-3 of the lecture's algorithm: opaque polygons with depth (and the background).
   gl::ForwardOptions opaque;
   opaque.instances = gl::InstanceSet::Opaque;
   opaque.behindVisibility = &hits;
-  opaque.behindFirst = &cache.first;
+  opaque.transmissiveFirst = &cache.first;
   opaque.scissor = scissor;
   opaque.explicitOrder = true;
   for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
@@ -166,8 +176,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
         overlap(rects[m], covered))
       opaque.order.push_back(int(m));
   // Only pixels whose first surface transmits keep their value (the mask below zeroes the
-  // rest), so the re-rendered scene is shaded there only.
-  opaque.transmissiveFirstOnly = true;
+  // rest), so the re-rendered scene is shaded there only (opaque.transmissiveFirst).
   renderer.render(world.forwardScene(), view, out, cache.depth, opaque);
 
   // Lines 4-10: transparent polygons in Z order, I = I_m + k_t M_t I, depth-tested, not written.
@@ -184,10 +193,9 @@ void BlendTransmissionPass::execute(PassContext& c) {
   transparent.depthWrite = false;
   transparent.blend = true;
   transparent.behindVisibility = &hits;
-  transparent.behindFirst = &cache.first;
+  transparent.transmissiveFirst = &cache.first;
   transparent.scissor = scissor;
   transparent.explicitOrder = true;
-  transparent.transmissiveFirstOnly = true;
   renderer.render(world.forwardScene(), view, out, cache.depth, transparent);
 
   // The slot's contract: 0 where the first surface transmits nothing. Inside the scissor only:
