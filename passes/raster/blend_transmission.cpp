@@ -18,8 +18,8 @@ namespace diptych {
 namespace {
 
 // GL state of the blend producers, one per world: the forward pass's own depth buffer (the
-// G-buffer's depth is not an input of the slot), the per-pixel first surface (blend_first.frag)
-// and the mask that zeroes non-transmissive pixels.
+// G-buffer's depth is not an input of the slot), the per-pixel first surface
+// (blend_transmission_first.frag) and the mask that zeroes non-transmissive pixels.
 struct BlendCache {
   gl::Texture depth;
   gl::Texture first;  // RGBA32F: mask factor, first-surface distance (negative: not transmissive)
@@ -90,7 +90,7 @@ void renderBlendFirst(RenderWorld& world, const gl::Texture& hits, const gl::Tex
   if (!program) {
     std::vector<gl::ShaderDefine> own;
     if (surface) own.push_back({"DIPTYCH_GBUFFER_SURFACE", "1"});  // gl/gbuffer_surface.glsl
-    program.emplace(gl::loadProgram({"fullscreen.vert", "blend_first.frag"},
+    program.emplace(gl::loadProgram({"fullscreen.vert", "blend_transmission_first.frag"},
                                     gl::withDefines(world.glShading().defines, own)));
   }
   gl::glBindTextureUnit(0, hits.id());

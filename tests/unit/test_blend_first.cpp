@@ -1,6 +1,6 @@
 // The blend producers' per-pixel first surface (passes/raster/blend_transmission.h
-// renderBlendFirst, shaders/blend_first.frag), which the forward passes read instead of
-// rebuilding the first visible surface in every fragment (gl::ForwardOptions::
+// renderBlendFirst, shaders/blend_transmission_first.frag), which the forward passes read instead
+// of rebuilding the first visible surface in every fragment (gl::ForwardOptions::
 // transmissiveFirst):
 //  - it holds, per pixel, that surface's distance from the eye where its material transmits
 //    (the CPU surface point of the same hit, to float rounding) and a negative value elsewhere,
