@@ -6,7 +6,6 @@
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
 #include "gl/scene_shading.glsl"
-#include "gl/gbuffer_surface.glsl"
 #include "gl/ray_triangle.glsl"
 #include "gl/pixel_ray.glsl"
 
@@ -20,9 +19,12 @@ uniform int uBlend;   // 1: the output is composited as I = I_m + k_t M_T I
 // 1: keep only fragments strictly behind the visibility texel's surface.
 const int uBehind = FORWARD_BEHIND;
 // 1 (with uBehind): also drop fragments whose pixel's first surface transmits nothing (k_t = 0):
-// the blend producers zero those pixels afterwards (blend_transmission.frag, the same test).
+// the blend producers zero those pixels afterwards (blend_transmission.frag, the same texel).
 const int uTransmissiveOnly = FORWARD_TRANSMISSIVE_ONLY;
 layout(binding = 0) uniform usampler2D uHits;
+// With uTransmissiveOnly: the pixel's first-surface distance when that surface transmits, else
+// negative (blend_transmission_first.frag, once per pixel): both tests below without rebuilding the surface.
+layout(binding = 2) uniform sampler2D uFirst;
 
 // Dual-source blending (GL 3.3 core, ARB_blend_func_extended): index 1 is the per-fragment
 // destination factor k_t M_T of glBlendFunc(GL_ONE, GL_SRC1_COLOR).
@@ -33,18 +35,21 @@ void main() {
   // The visibility tests that need no ray/triangle work come first, so that llvmpipe skips the
   // rest of the shader for blocks whose fragments are all discarded (docs/benchmarks.md).
   uvec4 texel = uvec4(0u);
-  SceneSurface first = surfaceFromHits(texel);  // background: no first surface
+  float firstDistance = -1.0;  // negative: no first surface to be behind (background)
   if (uBehind != 0) {
     texel = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
     // "Behind the first visible surface": the first surface itself (same instance and
     // primitive) is excluded by identity, everything else by its distance along the same ray
-    // below. Both this test and the material gate need only the hits texel, so they come before
-    // the first surface is rebuilt (the front faces of a blended object are all discarded here).
+    // below. The identity test reads the hits texel and the material gate one texel of uFirst,
+    // so both come before any ray/triangle work (a blended object's front faces end here).
     if (texel.x != 0u && texel.x - 1u == uInstance && texel.y == uint(gl_PrimitiveID)) discard;
-    if (uTransmissiveOnly != 0 && !sceneHitMayTransmit(texel)) discard;
-    first = gbufferSurface(ivec2(gl_FragCoord.xy), texel);
-    if (uTransmissiveOnly != 0 && !(first.hit && hasTransmission(sceneMaterial(first.material, first.uv))))
-      discard;
+    if (uTransmissiveOnly != 0) {
+      firstDistance = texelFetch(uFirst, ivec2(gl_FragCoord.xy), 0).a;
+      if (firstDistance < 0.0) discard;  // the first surface transmits nothing
+    } else {
+      SceneSurface first = surfaceFromHits(texel);
+      if (first.hit) firstDistance = safeLength(first.position - uEye);
+    }
   }
   vec3 dir = pixelRayDirection();
   uvec3 idx = sceneTriangle(uFirstTriangle + uint(gl_PrimitiveID));
@@ -55,8 +60,7 @@ void main() {
   float w = 1.0 - bary.x - bary.y;
   vec3 p = w * p0 + bary.x * p1 + bary.y * p2;
 
-  if (uBehind != 0 && first.hit && safeLength(p - uEye) <= safeLength(first.position - uEye))
-    discard;
+  if (uBehind != 0 && firstDistance >= 0.0 && safeLength(p - uEye) <= firstDistance) discard;
 
   vec3 face = safeNormalize(cross(p1 - p0, p2 - p0));
   vec3 n = w * sceneNormal(idx.x) + bary.x * sceneNormal(idx.y) + bary.y * sceneNormal(idx.z);

@@ -133,6 +133,38 @@ float receiverDepth(int face, ivec2 texel) {
   return project(face, gPb).z;
 }
 
+// Bias modes whose receiver depth is the biased point's own depth on its own face, the same for
+// every tap there: receiverDepth() = project(gFace0, gPb).z, which main() stores as gSc0.z.
+const bool kFlatReceiver = uBias == BIAS_NONE || uBias == BIAS_CONSTANT || uBias == BIAS_SLOPE ||
+                           uBias == BIAS_NORMAL_OFFSET;
+
+// 3x3 PCF by four textureGather (GL 4.0) instead of nine texelFetch (DIPTYCH_PCF_GATHER, the
+// interior pass, whose taps all read gFace0): the gathers cover the 4x4
+// texels from the (-1, -1) tap's, which hold the nine taps' texels, and the same nine compares
+// with the one receiver depth are summed, so the result is the loop's. tap() floors
+// x + offset: x - 1 is exact (x >= 1 inside the map), so the 0 tap's texel is the -1 tap's + 1;
+// x + 1 can round up across a power of two, so the +1 tap's is + 2 or + 3.
+float pcf3Gathered() {
+  float resolution = float(uResolution);
+  vec2 x = gSc0.xy * resolution;
+  vec2 lo = floor(x - 1.0), hi = floor(x + 1.0);
+  float layer = float(gFirst + gFace0);
+  // Gathering at the corner between texels (c, r) and (c + 1, r + 1) returns
+  // ((c, r+1), (c+1, r+1), (c+1, r), (c, r)).
+  vec4 a = textureGather(uShadowMaps, vec3((lo + 1.0) / resolution, layer));
+  vec4 b = textureGather(uShadowMaps, vec3((lo + vec2(3.0, 1.0)) / resolution, layer));
+  vec4 c = textureGather(uShadowMaps, vec3((lo + vec2(1.0, 3.0)) / resolution, layer));
+  vec4 d = textureGather(uShadowMaps, vec3((lo + 3.0) / resolution, layer));
+  vec4 receiver = vec4(gSc0.z);
+  vec4 row0 = vec4(greaterThanEqual(receiver, vec4(a.w, a.z, b.w, b.z)));
+  vec4 row1 = vec4(greaterThanEqual(receiver, vec4(a.x, a.y, b.x, b.y)));
+  vec4 row2 = vec4(greaterThanEqual(receiver, vec4(c.w, c.z, d.w, d.z)));
+  vec4 row3 = vec4(greaterThanEqual(receiver, vec4(c.x, c.y, d.x, d.y)));
+  vec4 rows = row0 + row1 + (hi.y - lo.y == 2.0 ? row2 : row3);
+  float cp = hi.x - lo.x;
+  return dot(rows, vec4(1.0, 1.0, cp == 2.0 ? 1.0 : 0.0, cp == 2.0 ? 0.0 : 1.0)) / 9.0;
+}
+
 // One tap at `offset` texels from the lookup point: (lit 0/1, stored depth, 1 if it read a map).
 vec3 tap(vec2 offset) {
   ivec2 texel = ivec2(floor(gSc0.xy * float(uResolution) + offset));
@@ -183,6 +215,9 @@ float pcss() {
 }
 
 float visibility() {
+#if defined(DIPTYCH_INTERIOR) && defined(DIPTYCH_PCF_GATHER)
+  if (uFilter == FILTER_PCF && uKernel == 3 && kFlatReceiver) return pcf3Gathered();
+#endif
   if (uFilter == FILTER_PCF) {
     int k = uKernel / 2;
     float lit = 0.0;

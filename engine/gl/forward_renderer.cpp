@@ -100,13 +100,13 @@ void setCamera(const Program& p, const ForwardView& view, const mat4& viewProjec
 }  // namespace
 
 const Program& ForwardRenderer::surface(const GlShadingBuffers& shading, bool behind,
-                                        bool transmissiveOnly, bool storedSurface) {
-  const int key = (behind ? 1 : 0) + (transmissiveOnly ? 2 : 0) + (storedSurface ? 4 : 0);
+                                        bool transmissiveOnly) {
+  const int key = (behind ? 1 : 0) + (transmissiveOnly ? 2 : 0);
   Program& p = surfaces_[key];
   if (!p) {
-    std::vector<ShaderDefine> own = {{"FORWARD_BEHIND", behind ? "1" : "0"},
-                                     {"FORWARD_TRANSMISSIVE_ONLY", transmissiveOnly ? "1" : "0"}};
-    if (storedSurface) own.push_back({"DIPTYCH_GBUFFER_SURFACE", "1"});
+    const std::vector<ShaderDefine> own = {
+        {"FORWARD_BEHIND", behind ? "1" : "0"},
+        {"FORWARD_TRANSMISSIVE_ONLY", transmissiveOnly ? "1" : "0"}};
     p = loadProgram({"forward.vert", "forward.frag"}, withDefines(shading.defines, own));
   }
   return p;
@@ -161,9 +161,8 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
     glDisable(GL_BLEND);
   }
   if (o.clipPlane) glEnable(GL_CLIP_DISTANCE0);
-  const bool stored = o.behindVisibility && o.behindSurface;
-  const Program& program = surface(shading, o.behindVisibility != nullptr,
-                                   o.behindVisibility && o.transmissiveFirstOnly, stored);
+  const bool transmissiveOnly = o.behindVisibility && o.transmissiveFirst;
+  const Program& program = surface(shading, o.behindVisibility != nullptr, transmissiveOnly);
   program.set("uViewProjection", viewProjection);
   setCamera(program, view, viewProjection, width, height);
   program.set("uClipPlane", o.clipPlane.value_or(vec4(0.f, 0.f, 0.f, 1.f)));
@@ -171,7 +170,7 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
   program.set("uLightCount", shading.lightCount);
   program.set("uBlend", o.blend ? 1 : 0);
   if (o.behindVisibility) glBindTextureUnit(0, o.behindVisibility->id());
-  if (stored) glBindTextureUnit(UNIT_GBUFFER_SURFACE, o.behindSurface->id());
+  if (transmissiveOnly) glBindTextureUnit(2, o.transmissiveFirst->id());  // forward.frag uFirst
   program.use();
   buffers.vertexArray.bind();
   buffers.bindStorage();

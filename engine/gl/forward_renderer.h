@@ -62,11 +62,12 @@ struct ForwardOptions {
   // pixel's first visible surface (see docs/forward-producers.md).
   const Texture* behindVisibility = nullptr;
   // With behindVisibility: draw only pixels whose first visible surface transmits (k_t > 0),
-  // for producers that zero every other pixel anyway (the blend producers).
-  bool transmissiveFirstOnly = false;
-  // With behindVisibility: the G-buffer's stored surface of the same frame (gbuffer_raster.h),
-  // read instead of rebuilding the first surface from the hits in every fragment.
-  const Texture* behindSurface = nullptr;
+  // for producers that zero every other pixel anyway (the blend producers). The texture holds,
+  // per pixel in .a, the distance from `eye` to that first surface where it transmits and a
+  // negative value where it does not (RGBA32F, same size; passes/raster/blend_transmission.h
+  // renderBlendFirst): both tests then read one texel instead of rebuilding the first surface
+  // and its material in every fragment.
+  const Texture* transmissiveFirst = nullptr;
 };
 
 // What a forward render draws: the scene and its uploaded geometry and shading buffers (passes
@@ -89,8 +90,7 @@ class ForwardRenderer {
   void ensureEnvironment(const Scene& scene);
   // forward.frag for (behind, transmissive-only) compiled for the scene on first use: constants
   // instead of uniforms, since llvmpipe would run the visibility-texel path for every fragment.
-  const Program& surface(const GlShadingBuffers& shading, bool behind, bool transmissiveOnly,
-                         bool storedSurface);
+  const Program& surface(const GlShadingBuffers& shading, bool behind, bool transmissiveOnly);
   std::map<int, Program> surfaces_;
   Program background_;
   Framebuffer framebuffer_;

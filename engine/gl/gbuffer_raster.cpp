@@ -1,6 +1,7 @@
 #include "engine/gl/gbuffer_raster.h"
 
 #include "engine/core/error.h"
+#include "engine/gl/closed_mesh.h"
 #include "engine/gl/debug.h"
 #include "engine/gl/shader.h"
 #include "engine/scene/camera_math.h"
@@ -132,6 +133,8 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glFrontFace(GL_CCW);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -165,11 +168,22 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   scene.vertexArray.bind();
   scene.bindStorage();
   if (shading) shading->bindStorage();
+  culledMeshes_ = 0;
   for (const GlMeshRange& mesh : scene.meshes) {
     if (mesh.triangleCount == 0) continue;
     const AlphaDraw mode = shading ? shading->alphaDraw(mesh.material) : AlphaDraw::Opaque;
     if (mode == AlphaDraw::Hidden) continue;
     const Program& program = mode == AlphaDraw::AlphaTested ? *alphaProgram : opaqueProgram;
+    // A closed mesh seen from outside: its back faces are hidden by its own front faces
+    // (closed_mesh.h). Alpha-tested meshes have holes: never culled.
+    const bool cull = cullClosed && mode == AlphaDraw::Opaque && mesh.closedOutward &&
+                      outsideBounds(camera.position, mesh.boundsLo, mesh.boundsHi);
+    if (cull) {
+      glEnable(GL_CULL_FACE);
+      ++culledMeshes_;
+    } else {
+      glDisable(GL_CULL_FACE);
+    }
     program.use();
     program.set("uInstance", std::uint32_t(mesh.instance));
     program.set("uFirstTriangle", mesh.firstTriangle);
@@ -178,6 +192,7 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
     glDrawElements(GL_TRIANGLES, GLsizei(3 * mesh.triangleCount), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));
   }
+  glDisable(GL_CULL_FACE);
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (withSurface) resolveSurface(*targets.hits, *targets.surface, *shading);

@@ -19,7 +19,8 @@
 // (u, v) are not interpolated attributes: the fragment shader intersects the pixel-centre
 // camera ray (the same ray as diptych::primaryRay) with the triangle fetched by gl_PrimitiveID
 // (Moller-Trumbore), so that the reconstructed position is the point Embree's primary ray would
-// hit, to float rounding. Culling is off: every visible surface counts, whatever its winding.
+// hit, to float rounding. Every visible surface counts, whatever its winding: back faces are
+// culled only on closed meshes seen from outside, where no back face can be the nearest.
 #include <map>
 #include <string>
 
@@ -54,6 +55,11 @@ struct GBufferTargets {
 class GBufferRasterizer {
  public:
   GBufferRasterizer();  // compiles gbuffer.vert/.frag from shaderDirectory(); throws Error
+  // Back-face culling of closed meshes seen from outside their bounds (closed_mesh.h): the same
+  // G-buffer, fewer fragments (test GBufferCulling.*). false draws every face.
+  bool cullClosed = true;
+  // Meshes the last render drew with back-face culling.
+  int culledMeshes() const { return culledMeshes_; }
   // Renders into `targets` (the surface too when allocated), which must have the formats above at
   // any W x H (the viewport follows their size). Sets its own GL state: clip control
   // lower-left/zero-to-one, depth GREATER with clear 0, no culling, no blending. With `shading`
@@ -75,6 +81,7 @@ class GBufferRasterizer {
               const GlShadingBuffers* shading);
 
  private:
+  int culledMeshes_ = 0;
   const Program& program(bool alpha, bool normal, const GlShadingBuffers* shading);
   const Program& surfaceProgram(const GlShadingBuffers& shading);
   // gbuffer_surface.comp over the finished hits: one surfaceFromHits per pixel, not per fragment.

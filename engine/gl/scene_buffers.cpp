@@ -4,6 +4,7 @@
 
 #include "engine/core/error.h"
 #include "engine/gl/bindings.h"
+#include "engine/gl/closed_mesh.h"
 
 namespace diptych::gl {
 
@@ -44,6 +45,11 @@ GlSceneBuffers uploadScene(const WorldGeometry& geometry) {
       }
       indices.push_back(std::uint32_t(base + i));
     }
+    range.closedOutward = isClosedOutward(mesh.positions, mesh.indices);
+    Aabb box;
+    for (const vec3& p : mesh.positions) box.extend(p);
+    range.boundsLo = box.lo;
+    range.boundsHi = box.hi;
     out.meshes.push_back(range);
   }
   out.vertexCount = positions.size() / 3;

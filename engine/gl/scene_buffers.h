@@ -17,6 +17,10 @@ struct GlMeshRange {
   int material = -1;  // WorldMesh::material, -1 = default material
   std::uint32_t firstTriangle = 0;
   std::uint32_t triangleCount = 0;
+  // The mesh bounds a solid with outward faces (closed_mesh.h), and its world bounds: the
+  // G-buffer culls its back faces when the eye is outside them.
+  bool closedOutward = false;
+  vec3 boundsLo{0.f}, boundsHi{0.f};
 };
 
 struct GlSceneBuffers {

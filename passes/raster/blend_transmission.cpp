@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 
+#include "engine/gl/bindings.h"
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
@@ -17,11 +18,14 @@ namespace diptych {
 namespace {
 
 // GL state of the blend producers, one per world: the forward pass's own depth buffer (the
-// G-buffer's depth is not an input of the slot) and the mask that zeroes non-transmissive pixels.
+// G-buffer's depth is not an input of the slot), the per-pixel first surface
+// (blend_transmission_first.frag) and the mask that zeroes non-transmissive pixels.
 struct BlendCache {
   gl::Texture depth;
+  gl::Texture first;  // RGBA32F: mask factor, first-surface distance (negative: not transmissive)
   // Compiled for the world's scene on first use; [1] reads the G-buffer's stored surface.
-  std::optional<FullscreenResolve> mask[2];
+  std::optional<FullscreenResolve> firstSurface[2];
+  std::optional<FullscreenResolve> mask;
   std::vector<Aabb> bounds;  // world bounds per mesh; the world's geometry is fixed
   const std::vector<Aabb>& meshBounds(const WorldGeometry& geometry) {
     if (bounds.size() != geometry.meshes.size()) {
@@ -35,6 +39,8 @@ struct BlendCache {
     if (depth && depth.width() == width && depth.height() == height) return;
     depth = gl::Texture::create2D(gl::TextureFormat::D32F, width, height);
     depth.setLabel("blend_transmission.depth");
+    first = gl::Texture::create2D(gl::TextureFormat::RGBA32F, width, height);
+    first.setLabel("blend_transmission.first");
   }
 };
 
@@ -76,6 +82,22 @@ bool overlap(const PixelRect& a, const PixelRect& b) {
 }
 
 }  // namespace
+
+void renderBlendFirst(RenderWorld& world, const gl::Texture& hits, const gl::Texture* surface,
+                      const vec3& eye, const gl::Texture& first, const glm::ivec4& scissor) {
+  auto& cache = world.glCached<BlendCache>();
+  std::optional<FullscreenResolve>& program = cache.firstSurface[surface ? 1 : 0];
+  if (!program) {
+    std::vector<gl::ShaderDefine> own;
+    if (surface) own.push_back({"DIPTYCH_GBUFFER_SURFACE", "1"});  // gl/gbuffer_surface.glsl
+    program.emplace(gl::loadProgram({"fullscreen.vert", "blend_transmission_first.frag"},
+                                    gl::withDefines(world.glShading().defines, own)));
+  }
+  gl::glBindTextureUnit(0, hits.id());
+  if (surface) gl::glBindTextureUnit(gl::UNIT_GBUFFER_SURFACE, surface->id());
+  program->program().set("uEye", eye);
+  program->draw(world, first, /*multiply=*/false, scissor);
+}
 
 std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry& world,
                                         const mat4& view) {
@@ -128,27 +150,33 @@ void BlendTransmissionPass::execute(PassContext& c) {
       covered.hi = glm::max(covered.hi, rects[m].hi);
     }
   }
-  const std::optional<glm::ivec4> scissor =
-      covered.empty() ? glm::ivec4(0) : glm::ivec4(covered.lo, covered.hi - covered.lo);
-  c.count("blend_scissor_pixels", covered.empty() ? 0.0 : double(scissor->z) * scissor->w);
+  c.count(
+      "blend_scissor_pixels",
+      covered.empty() ? 0.0 : double(covered.hi.x - covered.lo.x) * (covered.hi.y - covered.lo.y));
 
   // The slot's 0 outside the scissor (the passes below clear and write inside it only).
   clearToZero(out);
+  if (covered.empty()) return;
+  const glm::ivec4 scissor(covered.lo, covered.hi - covered.lo);
+
+  // The first visible surface of each pixel, rebuilt once here (the mask factor and the distance
+  // the forward passes' "strictly behind" test needs) rather than in every forward fragment.
+  renderBlendFirst(world, hits, surface_ != kNoResource ? &c.glTexture(surface_) : nullptr,
+                   view.eye, cache.first, scissor);
 
   // Lines 1-3 of the lecture's algorithm: opaque polygons with depth (and the background).
   gl::ForwardOptions opaque;
   opaque.instances = gl::InstanceSet::Opaque;
   opaque.behindVisibility = &hits;
-  opaque.behindSurface = surface_ != kNoResource ? &c.glTexture(surface_) : nullptr;
+  opaque.transmissiveFirst = &cache.first;
   opaque.scissor = scissor;
   opaque.explicitOrder = true;
   for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
     if (!shading::materialHasTransmission(scene.material(geometry.meshes[m].material)) &&
-        !covered.empty() && overlap(rects[m], covered))
+        overlap(rects[m], covered))
       opaque.order.push_back(int(m));
   // Only pixels whose first surface transmits keep their value (the mask below zeroes the
-  // rest), so the re-rendered scene is shaded there only.
-  opaque.transmissiveFirstOnly = true;
+  // rest), so the re-rendered scene is shaded there only (opaque.transmissiveFirst).
   renderer.render(world.forwardScene(), view, out, cache.depth, opaque);
 
   // Lines 4-10: transparent polygons in Z order, I = I_m + k_t M_t I, depth-tested, not written.
@@ -165,24 +193,17 @@ void BlendTransmissionPass::execute(PassContext& c) {
   transparent.depthWrite = false;
   transparent.blend = true;
   transparent.behindVisibility = &hits;
-  transparent.behindSurface = opaque.behindSurface;
+  transparent.transmissiveFirst = &cache.first;
   transparent.scissor = scissor;
   transparent.explicitOrder = true;
-  transparent.transmissiveFirstOnly = true;
   renderer.render(world.forwardScene(), view, out, cache.depth, transparent);
 
   // The slot's contract: 0 where the first surface transmits nothing. Inside the scissor only:
-  // outside it every pixel is already 0 (a full-screen mask rebuilt every pixel's surface).
-  if (covered.empty()) return;
-  gl::glBindTextureUnit(0, hits.id());
-  bindSurface(c, surface_);
-  std::optional<FullscreenResolve>& mask = cache.mask[surface_ != kNoResource ? 1 : 0];
-  if (!mask)
-    mask.emplace(
-        gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"},
-                        gl::withDefines(world.glShading().defines, surfaceDefines(surface_))));
-  mask->program().set("uEye", view.eye);
-  mask->draw(world, out, /*multiply=*/true, scissor);
+  // outside it every pixel is already 0.
+  gl::glBindTextureUnit(1, cache.first.id());
+  if (!cache.mask)
+    cache.mask.emplace(gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"}));
+  cache.mask->draw(world, out, /*multiply=*/true, scissor);
 }
 
 }  // namespace diptych

@@ -23,6 +23,10 @@ namespace diptych::shadowmap {
 class ShadowMapGl {
  public:
   ShadowMapGl();
+  // 3x3 PCF of the cube maps' interior pass by four textureGather (true) or by nine texelFetch
+  // (false): the same visibility, bit for bit (test ShadowLookup.GatheredPcfEqualsNineFetches);
+  // the gathers cost less on llvmpipe (docs/shadow-maps.md).
+  bool gatherPcf = true;
   // What mapsFor did this frame, for the pass's counters and the world's one-time costs.
   struct Built {
     int draws = 0;          // caster draws issued (0 when the cached maps were used)
@@ -54,7 +58,7 @@ class ShadowMapGl {
   const gl::Program& lookupProgram(RenderWorld& world, ViewKind kind, const Settings& settings,
                                    bool interior, bool surface);
   gl::Program depth_;
-  std::map<std::array<int, 6>, gl::Program> lookups_;
+  std::map<std::array<int, 7>, gl::Program> lookups_;
   gl::Texture lookupDepth_;  // marks pixels the interior cube pass has written
   gl::Program alphaDepth_;   // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
   gl::Framebuffer depthFbo_, lookupFbo_;

@@ -78,8 +78,8 @@ void ShadowMapGl::uploadFrusta(const std::vector<LightFrustum>& frusta, const Se
 const gl::Program& ShadowMapGl::lookupProgram(RenderWorld& world, ViewKind kind, const Settings& s,
                                               bool interior, bool surface) {
   const int kernel = s.filter == Filter::Pcf ? s.kernel : 1;  // only PCF reads the kernel
-  gl::Program& program =
-      lookups_[{int(kind), int(s.bias), int(s.filter), kernel, int(interior), int(surface)}];
+  gl::Program& program = lookups_[{int(kind), int(s.bias), int(s.filter), kernel, int(interior),
+                                   int(surface), int(gatherPcf)}];
   if (!program) {
     std::vector<gl::ShaderDefine> defines = {{"DIPTYCH_KIND", std::to_string(int(kind))},
                                              {"DIPTYCH_BIAS", std::to_string(int(s.bias))},
@@ -87,6 +87,7 @@ const gl::Program& ShadowMapGl::lookupProgram(RenderWorld& world, ViewKind kind,
                                              {"DIPTYCH_KERNEL", std::to_string(kernel)}};
     if (interior) defines.push_back({"DIPTYCH_INTERIOR", ""});
     if (surface) defines.push_back({"DIPTYCH_GBUFFER_SURFACE", "1"});
+    if (gatherPcf) defines.push_back({"DIPTYCH_PCF_GATHER", ""});
     program = gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"},
                               gl::withDefines(world.glShading().defines, defines));
   }
