@@ -40,15 +40,6 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, cons
   return shade(p, -ray.direction, depth, seed);
 }
 
-namespace {
-// shading::lightContribution with its response already computed: the same expression, in the
-// same order, so the sum is bit for bit the one lightContribution gives.
-vec3 contribution(const vec3& response, const shading::LightSample& s, float visibility) {
-  const vec3 lit = shading::saturate01(visibility) * s.radiance * response;
-  return glm::min(lit, vec3(shading::SHADING_FLT_MAX));
-}
-}  // namespace
-
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
   vec3 sum(0.f);
   const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
@@ -65,7 +56,7 @@ vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t s
     if (response == vec3(0.f)) continue;
     const float visibility = lightVisibility(rt_, light, receiver, settings_.areaSamples, seed);
     rays_.add(std::uint64_t(shadowRaysPerReceiver(light, settings_.areaSamples)));
-    sum += contribution(response, s, visibility);
+    sum += shading::lightContributionOf(response, s, visibility);
   }
   return sum;
 }
