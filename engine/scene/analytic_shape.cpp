@@ -164,8 +164,8 @@ void partBounds(const AnalyticShape& s, int part, dvec3& lo, dvec3& hi) {
   }
 }
 
-std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, const dvec3& o,
-                                            const dvec3& d, double tmin, double tmax) {
+double partDistance(const AnalyticShape& s, int part, const dvec3& o, const dvec3& d, double tmin,
+                    double tmax) {
   const double r = s.radius, h = s.height;
   double t = kMiss;
   switch (s.type) {
@@ -184,15 +184,21 @@ std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, co
       t = part == 0 ? coneHit(r, h, o, d, tmin, tmax) : planeHit(-0.5 * h, r, o, d, tmin, tmax);
       break;
   }
-  if (std::isnan(t)) return std::nullopt;  // every helper's roots compare > tmin: never NaN
+  return t;  // every helper's roots compare > tmin: a hit is never NaN
+}
+
+std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, const dvec3& o,
+                                            const dvec3& d, double tmin, double tmax) {
+  const double t = partDistance(s, part, o, d, tmin, tmax);
+  if (std::isnan(t)) return std::nullopt;
   return t;
 }
 
 std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dvec3& o,
                                       const dvec3& d, double tmin, double tmax) {
-  const std::optional<double> t = intersectPartDistance(s, part, o, d, tmin, tmax);
-  if (!t) return std::nullopt;
-  return ShapeHit{*t, part, shapeUv(s, part, o + *t * d)};
+  const double t = partDistance(s, part, o, d, tmin, tmax);
+  if (std::isnan(t)) return std::nullopt;
+  return ShapeHit{t, part, shapeUv(s, part, o + t * d)};
 }
 
 std::optional<ShapeHit> intersectShape(const AnalyticShape& s, const dvec3& o, const dvec3& d,
