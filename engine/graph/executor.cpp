@@ -118,10 +118,7 @@ GraphExecutor::MeasuredRun GraphExecutor::runMeasured(
     if (f == warmup) clearTimings();
     const std::map<std::string, double> frameBefore = world_.oneTimeMs;
     runFrame();
-    if (f == 0)
-      for (const NodeTiming& t : timings_)
-        if (!t.cpuMs.empty())
-          run.firstFrameMs += t.cpuMs.back() + (t.glWaitMs.empty() ? 0.0 : t.glWaitMs.back());
+    if (f == 0) run.firstFrameMs = frameMs_.back();
     if (f >= warmup && world_.oneTimeMs != frameBefore && !run.repeatedAFrame) {
       run.repeatedAFrame = true;
       clearTimings();
@@ -160,6 +157,22 @@ void GraphExecutor::readQueries() const {
   pending_.clear();
 }
 
+// Waits for the GL work issued since the last wait; its wall and CPU time go to the node that
+// issued it (glCompletion*) and, when asked, to the caller (the next node's glWait*).
+void GraphExecutor::waitForGl(double* waitMs, double* waitCpuMs) {
+  if (!glIssuedBy_) return;
+  timings_[*glIssuedBy_].glOverlapMs.push_back(glIssuedClock_.milliseconds());
+  Stopwatch wait;
+  const double cpuStart = processCpuMs();
+  gl_->finish();
+  const double ms = wait.milliseconds(), cpu = processCpuMs() - cpuStart;
+  timings_[*glIssuedBy_].glCompletionMs.push_back(ms);
+  timings_[*glIssuedBy_].glCompletionCpuMs.push_back(cpu);
+  glIssuedBy_.reset();
+  if (waitMs) *waitMs = ms;
+  if (waitCpuMs) *waitCpuMs = cpu;
+}
+
 void GraphExecutor::runFrame() {
   // Attribution (docs/frame-graph.md, Timing): a GL node's GL work is its own GL_TIME_ELAPSED
   // query, read after the measured frames (no node waits on a query). Before a GL node or
@@ -174,15 +187,13 @@ void GraphExecutor::runFrame() {
     const GraphNode& node = graph_.nodes[n];
     NodeTiming& timing = timings_[n];
     timing.counters.clear();
-    const bool glWork = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
-                        node.kind == NodeKind::Upload;
+    const bool glWork = node.issuesGlWork();
     std::optional<gl::ScopedGlLabel> label;
     if (glWork) {
-      Stopwatch wait;
-      const double waitCpuStart = processCpuMs();
-      if (glIssued_) gl_->finish();
-      timing.glWaitMs.push_back(glIssued_ ? wait.milliseconds() : 0.0);
-      timing.glWaitCpuMs.push_back(processCpuMs() - waitCpuStart);
+      double waitMs = 0, waitCpuMs = 0;
+      waitForGl(&waitMs, &waitCpuMs);
+      timing.glWaitMs.push_back(waitMs);
+      timing.glWaitCpuMs.push_back(waitCpuMs);
       label.emplace(node.name);
       const std::size_t slot = pending_.size() + frameQueries.size();
       gl_->beginTimer(slot);
@@ -217,11 +228,17 @@ void GraphExecutor::runFrame() {
     }
     if (glWork) {
       gl_->endTimer();
-      glIssued_ = true;
+      glIssuedBy_ = n;
+      glIssuedClock_.restart();
     }
     timing.cpuMs.push_back(clock.milliseconds());
     timing.processCpuMs.push_back(processCpuMs() - cpuStart);
+    // A readback returns with its work done (it copies into client memory): nothing of it is
+    // pending beside the CPU nodes after it. Outside its clocks, like every completion.
+    if (node.kind == NodeKind::Readback) waitForGl(nullptr, nullptr);
   }
+  // The last GL node's work completes inside its frame, and is charged to it.
+  waitForGl(nullptr, nullptr);
   frameMs_.push_back(frameClock.milliseconds());
   for (PendingQuery& q : frameQueries) q.frameMs = frameMs_.back();
   pending_.insert(pending_.end(), frameQueries.begin(), frameQueries.end());

@@ -5,9 +5,11 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "engine/core/timing.h"
 #include "engine/graph/frame_graph.h"
 #include "engine/graph/gl_backend.h"
 
@@ -24,6 +26,18 @@ struct NodeTiming {
   // The CPU time of all threads over that wait: on llvmpipe the rasterizer threads run the
   // earlier nodes' GL work in it, so CPU-time totals of a frame must add it (docs/frame-graph.md).
   std::vector<double> glWaitCpuMs;
+  // GL nodes and transfers only: the wait, after the node returned, until its own GL work was
+  // complete (measured before the next GL node starts, or at the end of the frame), and the CPU
+  // time of all threads over it. On llvmpipe that CPU time is the node's rasterization run by
+  // the rasterizer threads, so processCpuMs + glCompletionCpuMs is the node's whole CPU cost;
+  // on a hardware GPU it is near zero (the CPU sleeps while the GPU works).
+  std::vector<double> glCompletionMs;
+  std::vector<double> glCompletionCpuMs;
+  // GL nodes and transfers only: the wall time from the node's return to the start of that
+  // wait, in which the CPU nodes scheduled after it ran beside its GL work (0 when the next
+  // node is GL work itself, and for a readback, whose work is done when it returns). The
+  // export names those nodes (`overlapped_by`).
+  std::vector<double> glOverlapMs;
   std::map<std::string, double> counters;  // last frame's counters (e.g. rays)
 };
 
@@ -41,7 +55,7 @@ class GraphExecutor {
 
   // What runMeasured did besides its frames.
   struct MeasuredRun {
-    double firstFrameMs = 0;  // CPU time of the first frame (every node, GL waits included)
+    double firstFrameMs = 0;  // wall time of the first frame (every node, its GL work included)
     std::map<std::string, double> oneTimeMs;  // RenderWorld::oneTimeMs added during the run
     bool repeatedAFrame = false;              // see runMeasured
   };
@@ -75,7 +89,11 @@ class GraphExecutor {
   mutable std::vector<NodeTiming> timings_;
   mutable std::vector<PendingQuery> pending_;
   std::vector<double> frameMs_;
-  bool glIssued_ = false;  // GL work issued since the executor last waited for the GL
+  // The GL node or transfer whose GL work was issued since the executor last waited for the
+  // GL (the wait is charged to it as its completion); none after a wait.
+  std::optional<std::size_t> glIssuedBy_;
+  Stopwatch glIssuedClock_;  // since glIssuedBy_ returned
+  void waitForGl(double* waitMs, double* waitCpuMs);
 };
 
 }  // namespace diptych

@@ -22,6 +22,10 @@ nlohmann::json timingJson(const NodeTiming& t) {
   if (!t.gpuMs.empty()) j["gpu_ms"] = timingStatsJson(t.gpuMs);
   if (!t.glWaitMs.empty()) j["gl_wait_ms"] = timingStatsJson(t.glWaitMs);
   if (!t.glWaitCpuMs.empty()) j["gl_wait_cpu_ms"] = timingStatsJson(t.glWaitCpuMs);
+  if (!t.glCompletionMs.empty()) j["gl_completion_ms"] = timingStatsJson(t.glCompletionMs);
+  if (!t.glCompletionCpuMs.empty())
+    j["gl_completion_cpu_ms"] = timingStatsJson(t.glCompletionCpuMs);
+  if (!t.glOverlapMs.empty()) j["gl_overlap_ms"] = timingStatsJson(t.glOverlapMs);
   for (const auto& [name, value] : t.counters) j["counters"][name] = value;
   return j;
 }
@@ -83,6 +87,14 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
       jn["to"] = domainName(node.domain);
       jn["bytes"] = g.resources[node.resource].desc.bytes();
       if (node.forOutputOnly) jn["for_output_only"] = true;
+    }
+    if (node.issuesGlWork() && node.kind != NodeKind::Readback) {
+      // The CPU nodes that run while this node's GL work may still be going on: the executor
+      // waits for it before the next GL work, or at the end of the frame.
+      jn["overlapped_by"] = nlohmann::json::array();
+      for (std::size_t later = n + 1; later < g.nodes.size() && !g.nodes[later].issuesGlWork();
+           ++later)
+        jn["overlapped_by"].push_back(g.nodes[later].name);
     }
     if (timings && n < timings->size()) jn["timing"] = timingJson((*timings)[n]);
     j["schedule"].push_back(jn);

@@ -53,8 +53,7 @@ std::size_t CompiledGraph::bytesWithReuse() const {
 
 bool CompiledGraph::usesGl() const {
   for (const GraphNode& n : nodes)
-    if (n.domain == Domain::Gl || n.kind == NodeKind::Readback || n.kind == NodeKind::Upload)
-      return true;
+    if (n.issuesGlWork()) return true;
   return false;
 }
 
@@ -121,8 +120,42 @@ void cullUnrequested(CompiledGraph& g) {
   }
 }
 
-// Emits the schedule: live passes in setup order, with transfers and defaults just before the
-// first node that needs them, and a readback for every output that lives on the GPU.
+// The order live passes run in: dependency order, and among the passes whose inputs are all
+// produced, GL passes first (then setup order). GL work is submitted without waiting for it, so
+// a GL pass issued before independent CPU passes runs while they do (on a GPU, in parallel;
+// on llvmpipe, on its rasterizer threads); issued after them, it would find the CPU idle
+// waiting for it. This is list scheduling with the longest-latency work first.
+std::vector<PassIndex> issueOrder(const CompiledGraph& g, const std::vector<PassIndex>& order) {
+  std::vector<PassIndex> pending, issued;
+  for (PassIndex p : order)
+    if (!g.passes[p].culled) pending.push_back(p);
+  std::set<PassIndex> done;
+  auto ready = [&](PassIndex p) {
+    for (ResourceId r : g.passes[p].reads) {
+      const PassIndex producer = g.resources[r].producer;
+      if (!g.passes[producer].culled && !done.count(producer)) return false;
+    }
+    return true;
+  };
+  while (!pending.empty()) {
+    // `order` is topological, so its first pending pass is always ready.
+    auto next = std::find_if(pending.begin(), pending.end(), [&](PassIndex p) {
+      return g.passes[p].domain == Domain::Gl && ready(p);
+    });
+    if (next == pending.end()) next = pending.begin();
+    issued.push_back(*next);
+    done.insert(*next);
+    pending.erase(next);
+  }
+  return issued;
+}
+
+// Emits the schedule: live passes in issue order, transfers and defaults just before the first
+// node that needs them, and a readback at the end for every requested output that lives on the
+// GPU. Except: before a GL pass is issued, the readbacks that the CPU passes whose producers have
+// all run already need are done first. The executor waits for all earlier GL work before a
+// transfer (executor.cpp), so such a readback placed after the GL pass, before its first CPU
+// reader, would wait for that pass too, and the CPU passes could not run beside its GL work.
 void schedule(CompiledGraph& g, const std::vector<PassIndex>& order) {
   auto storageFor = [&](ResourceId r, Domain d) {
     auto key = std::make_pair(r, d);
@@ -153,9 +186,24 @@ void schedule(CompiledGraph& g, const std::vector<PassIndex>& order) {
     g.nodes.push_back(node);
     return s;
   };
-  for (PassIndex p : order) {
+  const std::vector<PassIndex> issued = issueOrder(g, order);
+  std::set<PassIndex> done;
+  auto producerDone = [&](ResourceId r) {
+    const PassIndex producer = g.resources[r].producer;
+    return g.passes[producer].culled || done.count(producer) > 0;
+  };
+  for (std::size_t i = 0; i < issued.size(); ++i) {
+    const PassIndex p = issued[i];
     GraphPass& pass = g.passes[p];
-    if (pass.culled) continue;
+    for (std::size_t later = i + 1; pass.domain == Domain::Gl && later < issued.size(); ++later) {
+      const GraphPass& cpuPass = g.passes[issued[later]];
+      if (cpuPass.domain != Domain::Cpu ||
+          !std::all_of(cpuPass.reads.begin(), cpuPass.reads.end(), producerDone))
+        continue;
+      for (ResourceId r : cpuPass.reads)
+        if (producerLive(r) && g.passes[g.resources[r].producer].domain == Domain::Gl)
+          ensure(r, Domain::Cpu);
+    }
     GraphNode node{.kind = NodeKind::Pass, .name = pass.name, .domain = pass.domain, .pass = p};
     for (ResourceId r : pass.reads) node.storagesRead.push_back(ensure(r, pass.domain));
     for (ResourceId w : pass.writes) {
@@ -170,6 +218,7 @@ void schedule(CompiledGraph& g, const std::vector<PassIndex>& order) {
       }
     }
     g.nodes.push_back(node);
+    done.insert(p);
   }
   for (ResourceId out : g.outputs) {
     const std::size_t before = g.nodes.size();

@@ -53,6 +53,10 @@ struct GraphNode {
   // A readback (or default fill) that no pass needs: it exists only because the resource was
   // requested as an output (e.g. compare's per-slot signals).
   bool forOutputOnly = false;
+  // GL passes, transfers and GL fills submit GL work, which completes after the node returns.
+  bool issuesGlWork() const {
+    return domain == Domain::Gl || kind == NodeKind::Readback || kind == NodeKind::Upload;
+  }
 };
 
 // A physical allocation of one resource in one domain (in-place versions share it).

@@ -55,11 +55,14 @@ void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const Ren
       "per-node timings: median of %d frames after %d warm-up frames (CPU: steady_clock; GPU: "
       "the node's own GL_TIME_ELAPSED, read after the measured frames, so no node waits on its "
       "query; gl wait: before a GL node or transfer starts, the wait for GL work that earlier "
-      "nodes issued, kept out of its cpu ms; CPU nodes do not wait, GL work overlaps them)\n",
+      "nodes issued, kept out of its cpu ms; CPU nodes do not wait, GL work overlaps them; "
+      "all-thread cpu: CPU time of all the process's threads over the node plus over the wait "
+      "for its own GL work to complete, i.e. on llvmpipe the node's rasterization too; "
+      "overlap: wall time the CPU nodes after a GL node ran while its GL work was pending)\n",
       o.frames, o.warmup);
-  std::printf("%-34s %-9s %-4s %11s %11s %11s %14s\n", "node", "kind", "dom", "cpu ms", "gpu ms",
-              "gl wait ms", "Mrays/s");
-  double total = 0;
+  std::printf("%-34s %-9s %-4s %11s %11s %11s %15s %11s %14s\n", "node", "kind", "dom", "cpu ms",
+              "gpu ms", "gl wait ms", "all-thread cpu", "overlap ms", "Mrays/s");
+  double total = 0, totalThreads = 0;
   for (std::size_t n = 0; n < g.nodes.size(); ++n) {
     const NodeTiming& t = ex.timings()[n];
     const double cpu = summarize(t.cpuMs).median;
@@ -71,11 +74,18 @@ void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const Ren
     std::string rate = "-";
     if (auto it = t.counters.find("rays"); it != t.counters.end() && cpu > 0)
       rate = fmt::format("{:.2f}", it->second / (cpu * 1e3));
-    std::printf("%-34s %-9s %-4s %11.3f %11s %11s %14s\n", g.nodes[n].name.c_str(),
+    const double threads =
+        summarize(t.processCpuMs).median +
+        (t.glCompletionCpuMs.empty() ? 0.0 : summarize(t.glCompletionCpuMs).median);
+    totalThreads += threads;
+    const std::string overlap =
+        t.glOverlapMs.empty() ? "-" : fmt::format("{:.3f}", summarize(t.glOverlapMs).median);
+    std::printf("%-34s %-9s %-4s %11.3f %11s %11s %15.3f %11s %14s\n", g.nodes[n].name.c_str(),
                 nodeKindName(g.nodes[n].kind), domainName(g.nodes[n].domain), cpu, gpu.c_str(),
-                wait.c_str(), rate.c_str());
+                wait.c_str(), threads, overlap.c_str(), rate.c_str());
   }
-  std::printf("%-34s %-9s %-4s %11.3f\n", "total (sum of cpu medians)", "", "", total);
+  std::printf("%-34s %-9s %-4s %11.3f %11s %11s %15.3f\n", "total (sum of medians)", "", "", total,
+              "", "", totalThreads);
   std::printf("%-34s %-9s %-4s %11.3f\n", "frame wall (median)", "", "",
               summarize(ex.frameMs()).median);
   for (const GraphPass& p : g.passes)
@@ -193,7 +203,11 @@ void runRender(const RenderOptions& o) {
         "process_cpu_ms (CPU time of all threads), gpu_ms (the node's own GL_TIME_ELAPSED "
         "query, read after the measured frames: no node waits on its query) and, for GL "
         "nodes and transfers, gl_wait_ms (the wait, before the node's clocks, for GL work "
-        "earlier nodes issued; that work is in their gpu_ms). frame_ms: wall time per frame",
+        "earlier nodes issued; that work is in their gpu_ms), gl_completion_ms and "
+        "gl_completion_cpu_ms (the same wait charged to the node whose GL work it was, taken "
+        "before the next GL node or at the frame's end; process_cpu_ms + gl_completion_cpu_ms "
+        "is a node's whole CPU cost, on llvmpipe its rasterization included). frame_ms: wall "
+        "time per frame",
         o.frames, o.warmup);
     j["frame_ms"] = timingStatsJson(executor.frameMs());
     j["scene"] = o.scene;

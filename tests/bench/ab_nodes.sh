@@ -32,8 +32,10 @@ for side in ("old", "new"):
             # (the "old" side) wrote the last frame's value as a counter.
             cpu = (t["process_cpu_ms"]["median"] if "process_cpu_ms" in t
                    else t.get("counters", {}).get("process_cpu_ms", 0.0))
-            # The wait before a GL node is CPU time of the frame too (llvmpipe's threads).
-            cpu += t.get("gl_wait_cpu_ms", {}).get("median", 0.0)
+            # The wait for a GL node's work to complete is its CPU time too (llvmpipe's
+            # threads). Binaries before gl_completion_cpu_ms charged it to the next GL node
+            # (gl_wait_cpu_ms): frame totals compare across the change, GL nodes do not.
+            cpu += t.get("gl_completion_cpu_ms", t.get("gl_wait_cpu_ms", {})).get("median", 0.0)
             total += cpu
             nodes.setdefault(n["name"], {"old": [], "new": []})[side].append(
                 (cpu, t.get("cpu_ms", {}).get("median", 0.0)))

@@ -4,8 +4,9 @@
 Each configuration (a binary, a recipe, optionally a shader folder for DIPTYCH_SHADER_DIR)
 renders the scene with `--frames N --warmup 2 --timings`; per node, the median over the timed
 frames of process_cpu_ms (CPU time of all threads over the node: llvmpipe's and TBB's) plus the
-median of gl_wait_cpu_ms (the wait before a GL node, in which llvmpipe's threads run the earlier
-nodes' GL work), as tests/bench/ab_nodes.sh sums them; the frame is the sum over nodes. One-time
+median of gl_completion_cpu_ms (the wait for the node's own GL work to complete, in which
+llvmpipe's threads rasterize it), as tests/bench/ab_nodes.sh sums them; the frame is the sum
+over nodes. One-time
 work done in the warm-up frames (static shadow maps, prefiltered environments) is outside it.
 Configurations run alternately, RUNS times; medians over runs are printed, frame and per node.
 The images go to OUT/<label>-<run>.exr (compare them with tests/tools/compare_exr.py).
@@ -30,7 +31,9 @@ def run(label, binary, recipe, shaders, scene, size, n, path):
     for node in json.load(open(path + ".json"))["schedule"]:
         t = node.get("timing", {})
         cpu = t.get("process_cpu_ms", {}).get("median", 0.0)
-        cpu += t.get("gl_wait_cpu_ms", {}).get("median", 0.0)
+        # The node's own GL work, completed after it returned (binaries before
+        # gl_completion_cpu_ms: the wait before the next GL node, charged to that node).
+        cpu += t.get("gl_completion_cpu_ms", t.get("gl_wait_cpu_ms", {})).get("median", 0.0)
         nodes[node["name"]] = cpu
     return nodes
 

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <numeric>
+#include <optional>
 
 #include "engine/graph/executor.h"
 #include "engine/graph/export.h"
@@ -35,29 +36,37 @@ Recipe shadowRecipe() {
   return recipe;
 }
 
+// The shadow sphere at 96x72 through `recipe`, one warm-up frame (the first query of a context
+// may read garbage and be dropped) and `frames` measured ones.
+struct TimedRun {
+  Scene scene = loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
+  CompiledGraph graph;
+  RenderWorld world{scene, &gl::testing::osmesaContext()};
+  std::optional<GraphExecutor> ex;
+  TimedRun(const Recipe& recipe, int frames)
+      : graph(compileGraph(recipe, builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
+                           {"sm.visibility", "rt.visibility"})) {
+    ex.emplace(graph, world);
+    ex->runFrame();
+    ex->clearTimings();
+    for (int f = 0; f < frames; ++f) ex->runFrame();
+  }
+};
+
 }  // namespace
 
 TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
-  const Scene scene =
-      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
-  const Recipe recipe = shadowRecipe();
-  const CompiledGraph graph =
-      compileGraph(recipe, builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
-                   {"sm.visibility", "rt.visibility"});
-  RenderWorld world(scene, &gl::testing::osmesaContext());
-  GraphExecutor ex(graph, world);
-  ex.runFrame();  // warm-up: the first query of a context may read garbage and be dropped
-  ex.clearTimings();
   constexpr int kFrames = 3;
-  for (int f = 0; f < kFrames; ++f) ex.runFrame();
+  const TimedRun run(shadowRecipe(), kFrames);
+  const CompiledGraph& graph = run.graph;
+  const GraphExecutor& ex = *run.ex;
   int glNodes = 0;
   for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
     const GraphNode& node = graph.nodes[n];
     const NodeTiming& t = ex.timings()[n];
     SCOPED_TRACE(node.name);
     EXPECT_EQ(t.cpuMs.size(), std::size_t(kFrames));
-    const bool gl = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
-                    node.kind == NodeKind::Upload;
+    const bool gl = node.issuesGlWork();
     if (!gl) {
       EXPECT_TRUE(t.gpuMs.empty());
       continue;
@@ -83,17 +92,10 @@ TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
 // intervals inside the frame's wall time, so their sum cannot exceed it (before this, the wait
 // sat inside the CPU time of the first node that synchronised).
 TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) {
-  const Scene scene =
-      loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/shadow-sphere.json");
-  const CompiledGraph graph =
-      compileGraph(shadowRecipe(), builtinPasses(), scene, FrameSettings{96, 72, scene.camera},
-                   {"sm.visibility", "rt.visibility"});
-  RenderWorld world(scene, &gl::testing::osmesaContext());
-  GraphExecutor ex(graph, world);
-  ex.runFrame();
-  ex.clearTimings();
   constexpr int kFrames = 4;
-  for (int f = 0; f < kFrames; ++f) ex.runFrame();
+  const TimedRun run(shadowRecipe(), kFrames);
+  const CompiledGraph& graph = run.graph;
+  const GraphExecutor& ex = *run.ex;
   ASSERT_EQ(ex.frameMs().size(), std::size_t(kFrames));
   const nlohmann::json j = graphToJson(graph, &ex.timings());
   ASSERT_EQ(j["schedule"].size(), graph.nodes.size());
@@ -102,10 +104,11 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
     const GraphNode& node = graph.nodes[n];
     const nlohmann::json& t = j["schedule"][n]["timing"];
     SCOPED_TRACE(node.name);
-    const bool gl = node.domain == Domain::Gl || node.kind == NodeKind::Readback ||
-                    node.kind == NodeKind::Upload;
+    const bool gl = node.issuesGlWork();
     std::vector<std::string> figures = {"cpu_ms", "process_cpu_ms"};
-    if (gl) figures.insert(figures.end(), {"gpu_ms", "gl_wait_ms", "gl_wait_cpu_ms"});
+    if (gl)
+      figures.insert(figures.end(), {"gpu_ms", "gl_wait_ms", "gl_wait_cpu_ms", "gl_completion_ms",
+                                     "gl_completion_cpu_ms"});
     for (const std::string& f : figures) {
       ASSERT_TRUE(t.contains(f)) << f;
       EXPECT_EQ(t[f]["samples"], kFrames) << f;
@@ -116,6 +119,7 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
     EXPECT_EQ(t.contains("gpu_ms"), gl);
     EXPECT_EQ(t.contains("gl_wait_ms"), gl);
     EXPECT_EQ(t.contains("gl_wait_cpu_ms"), gl);
+    EXPECT_EQ(t.contains("gl_completion_cpu_ms"), gl);
     EXPECT_FALSE(t.contains("counters") && t["counters"].contains("process_cpu_ms"));
     waits += gl;
   }
@@ -125,5 +129,80 @@ TEST(ExecutorGlTiming, ExportKeepsEachNodesGlWaitApartAndSummarisesEveryFigure) 
     for (const NodeTiming& t : ex.timings())
       inside += t.cpuMs[f] + (t.glWaitMs.empty() ? 0.0 : t.glWaitMs[f]);
     EXPECT_LE(inside, ex.frameMs()[f]) << "frame " << f;
+  }
+}
+
+// A GL node's work completes after the node returns; the wait for it, taken before the next GL
+// node or at the frame's end, is charged to the node that issued the work (gl_completion_*), so
+// per node process_cpu_ms + gl_completion_cpu_ms is its whole CPU cost. Each wait is one
+// interval: the next GL node's gl_wait of a frame is the same figure as the previous GL node's
+// completion, and the last GL node's completion (frame end) is inside the frame.
+TEST(ExecutorGlTiming, TheWaitForANodesGlWorkIsChargedToThatNode) {
+  constexpr int kFrames = 3;
+  const TimedRun run(shadowRecipe(), kFrames);
+  const CompiledGraph& graph = run.graph;
+  const GraphExecutor& ex = *run.ex;
+  std::vector<std::size_t> glNodes;
+  for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
+    const GraphNode& node = graph.nodes[n];
+    const NodeTiming& t = ex.timings()[n];
+    if (node.issuesGlWork()) {
+      glNodes.push_back(n);
+      EXPECT_EQ(t.glCompletionMs.size(), std::size_t(kFrames)) << node.name;
+      EXPECT_EQ(t.glCompletionCpuMs.size(), std::size_t(kFrames)) << node.name;
+    } else {
+      EXPECT_TRUE(t.glCompletionMs.empty()) << node.name << ": CPU nodes issue no GL work";
+    }
+  }
+  ASSERT_GE(glNodes.size(), 3u);
+  for (int f = 0; f < kFrames; ++f) {
+    SCOPED_TRACE("frame " + std::to_string(f));
+    EXPECT_EQ(ex.timings()[glNodes.front()].glWaitMs[f], 0.0)
+        << "the previous frame's GL work completed inside that frame";
+    for (std::size_t k = 1; k < glNodes.size(); ++k) {
+      const NodeTiming& before = ex.timings()[glNodes[k - 1]];
+      const NodeTiming& after = ex.timings()[glNodes[k]];
+      SCOPED_TRACE(graph.nodes[glNodes[k]].name);
+      if (graph.nodes[glNodes[k - 1]].kind == NodeKind::Readback) {
+        // A readback's work is done when it returns; the executor takes its (empty) completion
+        // at once, so the next GL node has nothing to wait for.
+        EXPECT_EQ(after.glWaitMs[f], 0.0);
+        continue;
+      }
+      EXPECT_EQ(before.glCompletionMs[f], after.glWaitMs[f]);
+      EXPECT_EQ(before.glCompletionCpuMs[f], after.glWaitCpuMs[f]);
+    }
+    double inside = 0;
+    for (const NodeTiming& t : ex.timings())
+      inside += t.cpuMs[f] + (t.glCompletionMs.empty() ? 0.0 : t.glCompletionMs[f]);
+    EXPECT_LE(inside, ex.frameMs()[f]);
+  }
+}
+
+// GL work is submitted without waiting for it, so the compiler issues a GL pass before the CPU
+// passes that do not depend on it (here listed after them), reads back first what those CPU
+// passes need (the executor waits for all earlier GL work before a transfer), and the CPU passes
+// then run while the GL pass's work is pending: the export names them, the timings measure it.
+TEST(ExecutorGlTiming, CpuPassesRunBesideTheGlWorkOfAPassIssuedBeforeThem) {
+  Recipe recipe = shadowRecipe();
+  std::swap(recipe.passes[1], recipe.passes[2]);  // rt_shadows (CPU) listed before shadow_map
+  constexpr int kFrames = 3;
+  const TimedRun run(recipe, kFrames);
+  const CompiledGraph& graph = run.graph;
+  const GraphExecutor& ex = *run.ex;
+  std::vector<std::string> names;
+  for (const GraphNode& n : graph.nodes) names.push_back(n.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"gbuffer", "readback:gbuffer.hits", "sm", "rt",
+                                             "readback:sm.visibility"}));
+  const nlohmann::json j = graphToJson(graph, &ex.timings());
+  EXPECT_EQ(j["schedule"][2]["overlapped_by"], nlohmann::json::array({"rt"}));
+  EXPECT_FALSE(j["schedule"][1].contains("overlapped_by"))
+      << "a readback's work is done when it returns";
+  ASSERT_EQ(ex.timings()[2].glOverlapMs.size(), std::size_t(kFrames));
+  for (int f = 0; f < kFrames; ++f) {
+    EXPECT_GE(ex.timings()[2].glOverlapMs[f], ex.timings()[3].cpuMs[f])
+        << "the wait for the shadow map's work starts after rt_shadows ran";
+    EXPECT_LT(ex.timings()[1].glOverlapMs[f], ex.timings()[3].cpuMs[f])
+        << "nothing of the readback is pending while rt_shadows runs";
   }
 }

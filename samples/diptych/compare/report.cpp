@@ -52,6 +52,21 @@ th{background:#f3f3f3}td:first-child{text-align:left}tr.pareto td:first-child{fo
 .split img{display:block}.split img.top{position:absolute;top:0;left:0;clip-path:inset(0 calc(100% - var(--pos)) 0 0)}
 .split input{width:100%}.caption{font-size:12px;color:#555}img.plot{max-width:100%})";
 
+// One-time costs (results.json "one_time_ms", what -> ms, of the run or of a variant): their
+// sum, and the list "what ms, ..." the report shows.
+struct OneTimeCosts {
+  double totalMs = 0;
+  std::string parts;
+};
+OneTimeCosts oneTimeCosts(const nlohmann::json& costs) {
+  OneTimeCosts c;
+  for (const auto& [what, ms] : costs.items()) {
+    c.totalMs += ms.get<double>();
+    c.parts += fmt::format("{}{} {:.1f} ms", c.parts.empty() ? "" : ", ", what, ms.get<double>());
+  }
+  return c;
+}
+
 }  // namespace
 
 std::string htmlEscape(const std::string& s) {
@@ -130,10 +145,8 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
   for (const auto& v : results["variants"]) {
     csv << v["name"].get<std::string>() << "," << v["total_ms"].get<double>() << ","
         << v["rays"].get<double>() << "," << (v["pareto"].get<bool>() ? 1 : 0) << ",";
-    double oneTime = 0;  // the sum of the variant's one-time costs (results.json lists them)
-    const nlohmann::json costs = v.value("one_time_ms", nlohmann::json::object());
-    for (const auto& [what, ms] : costs.items()) oneTime += ms.get<double>();
-    csv << oneTime;
+    csv << oneTimeCosts(v.value("one_time_ms", nlohmann::json::object()))
+               .totalMs;  // the sum (results.json lists them)
     for (const auto& m : metricNames)
       csv << "," << (v["metrics"].contains(m) ? v["metrics"][m].dump() : "");
     for (const auto& p : passNames)
@@ -167,12 +180,10 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       header["reference"]["cached"].get<bool>() ? ", cached" : "",
       header["size"]["width"].get<int>(), header["size"]["height"].get<int>(),
       htmlEscape(header["method"].get<std::string>()));
-  std::string oneTime;
-  for (const auto& [what, ms] : header["one_time_ms"].items())
-    oneTime += fmt::format("{}{} {:.1f} ms", oneTime.empty() ? "" : ", ", what, ms.get<double>());
   page +=
       fmt::format("<p id=\"devices\">Measured on {}. One-time costs, not in any frame: {}.</p>\n",
-                  htmlEscape(deviceSummary(header["devices"])), htmlEscape(oneTime));
+                  htmlEscape(deviceSummary(header["devices"])),
+                  htmlEscape(oneTimeCosts(header["one_time_ms"]).parts));
   page +=
       "<h2>Error against time</h2>\n<img class=\"plot\" src=\"plot.svg\" alt=\"error versus time "
       "plot\">\n";
@@ -198,21 +209,13 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
                               v["signals"][slot]["relative_rmse"].get<double>());
     // Work the variant did once for the world (static shadow maps, prefiltered environments):
     // outside its frame time, listed in the cell's tooltip.
-    double oneTimeMs = 0;
-    std::string oneTimeParts;
-    // Named: the range of a range-for over a temporary's items() would dangle.
-    const nlohmann::json costs = v.value("one_time_ms", nlohmann::json::object());
-    for (const auto& [what, ms] : costs.items()) {
-      oneTimeMs += ms.get<double>();
-      oneTimeParts +=
-          fmt::format("{}{} {:.1f} ms", oneTimeParts.empty() ? "" : ", ", what, ms.get<double>());
-    }
+    const OneTimeCosts oneTime = oneTimeCosts(v.value("one_time_ms", nlohmann::json::object()));
     page += fmt::format(
         "<tr class=\"{}\"><td>{}</td><td>{:.2f}</td><td>{:.2f}x</td><td title=\"{}\">{:.1f}</td>"
         "<td>{:.0f}</td>",
         v["pareto"].get<bool>() ? "pareto" : "", htmlEscape(v["name"].get<std::string>()),
         v["total_ms"].get<double>(), v["speedup_vs_reference"].get<double>(),
-        htmlEscape(oneTimeParts), oneTimeMs, v["rays"].get<double>());
+        htmlEscape(oneTime.parts), oneTime.totalMs, v["rays"].get<double>());
     for (const auto& m : shown)
       page += "<td>" + number(v["metrics"].value(m, nlohmann::json())) + "</td>";
     page += "<td style=\"text-align:left\">" + htmlEscape(signal) + "</td></tr>\n";

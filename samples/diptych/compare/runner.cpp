@@ -26,7 +26,8 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
     // time to issue its commands (on llvmpipe that includes vertex processing and binning on
     // the calling thread) and its GL time the rest, so its figure is their sum; a transfer's
     // figure is its own GL time. The wait for earlier nodes' GL work is kept out of every
-    // node's CPU time (glWaitMs); the frame total adds it back (docs/frame-graph.md).
+    // node's CPU time (glWaitMs, and glCompletionMs of the node that issued it); the frame total
+    // adds it back once (docs/frame-graph.md).
     const GraphNode& node = run.graph.nodes[n];
     const bool transfer = node.kind != NodeKind::Pass;
     const double gl = t.gpuMs.empty() ? 0.0 : summarize(t.gpuMs).median;
@@ -35,8 +36,9 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
     // work: the frame's own output (outputs[0], the image) still counts.
     const bool measurementOnly = node.forOutputOnly && !outputs.empty() &&
                                  run.graph.resources[node.resource].name != outputs.front();
-    // The wait before a node is for earlier frame work, measured or not: it always counts.
-    run.totalMs += t.glWaitMs.empty() ? 0.0 : summarize(t.glWaitMs).median;
+    // The wait for a node's GL work to complete (before the next GL node or at the frame's end)
+    // is frame work, measured or not: it always counts.
+    run.totalMs += t.glCompletionMs.empty() ? 0.0 : summarize(t.glCompletionMs).median;
     if (!measurementOnly) run.totalMs += ms;
     if (auto it = run.timings[n].counters.find("rays"); it != run.timings[n].counters.end())
       run.rays += it->second;
