@@ -101,6 +101,9 @@ class RtScene {
   // (u, v), as makeSurfacePoint does, skip its two sincos).
   std::optional<Hit> intersect(const Ray& ray, float tnear, float tfar,
                                bool wantNormal = true) const;
+  // The same into `hit` (untouched on a miss); false on a miss. For the per-ray loops: no
+  // std::optional<Hit> copied through the stack.
+  bool intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool wantNormal) const;
   // Any hit in [tnear, tfar].
   bool occluded(const vec3& origin, const vec3& direction, float tnear, float tfar) const;
 

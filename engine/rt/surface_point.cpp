@@ -89,23 +89,35 @@ vec3 normalMapped(const Texture& map, float scale, const vec3& n, const vec4& ta
 
 namespace {
 
+// The point's fields in one aggregate initialisation, for triangles and analytic parts alike:
+// the material is resolved straight into the result, not zero-filled, built apart and copied
+// (the struct is ~250 bytes; issue 14's profile). n is the shading normal on the front side: the
+// back sees the same surface. resolvedFrom is scene.material(material).
+SurfacePoint assemble(const Scene& scene, const SurfaceHit& hit, const vec3& position,
+                      const vec3& magnitude, const vec3& faceNormal, const vec3& n, bool front,
+                      vec2 uv, int material, const Material& resolvedFrom) {
+  return SurfacePoint{.hit = hit,
+                      .position = position,
+                      .positionMagnitude = magnitude,
+                      .faceNormal = faceNormal,
+                      .geometricNormal = front ? faceNormal : -faceNormal,
+                      .shadingNormal = front ? n : -n,
+                      .frontFacing = front,
+                      .uv = uv,
+                      .material = material,
+                      .resolved = resolveMaterial(scene, resolvedFrom, uv)};
+}
+
 // SDF objects: the point is the tracer's (within the tolerance of the surface, outside it);
 // the offset scale is the object's box, as for quadrics. uv: (0, 0), as the polygonisation's.
 SurfacePoint makeSdfPoint(const Scene& scene, const WorldMesh& mesh, const SurfaceHit& hit,
                           const vec3& incoming) {
   const AnalyticInstance& a = *mesh.analytic;
   const dvec3 p(hit.u, hit.v, std::bit_cast<float>(hit.primitive));
-  SurfacePoint s;
-  s.hit = hit;
-  s.position = sdfPosition(a, p);
-  s.positionMagnitude = a.magnitude;
-  s.faceNormal = sdfNormal(a, p);
-  s.frontFacing = glm::dot(s.faceNormal, incoming) <= 0.f;
-  s.geometricNormal = s.frontFacing ? s.faceNormal : -s.faceNormal;
-  s.shadingNormal = s.geometricNormal;
-  s.material = mesh.material;
-  s.resolved = resolveMaterial(scene, scene.material(mesh.material), s.uv);
-  return s;
+  const vec3 faceNormal = sdfNormal(a, p);
+  const bool front = glm::dot(faceNormal, incoming) <= 0.f;
+  return assemble(scene, hit, sdfPosition(a, p), a.magnitude, faceNormal, faceNormal, front,
+                  vec2(0.f), mesh.material, scene.material(mesh.material));
 }
 
 // The exact surface: position and normal rebuilt from the part's uv in double and rounded once.
@@ -138,18 +150,8 @@ SurfacePoint makeAnalyticPoint(const Scene& scene, const WorldMesh& mesh, const 
     }
     if (material.bump) n = bumpMapNormal(scene, *material.bump, uv, tu, tv, n);
   }
-  // Built in one aggregate initialisation: the material is resolved straight into the result,
-  // not zero-filled, built apart and copied (the struct is ~250 bytes; issue 14's profile).
-  return SurfacePoint{.hit = hit,
-                      .position = position,
-                      .positionMagnitude = a.magnitude,
-                      .faceNormal = faceNormal,
-                      .geometricNormal = front ? faceNormal : -faceNormal,
-                      .shadingNormal = front ? n : -n,
-                      .frontFacing = front,
-                      .uv = uv,
-                      .material = mesh.material,
-                      .resolved = resolveMaterial(scene, material, uv)};
+  return assemble(scene, hit, position, a.magnitude, faceNormal, n, front, uv, mesh.material,
+                  material);
 }
 
 }  // namespace
@@ -195,19 +197,10 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, co
                          mesh.uvs[tri[0]], mesh.uvs[tri[1]], mesh.uvs[tri[2]]);
     n = bumpMapNormal(scene, *material.bump, uv, t.tu, t.tv, n);
   }
-  // One aggregate initialisation, as makeAnalyticPoint's. The shading normal is mapped first:
-  // the back sees the same surface.
-  return SurfacePoint{.hit = hit,
-                      .position = position,
-                      .positionMagnitude = vertexMagnitude(
-                          mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]),
-                      .faceNormal = faceNormal,
-                      .geometricNormal = front ? faceNormal : -faceNormal,
-                      .shadingNormal = front ? n : -n,
-                      .frontFacing = front,
-                      .uv = uv,
-                      .material = mesh.material,
-                      .resolved = resolveMaterial(scene, material, uv)};
+  return assemble(
+      scene, hit, position,
+      vertexMagnitude(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]),
+      faceNormal, n, front, uv, mesh.material, material);
 }
 
 Ray spawnRay(const SurfacePoint& p, const vec3& direction) {

@@ -21,33 +21,24 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, cons
   if (depth > settings_.maxDepth) return vec3(0.f);
   rays_.add(1);
   // Hit::Ng only for an observer: the shading rebuilds the normal (makeSurfacePoint).
-  const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), bool(observer_));
-  if (observer_) observer_({ray, depth, hit});
+  Hit h;
+  const bool found =
+      rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, bool(observer_));
+  if (observer_) observer_({ray, depth, found ? std::optional<Hit>(h) : std::nullopt});
   if (hitDistance)
     *hitDistance =
-        hit ? hit->t * glm::length(ray.direction) : std::numeric_limits<float>::infinity();
-  if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
-  SurfacePoint p = makeSurfacePoint(scene_, world_,
-                                    {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
+        found ? h.t * glm::length(ray.direction) : std::numeric_limits<float>::infinity();
+  if (!found) return sampleEnvironment(scene_.environment, ray.direction);
+  SurfacePoint p = makeSurfacePoint(scene_, world_, {h.instance, h.primitive, h.u, h.v, h.analytic},
                                     ray.direction);
   if (cone && settings_.rayCones) {
-    const RayCone at{cone->width + cone->spread * hit->t * glm::length(ray.direction),
-                     cone->spread};
+    const RayCone at{cone->width + cone->spread * h.t * glm::length(ray.direction), cone->spread};
     p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
                                  coneUvLod(world_, p, ray.direction, at.width));
     return shade(p, -ray.direction, depth, seed, &at);
   }
   return shade(p, -ray.direction, depth, seed);
 }
-
-namespace {
-// shading::lightContribution with its response already computed: the same expression, in the
-// same order, so the sum is bit for bit the one lightContribution gives.
-vec3 contribution(const vec3& response, const shading::LightSample& s, float visibility) {
-  const vec3 lit = shading::saturate01(visibility) * s.radiance * response;
-  return glm::min(lit, vec3(shading::SHADING_FLT_MAX));
-}
-}  // namespace
 
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
   vec3 sum(0.f);
@@ -65,7 +56,7 @@ vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t s
     if (response == vec3(0.f)) continue;
     const float visibility = lightVisibility(rt_, light, receiver, settings_.areaSamples, seed);
     rays_.add(std::uint64_t(shadowRaysPerReceiver(light, settings_.areaSamples)));
-    sum += contribution(response, s, visibility);
+    sum += shading::lightContributionOf(response, s, visibility);
   }
   return sum;
 }

@@ -73,6 +73,13 @@ double sphereHit(double r, const dvec3& o, const dvec3& d, double tmin, double t
   // computed directly instead of as the difference of two large numbers.
   const double a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - r * r;
   if (a == 0.0) return kMiss;
+  // A clear miss is told by the naive b^2 - a c, without the division and square root below:
+  // its rounding error is a few ulps of the terms' magnitude m, so below -1e-9 m the exact
+  // discriminant, and the careful one below, are negative too. Most candidate rays (Embree
+  // calls this for every ray entering the sphere's box) end here; a NaN or inf compares false
+  // and takes the careful path. The result is the careful path's, bit for bit.
+  const double bb = b * b, ac = a * c;
+  if (bb - ac < -1e-9 * (bb + std::abs(ac) + a * r * r)) return kMiss;
   const double l = glm::length(o - (b / a) * d);
   const double disc = a * (r - l) * (r + l);
   if (disc < 0.0) return kMiss;
@@ -157,8 +164,8 @@ void partBounds(const AnalyticShape& s, int part, dvec3& lo, dvec3& hi) {
   }
 }
 
-std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, const dvec3& o,
-                                            const dvec3& d, double tmin, double tmax) {
+double partDistance(const AnalyticShape& s, int part, const dvec3& o, const dvec3& d, double tmin,
+                    double tmax) {
   const double r = s.radius, h = s.height;
   double t = kMiss;
   switch (s.type) {
@@ -177,15 +184,21 @@ std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, co
       t = part == 0 ? coneHit(r, h, o, d, tmin, tmax) : planeHit(-0.5 * h, r, o, d, tmin, tmax);
       break;
   }
-  if (std::isnan(t)) return std::nullopt;  // every helper's roots compare > tmin: never NaN
+  return t;  // every helper's roots compare > tmin: a hit is never NaN
+}
+
+std::optional<double> intersectPartDistance(const AnalyticShape& s, int part, const dvec3& o,
+                                            const dvec3& d, double tmin, double tmax) {
+  const double t = partDistance(s, part, o, d, tmin, tmax);
+  if (std::isnan(t)) return std::nullopt;
   return t;
 }
 
 std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dvec3& o,
                                       const dvec3& d, double tmin, double tmax) {
-  const std::optional<double> t = intersectPartDistance(s, part, o, d, tmin, tmax);
-  if (!t) return std::nullopt;
-  return ShapeHit{*t, part, shapeUv(s, part, o + *t * d)};
+  const double t = partDistance(s, part, o, d, tmin, tmax);
+  if (std::isnan(t)) return std::nullopt;
+  return ShapeHit{t, part, shapeUv(s, part, o + t * d)};
 }
 
 std::optional<ShapeHit> intersectShape(const AnalyticShape& s, const dvec3& o, const dvec3& d,

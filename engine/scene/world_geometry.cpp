@@ -158,8 +158,8 @@ bool analyticPartOccludes(const AnalyticInstance& a, int part, const vec3& o, co
   // The same arithmetic as intersectAnalyticPart, so both agree on every ray.
   const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
   const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
-  const auto t = intersectPartDistance(a.shape, part, oo, od, double(tmin), double(tmax));
-  return t && float(*t) >= tmin && float(*t) <= tmax;
+  const double t = partDistance(a.shape, part, oo, od, double(tmin), double(tmax));
+  return !std::isnan(t) && float(t) >= tmin && float(t) <= tmax;
 }
 
 std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3& o, const vec3& d,

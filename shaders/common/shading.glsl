@@ -228,6 +228,11 @@ SHADING_FN LightSample sampleLight(ShadingLight light, vec3 p) {
   if (light.range > 0.0f && d > light.range) return LightSample(l, d, vec3(0.0f));
   float inv = 1.0f / d;
   float falloff = min(inv * inv, SHADING_FLT_MAX);  // inv * inv may overflow to inf
+  // A point light has no axis: the cone cosine and the area are formed only for the lights that
+  // use them (a point light's shading skipped a normalisation it never read; issue 14's profile).
+  if (light.type == LIGHT_POINT) {
+    return LightSample(l, d, min(emitted * falloff, vec3(SHADING_FLT_MAX)));
+  }
   vec3 axis = safeNormalize(light.direction);
   float cosEmit = dot(axis, -l);  // cosine between the light's axis and the path to p
   float area = light.area > 0.0f ? min(light.area, SHADING_FLT_MAX) : 0.0f;  // NaN -> 0
@@ -269,11 +274,17 @@ SHADING_FN vec3 directResponse(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
   return directTerm(m, n, v, l);
 }
 
+// One summand of the lecture's sum, V_i S_i L_dir,i, given the response L_dir,i already formed
+// (the Whitted tracer forms it first, to trace shadow rays only where it is not zero).
+SHADING_FN vec3 lightContributionOf(vec3 response, LightSample s, float visibility) {
+  vec3 lit = saturate01(visibility) * s.radiance * response;
+  return min(lit, vec3(SHADING_FLT_MAX));  // S_i near FLT_MAX times a factor > 1 saturates
+}
+
 // One summand of the lecture's sum: V_i S_i L_dir,i (L_dir,i by the material's model).
 SHADING_FN vec3 lightContribution(ShadingMaterial m, vec3 n, vec3 v, LightSample s,
                                   float visibility) {
-  vec3 lit = saturate01(visibility) * s.radiance * directResponse(m, n, v, s.l);
-  return min(lit, vec3(SHADING_FLT_MAX));  // S_i near FLT_MAX times a factor > 1 saturates
+  return lightContributionOf(directResponse(m, n, v, s.l), s, visibility);
 }
 
 // M_E + A_G: the terms that do not depend on any light (the same in both models: A_G is the

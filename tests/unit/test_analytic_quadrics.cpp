@@ -64,6 +64,28 @@ TEST(AnalyticQuadrics, SphereKnownTInsideTangentAndMiss) {
   EXPECT_DOUBLE_EQ(hit->t, 1e7 - 2.0);
 }
 
+TEST(AnalyticQuadrics, SphereGrazingRaysAtEveryScaleHitInsideAndMissOutside) {
+  // sphereHit rejects clear misses by the naive discriminant before its careful one: a ray
+  // passing a millionth of the radius inside the rim must still hit, from near and far, at every
+  // scale and with unnormalised directions, and one that far outside must miss.
+  for (const float r : {1e-3f, 1.f, 1e3f}) {
+    const AnalyticShape s = shape(ShapeType::Sphere, r);
+    for (const double distance : {3.0, 1e4}) {
+      for (const double length : {1.0, 1e-2, 1e3}) {
+        const dvec3 d(0.0, 0.0, length);
+        const double z = -distance * double(r);
+        const auto inside = hitOf(s, {double(r) * (1.0 - 1e-6), 0.0, z}, d);
+        ASSERT_TRUE(inside) << "r " << r << " distance " << distance << " |d| " << length;
+        EXPECT_NEAR(inside->t * length, -z, 1e-2 * double(r));
+        EXPECT_FALSE(hitOf(s, {double(r) * (1.0 + 1e-6), 0.0, z}, d))
+            << "r " << r << " distance " << distance << " |d| " << length;
+        // Far off to the side: the early rejection; the same answer as ever.
+        EXPECT_FALSE(hitOf(s, {3.0 * double(r), 0.0, z}, d));
+      }
+    }
+  }
+}
+
 TEST(AnalyticQuadrics, DiscBothSidesAndEdge) {
   const AnalyticShape s = shape(ShapeType::Disc, 1.f);
   auto hit = hitOf(s, {0.5, 3, 0.2}, {0, -1, 0});
