@@ -24,8 +24,13 @@ inline constexpr float kClosedMeshWeld = 1e-6f;
 // non-manifold or inconsistently wound edges give false.
 bool isClosedOutward(const std::vector<vec3>& positions, const std::vector<std::uint32_t>& indices);
 
-// Whether `eye` is outside the box that holds a mesh, with a relative margin: then it is
-// outside the solid too. Conservative: an eye inside the box but outside the solid is not culled.
-bool outsideBounds(const vec3& eye, const vec3& lo, const vec3& hi);
+// Whether `eye` is farther than `clearance` from the box that holds a mesh, with a relative
+// margin: then it is outside the solid too. Conservative: an eye inside the box but outside the
+// solid is not culled. The G-buffer passes its near plane's reach as `clearance`: nearer, the
+// near plane could clip the front faces and leave the back faces nearest.
+bool outsideBounds(const vec3& eye, const vec3& lo, const vec3& hi, float clearance = 0.f);
+// The farthest a point of the near plane's visible rectangle is from the eye: znear at the
+// centre, znear sqrt(1 + tan^2(fov/2) (1 + aspect^2)) at its corners.
+float nearPlaneReach(float znear, float verticalFov, float aspect);
 
 }  // namespace diptych::gl

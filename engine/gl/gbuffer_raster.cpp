@@ -169,6 +169,7 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   scene.bindStorage();
   if (shading) shading->bindStorage();
   culledMeshes_ = 0;
+  const float nearReach = nearPlaneReach(camera.znear, camera.verticalFov, aspect);
   for (const GlMeshRange& mesh : scene.meshes) {
     if (mesh.triangleCount == 0) continue;
     const AlphaDraw mode = shading ? shading->alphaDraw(mesh.material) : AlphaDraw::Opaque;
@@ -177,7 +178,7 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
     // A closed mesh seen from outside: its back faces are hidden by its own front faces
     // (closed_mesh.h). Alpha-tested meshes have holes: never culled.
     const bool cull = cullClosed && mode == AlphaDraw::Opaque && mesh.closedOutward &&
-                      outsideBounds(camera.position, mesh.boundsLo, mesh.boundsHi);
+                      outsideBounds(camera.position, mesh.boundsLo, mesh.boundsHi, nearReach);
     if (cull) {
       glEnable(GL_CULL_FACE);
       ++culledMeshes_;

@@ -62,7 +62,8 @@ class GBufferRasterizer {
   int culledMeshes() const { return culledMeshes_; }
   // Renders into `targets` (the surface too when allocated), which must have the formats above at
   // any W x H (the viewport follows their size). Sets its own GL state: clip control
-  // lower-left/zero-to-one, depth GREATER with clear 0, no culling, no blending. With `shading`
+  // lower-left/zero-to-one, depth GREATER with clear 0, back faces culled only for closed meshes
+  // seen from outside (cullClosed, closed_mesh.h), no blending. With `shading`
   // (uploaded from the same scene), alpha-masked materials cut out their holes: meshes whose
   // coverage is constant and below the cutoff are not drawn, textured masks are drawn with a
   // program variant that discards fragments below the cutoff (compiled on first need, so opaque

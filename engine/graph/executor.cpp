@@ -140,6 +140,7 @@ void GraphExecutor::clearTimings() {
   for (NodeTiming& t : timings_) t = NodeTiming{};
   frameMs_.clear();
   frameGlWaitMs_.clear();
+  frameGlWaitCpuMs_.clear();
 }
 
 GraphExecutor::MeasuredRun GraphExecutor::runMeasured(
@@ -281,8 +282,10 @@ void GraphExecutor::runFrame() {
   waitForGl(nullptr, nullptr);
   if (sync_ == GlSync::PerFrame && glFramePending) {
     Stopwatch wait;
+    const double cpuStart = processCpuMs();
     gl_->finish();
     frameGlWaitMs_.push_back(wait.milliseconds());
+    frameGlWaitCpuMs_.push_back(processCpuMs() - cpuStart);
   }
   frameMs_.push_back(frameClock.milliseconds());
   for (PendingQuery& q : frameQueries) q.frameMs = frameMs_.back();

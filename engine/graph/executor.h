@@ -92,8 +92,10 @@ class GraphExecutor {
   GlSync glSync() const { return sync_; }
   // "node (auto: software rasterizer llvmpipe ...)", "frame (asked)": for reports.
   const std::string& glSyncReason() const { return syncReason_; }
-  // GlSync::PerFrame: the wait at the end of each measured frame for its GL work.
+  // GlSync::PerFrame: the wait at the end of each measured frame for its GL work, and the CPU
+  // time of all threads over it (on llvmpipe, rasterization).
   const std::vector<double>& frameGlWaitMs() const { return frameGlWaitMs_; }
+  const std::vector<double>& frameGlWaitCpuMs() const { return frameGlWaitCpuMs_; }
 
  private:
   friend class ExecutionContext;
@@ -112,7 +114,7 @@ class GraphExecutor {
   mutable std::vector<NodeTiming> timings_;
   mutable std::vector<PendingQuery> pending_;
   std::vector<double> frameMs_;
-  std::vector<double> frameGlWaitMs_;
+  std::vector<double> frameGlWaitMs_, frameGlWaitCpuMs_;
   GlSync sync_ = GlSync::PerNode;
   std::string syncReason_;
   // The GL node or transfer whose GL work was issued since the executor last waited for the

@@ -89,8 +89,9 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
       if (node.forOutputOnly) jn["for_output_only"] = true;
     }
     if (node.issuesGlWork() && node.kind != NodeKind::Readback) {
-      // The CPU nodes that run while this node's GL work may still be going on: the executor
-      // waits for it before the next GL work, or at the end of the frame.
+      // The CPU nodes that run while this node's GL work may still be going on: with GlSync
+      // PerNode the executor waits for it before the next GL work or at the end of the frame
+      // (with PerFrame the work may go on longer, beside later GL nodes too).
       jn["overlapped_by"] = nlohmann::json::array();
       for (std::size_t later = n + 1; later < g.nodes.size() && !g.nodes[later].issuesGlWork();
            ++later)

@@ -29,11 +29,11 @@ class BlendTransmissionPass : public Pass {
   ResourceId surface_ = kNoResource;
 };
 
-// Step one of the blend producers (shaders/blend_transmission_first.frag): into `first` (RGBA32F, the size of
-// `hits`), inside `scissor` (x, y, width, height), per pixel whose first visible surface
-// transmits: rgb = the mask's factor, a = that surface's distance from `eye`; elsewhere
-// (0, 0, 0, -1). Reads the G-buffer's stored surface when `surface` is given. The forward passes
-// read it (gl::ForwardOptions::transmissiveFirst) instead of rebuilding the surface per fragment.
+// Step one of the blend producers (shaders/blend_transmission_first.frag): into `first` (RGBA32F,
+// the size of `hits`), inside `scissor` (x, y, width, height), per pixel whose first visible
+// surface transmits: rgb = the mask's factor, a = that surface's distance from `eye`; elsewhere (0,
+// 0, 0, -1). Reads the G-buffer's stored surface when `surface` is given. The forward passes read
+// it (gl::ForwardOptions::transmissiveFirst) instead of rebuilding the surface per fragment.
 void renderBlendFirst(RenderWorld& world, const gl::Texture& hits, const gl::Texture* surface,
                       const vec3& eye, const gl::Texture& first, const glm::ivec4& scissor);
 

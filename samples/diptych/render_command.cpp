@@ -215,13 +215,16 @@ void runRender(const RenderOptions& o) {
         "gl_completion_cpu_ms (the same wait charged to the node whose GL work it was, taken "
         "before the next GL node or at the frame's end; process_cpu_ms + gl_completion_cpu_ms "
         "is a node's whole CPU cost, on llvmpipe its rasterization included); with gl_sync "
-        "frame, no wait per node but one at the frame's end (frame_gl_wait_ms). frame_ms: wall "
+        "frame, no wait per node but one at the frame's end (frame_gl_wait_ms, and its CPU time "
+        "frame_gl_wait_cpu_ms). frame_ms: wall "
         "time per frame",
         o.frames, o.warmup);
     j["gl_sync"] = executor.glSyncReason();
     j["frame_ms"] = timingStatsJson(executor.frameMs());
-    if (!executor.frameGlWaitMs().empty())
+    if (!executor.frameGlWaitMs().empty()) {
       j["frame_gl_wait_ms"] = timingStatsJson(executor.frameGlWaitMs());
+      j["frame_gl_wait_cpu_ms"] = timingStatsJson(executor.frameGlWaitCpuMs());
+    }
     j["scene"] = o.scene;
     j["devices"] = devices;
     j["one_time_ms"] = world.oneTimeMs;

@@ -26,7 +26,10 @@ nodes, totals = {}, {"old": [], "new": []}
 for side in ("old", "new"):
     for r in range(1, runs + 1):
         total = 0.0
-        for n in json.load(open(f"{out}/{side}-{r}.json"))["schedule"]:
+        timings = json.load(open(f"{out}/{side}-{r}.json"))
+        # --gl-sync frame: the frame's GL work completes in one wait at its end.
+        total += timings.get("frame_gl_wait_cpu_ms", {}).get("median", 0.0)
+        for n in timings["schedule"]:
             t = n.get("timing", {})
             # A median summary since the timing export's 2026-11-29 change; older binaries
             # (the "old" side) wrote the last frame's value as a counter.

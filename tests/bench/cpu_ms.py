@@ -28,7 +28,10 @@ def run(label, binary, recipe, shaders, scene, size, n, path):
                     str(n), "--warmup", "2", "--timings", path + ".json", "--out", path + ".exr"],
                    env=env, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     nodes = {}
-    for node in json.load(open(path + ".json"))["schedule"]:
+    timings = json.load(open(path + ".json"))
+    if "frame_gl_wait_cpu_ms" in timings:  # --gl-sync frame: the frame's GL work completes here
+        nodes["gl wait at frame end"] = timings["frame_gl_wait_cpu_ms"]["median"]
+    for node in timings["schedule"]:
         t = node.get("timing", {})
         cpu = t.get("process_cpu_ms", {}).get("median", 0.0)
         # The node's own GL work, completed after it returned (binaries before

@@ -3,8 +3,9 @@
 //  - isClosedOutward accepts a closed, outward-wound solid (a cube, the samples' UV spheres with
 //    their degenerate pole triangles) and refuses a reversed, open, doubled or mis-wound one;
 //  - the G-buffer with culling is the G-buffer without, bit for bit, from the scene camera, from
-//    a camera near a sphere and from one inside a sphere, where culling is off (the eye is inside
-//    its bounds) and the view shows the sphere's inside.
+//    a camera near a sphere, from one inside a sphere and from one nearer a sphere than the near
+//    plane, where culling is off (the eye is inside its bounds, or the near plane could clip its
+//    front faces) and the view shows the sphere's inside.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -74,10 +75,41 @@ TEST(ClosedMesh, ACubeIsClosedOutwardItsVariantsAreNot) {
   EXPECT_FALSE(gl::isClosedOutward(p, {}));
 }
 
-TEST(ClosedMesh, EyeOutsideBoundsIsStrict) {
+// Each connected piece must be outward: a cube with a separate inside-out cube within passes the
+// total-volume test (1 - 1/8 > 0) but culling would remove the near side of the inverted one.
+// Far from the origin the weld grid and the volumes stay exact (cells from the mesh's own box).
+TEST(ClosedMesh, EveryPieceMustBeOutwardAndFarMeshesAreJudgedAlike) {
+  const std::vector<vec3> p = cubeCorners();
+  const std::vector<std::uint32_t> t = cubeTriangles();
+  std::vector<vec3> shell = p;
+  std::vector<std::uint32_t> shellTriangles = t;
+  for (const vec3& c : p) shell.push_back(0.25f + 0.5f * c);
+  for (std::size_t i = 0; i < t.size(); i += 3)  // the inner cube, wound inward
+    shellTriangles.insert(shellTriangles.end(), {t[i] + 8, t[i + 2] + 8, t[i + 1] + 8});
+  EXPECT_FALSE(gl::isClosedOutward(shell, shellTriangles)) << "an inside-out piece";
+  std::vector<std::uint32_t> twoOutward = t;
+  for (std::uint32_t i : t) twoOutward.push_back(i + 8);
+  std::vector<vec3> apart = p;
+  for (const vec3& c : p) apart.push_back(c + vec3(3.f));
+  EXPECT_TRUE(gl::isClosedOutward(apart, twoOutward)) << "two outward pieces";
+
+  std::vector<vec3> far;
+  for (const vec3& c : p) far.push_back(vec3(1e5f) + 0.3f * c);
+  EXPECT_TRUE(gl::isClosedOutward(far, t));
+  std::vector<vec3> unusedFar = p;
+  unusedFar.push_back(vec3(3e38f));  // a vertex no triangle uses
+  EXPECT_TRUE(gl::isClosedOutward(unusedFar, t));
+}
+
+TEST(ClosedMesh, EyeOutsideBoundsIsStrictAndKeepsTheNearPlaneClear) {
   EXPECT_TRUE(gl::outsideBounds(vec3(2.f, 0.5f, 0.5f), vec3(0.f), vec3(1.f)));
   EXPECT_FALSE(gl::outsideBounds(vec3(0.5f), vec3(0.f), vec3(1.f)));
   EXPECT_FALSE(gl::outsideBounds(vec3(1.f, 0.5f, 0.5f), vec3(0.f), vec3(1.f))) << "on the box";
+  EXPECT_FALSE(gl::outsideBounds(vec3(1.01f, 0.5f, 0.5f), vec3(0.f), vec3(1.f), 0.05f))
+      << "the near plane could clip the front faces";
+  EXPECT_TRUE(gl::outsideBounds(vec3(1.1f, 0.5f, 0.5f), vec3(0.f), vec3(1.f), 0.05f));
+  // 90 degrees, square: the corners of the near rectangle are znear sqrt(3) away.
+  EXPECT_FLOAT_EQ(gl::nearPlaneReach(0.1f, 1.5707964f, 1.f), 0.1f * std::sqrt(3.f));
 }
 
 Scene whitted() {
@@ -114,13 +146,19 @@ TEST(GBufferCulling, TheHitsAreTheSameWithAndWithoutCulling) {
   Camera inside = near;
   inside.position = vec3(-0.5f, 1.1f, 1.2f);  // inside the sphere
   inside.target = vec3(-0.5f, 1.f, 0.f);
+  // 0.01 outside the glass sphere's box (z = 1.8), nearer than the near plane (0.05): the
+  // front faces are clipped and the back faces are what the G-buffer sees; culling must be off.
+  Camera clipped = near;
+  clipped.position = vec3(-0.5f, 1.f, 1.81f);
+  clipped.target = vec3(-0.5f, 1.f, 0.f);
+  clipped.znear = 0.05f;
   struct Case {
     const char* name;
     Camera camera;
     int culled;
   };
-  for (const Case& c :
-       {Case{"scene", scene.camera, 2}, Case{"near", near, 2}, Case{"inside", inside, 1}}) {
+  for (const Case& c : {Case{"scene", scene.camera, 2}, Case{"near", near, 2},
+                        Case{"inside", inside, 1}, Case{"near plane", clipped, 1}}) {
     SCOPED_TRACE(c.name);
     int culled = -1, notCulled = -1;
     const std::vector<std::uint32_t> with = hitsOf(world, c.camera, true, culled);
@@ -130,8 +168,9 @@ TEST(GBufferCulling, TheHitsAreTheSameWithAndWithoutCulling) {
     EXPECT_EQ(with, without);
     long glassPixels = 0;
     for (std::size_t i = 0; i < with.size(); i += 4) glassPixels += with[i] == glass + 1 ? 1 : 0;
-    // Inside, every pixel sees the sphere's inside (back faces): culling there would lose them.
-    if (std::string(c.name) == "inside")
+    // Inside, or with the front faces clipped by the near plane, every pixel sees the sphere's
+    // inside (back faces): culling there would lose them.
+    if (std::string(c.name) == "inside" || std::string(c.name) == "near plane")
       EXPECT_EQ(glassPixels, long(with.size() / 4));
     else
       EXPECT_GT(glassPixels, 500);

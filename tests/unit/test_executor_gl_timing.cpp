@@ -202,8 +202,6 @@ TEST(ExecutorGlTiming, CpuPassesRunBesideTheGlWorkOfAPassIssuedBeforeThem) {
   for (int f = 0; f < kFrames; ++f) {
     EXPECT_GE(ex.timings()[2].glOverlapMs[f], ex.timings()[3].cpuMs[f])
         << "the wait for the shadow map's work starts after rt_shadows ran";
-    EXPECT_LT(ex.timings()[1].glOverlapMs[f], ex.timings()[3].cpuMs[f])
-        << "nothing of the readback is pending while rt_shadows runs";
   }
 }
 
