@@ -5,8 +5,15 @@
 // hold lit, shadowed and penumbra pixels, so that the comparison covers every count of lit taps.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+
+#include "engine/gl/shader.h"
 
 #include "engine/graph/executor.h"
 #include "engine/graph/frame_graph.h"
@@ -62,6 +69,34 @@ TEST(ShadowLookup, GatheredPcfEqualsNineFetches) {
       EXPECT_GT(shadowed, 100);
       EXPECT_GT(penumbra, 20);
     }
+}
+
+// The comparison above would pass if the gathered path never ran. With a copy of the shaders
+// whose gathered branch returns 0.25 (no count of nine taps gives it), most covered pixels read
+// 0.25: the interior pass takes that branch.
+TEST(ShadowLookup, TheGatheredPathIsTakenByTheInteriorPass) {
+  const Scene scene = loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/whitted.json");
+  const std::filesystem::path probe =
+      std::filesystem::temp_directory_path() / ("diptych-gather-probe-" + std::to_string(getpid()));
+  std::filesystem::remove_all(probe);
+  std::filesystem::copy(gl::shaderDirectory(), probe, std::filesystem::copy_options::recursive);
+  std::ifstream in(probe / "shadow_map_lookup.frag");
+  std::stringstream text;
+  text << in.rdbuf();
+  in.close();
+  std::string source = text.str();
+  const std::string call = "return pcf3Gathered();";
+  ASSERT_NE(source.find(call), std::string::npos);
+  source.replace(source.find(call), call.size(), "return 0.25;");
+  std::ofstream(probe / "shadow_map_lookup.frag") << source;
+  ::setenv("DIPTYCH_SHADER_DIR", probe.c_str(), 1);
+  const CpuImage probed = visibility(scene, true, "slope", 1024);
+  ::unsetenv("DIPTYCH_SHADER_DIR");
+  std::filesystem::remove_all(probe);
+  int quarter = 0;
+  for (int y = 0; y < probed.desc.height; ++y)
+    for (int x = 0; x < probed.desc.width; ++x) quarter += probed.f(x, y, 0) == 0.25f ? 1 : 0;
+  EXPECT_GT(quarter, 1000);
 }
 
 }  // namespace
