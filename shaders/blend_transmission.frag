@@ -1,7 +1,8 @@
 // Blend producers, last step, drawn with multiplicative blending (dst * src): pixels whose first
 // visible surface has no transmission (or none) get 0; the others keep the composited
-// transmission, times the factor blend_transmission_first.frag stored for them (the first surface's volume
-// transmittance when the view enters through a front face, KHR_materials_volume).
+// transmission, times the factor blend_transmission_first.frag stored for them (the first
+// surface's volume transmittance when the view enters through a front face,
+// KHR_materials_volume).
 layout(binding = 1) uniform sampler2D uFirst;
 layout(location = 0) out vec4 outColor;
 

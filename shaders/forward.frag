@@ -23,7 +23,8 @@ const int uBehind = FORWARD_BEHIND;
 const int uTransmissiveOnly = FORWARD_TRANSMISSIVE_ONLY;
 layout(binding = 0) uniform usampler2D uHits;
 // With uTransmissiveOnly: the pixel's first-surface distance when that surface transmits, else
-// negative (blend_transmission_first.frag, once per pixel): both tests below without rebuilding the surface.
+// negative (blend_transmission_first.frag, once per pixel): both tests below without rebuilding
+// the surface.
 layout(binding = 2) uniform sampler2D uFirst;
 
 // Dual-source blending (GL 3.3 core, ARB_blend_func_extended): index 1 is the per-fragment
