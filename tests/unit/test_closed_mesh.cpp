@@ -136,6 +136,34 @@ std::vector<std::uint32_t> hitsOf(RenderWorld& world, const Camera& camera, bool
   return gl::readTexture(t.hits);
 }
 
+// Fragments that passed the depth test over one G-buffer render (GL_SAMPLES_PASSED).
+std::uint64_t samplesPassed(RenderWorld& world, const Camera& camera, bool cull) {
+  auto& raster = world.glCached<gl::GBufferRasterizer>();
+  raster.cullClosed = cull;
+  gl::GBufferTextures t = gl::GBufferTextures::allocate(160, 120);
+  GLuint query = 0;
+  gl::glCreateQueries(GL_SAMPLES_PASSED, 1, &query);
+  gl::glBeginQuery(GL_SAMPLES_PASSED, query);
+  raster.render(world.glScene(), camera, gl::GBufferTargets{.hits = &t.hits, .depth = &t.depth},
+                &world.glShading());
+  gl::glEndQuery(GL_SAMPLES_PASSED);
+  GLuint64 samples = 0;
+  gl::glGetQueryObjectui64v(query, GL_QUERY_RESULT, &samples);
+  gl::glDeleteQueries(1, &query);
+  return samples;
+}
+
+// Culling is really on (the hits alone would be equal with it never enabled): back faces drawn
+// before the front faces that hide them pass the depth test, and culled they are never drawn.
+TEST(GBufferCulling, CulledBackFacesDrawFewerFragments) {
+  const Scene scene = whitted();
+  RenderWorld world(scene, &gl::testing::osmesaContext());
+  const std::uint64_t culled = samplesPassed(world, scene.camera, true);
+  const std::uint64_t all = samplesPassed(world, scene.camera, false);
+  EXPECT_GT(culled, 0u);
+  EXPECT_LT(culled, all);
+}
+
 TEST(GBufferCulling, TheHitsAreTheSameWithAndWithoutCulling) {
   const Scene scene = whitted();
   RenderWorld world(scene, &gl::testing::osmesaContext());
