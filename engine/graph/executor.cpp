@@ -209,11 +209,12 @@ void GraphExecutor::waitForGl(double* waitMs, double* waitCpuMs) {
 
 void GraphExecutor::runFrame() {
   // Attribution (docs/frame-graph.md, Timing): a GL node's GL work is its own GL_TIME_ELAPSED
-  // query, read after the measured frames (no node waits on a query). Before a GL node or
-  // transfer starts its clocks, the executor waits for the GL work earlier nodes issued and
-  // records that wait apart (glWaitMs, and its CPU time glWaitCpuMs): without it, llvmpipe's
-  // compute dispatches and every readback, which synchronise, carried the earlier passes' GL work
-  // in their CPU time. CPU nodes do not wait, so GL work still overlaps them.
+  // query, read after the measured frames (no node waits on a query). With GlSync::PerNode,
+  // before a GL node or transfer starts its clocks, the executor waits for the GL work earlier
+  // nodes issued and records that wait apart (glWaitMs, and its CPU time glWaitCpuMs; charged
+  // to the issuing node as glCompletion*): without it, llvmpipe's compute dispatches and every
+  // readback, which synchronise, carried the earlier passes' GL work in their CPU time. CPU
+  // nodes do not wait, so GL work still overlaps them. With PerFrame, one wait at the end.
   Stopwatch frameClock;
   world_.beginFrame();
   std::vector<PendingQuery> frameQueries;
