@@ -6,7 +6,12 @@
 #  - coherent single-bounce work (rt_shadows; the primary rays of rt_whitted): Embree's
 #    `triangle_geometry` (its own 14-triangle scene, camera and shadow rays, one ray at a time in
 #    8x8 tiles), and `pathtracer` with --max-path-length 1 (camera + one shadow ray per hit) on
-#    the same scene as Diptych, exported to OBJ with the same camera and point light;
+#    the same scene as Diptych, exported to OBJ with the same camera and point light; and
+#    `user_geometry`, the peer for scenes with analytic spheres (whitted's two spheres are Embree
+#    user geometry in Diptych, as there): its own scene of analytic and tessellated spheres in
+#    user-geometry instances on a plane, a camera ray and one shadow ray per hit, one ray at a
+#    time in 8x8 tiles, float roots, a filter callback carving the analytic spheres, and the
+#    top-level scene re-committed every frame (its instances move);
 #  - incoherent bounces (rt_reflection, rt_transmission, rt_whitted's recursion, rt_distributed,
 #    rt_path): `pathtracer` on that OBJ with --max-path-length 5, Diptych's recursion depth;
 #  - the Whitted reference against POV-Ray on tests/bench/whitted.pov (its hand translation):
@@ -36,7 +41,7 @@ metal=${DIPTYCH_SHARED_SCENES:-../shared/scenes}/metal-rough-spheres-no-textures
 for exe in "$diptych" "$tool"; do
   [ -x "$exe" ] || { echo "$exe not found: build diptych_cli and diptych_rt_bench" >&2; exit 1; }
 done
-for exe in triangle_geometry pathtracer buildbench povray; do
+for exe in triangle_geometry user_geometry pathtracer buildbench povray; do
   command -v "$exe" >/dev/null || { echo "$exe not found (embree-tools, povray)" >&2; exit 1; }
 done
 
@@ -65,6 +70,8 @@ for ((r = 1; r <= runs; ++r)); do
   render cornell cornell hybrid
   /usr/bin/time -f "%U %S" -o "$out/tg-$r.cpu" \
     triangle_geometry --size "${size[@]}" --benchmark 2 16 >"$out/tg-$r.log" 2>&1
+  /usr/bin/time -f "%U %S" -o "$out/ug-$r.cpu" \
+    user_geometry --size "${size[@]}" --benchmark 2 16 >"$out/ug-$r.log" 2>&1
   /usr/bin/time -f "%U %S" -o "$out/pt1-$r.cpu" \
     pathtracer -i "$out/whitted.obj" "${whitted_view[@]}" --size "${size[@]}" \
     --max-path-length 1 --benchmark 2 8 >"$out/pt1-$r.log" 2>&1
@@ -73,7 +80,8 @@ for ((r = 1; r <= runs; ++r)); do
     --max-path-length 5 --benchmark 2 8 >"$out/pt5-$r.log" 2>&1
   povray -D +W"${size[0]}" +H"${size[1]}" -A -J +Q9 +FN +WT"$(nproc)" +O"$out/pov.png" \
     tests/bench/whitted.pov >"$out/pov-$r.log" 2>&1
-  echo "tutorials run $r: triangle_geometry $(mrays "$out/tg-$r.log"), pathtracer depth 1" \
+  echo "tutorials run $r: triangle_geometry $(mrays "$out/tg-$r.log"), user_geometry" \
+    "$(mrays "$out/ug-$r.log"), pathtracer depth 1" \
     "$(mrays "$out/pt1-$r.log"), depth 5 $(mrays "$out/pt5-$r.log") Mrays/s;" \
     "load $(cut -d' ' -f1 /proc/loadavg)"
 done
@@ -115,7 +123,7 @@ def tutorial_cpu(prefix, r):  # Mrays per CPU-second (user + sys of the whole pr
     fps = re.search(r"^BENCHMARK_RENDER_AVG ([0-9.e+-]+)", log, re.M)
     if not (rate and fps):
         return float("nan")
-    frames = 18 if prefix == "tg" else 10  # --benchmark 2 16 / 2 8: skipped + measured
+    frames = 18 if prefix in ("tg", "ug") else 10  # --benchmark 2 16 / 2 8: skipped + measured
     mrays = float(rate.group(1)) / float(fps.group(1)) * frames
     cpu = sum(float(x) for x in open(f"{out}/{prefix}-{r}.cpu").read().split()[:2])
     return mrays / cpu
@@ -131,7 +139,8 @@ def pov_ms(r):
 def fmt(values):
     return f"{med(values):.2f}" + (f" ({min(values):.2f}-{max(values):.2f})" if len(values) > 1 else "")
 
-peers = {"triangle_geometry": "tg", "pathtracer depth 1": "pt1", "pathtracer depth 5": "pt5"}
+peers = {"triangle_geometry": "tg", "user_geometry": "ug", "pathtracer depth 1": "pt1",
+         "pathtracer depth 5": "pt5"}
 print(f"\nper run: " + "; ".join(
     f"run {r}: " + ", ".join(f"{p} {tutorial(f, r):.2f}" for p, f in peers.items()) + " Mrays/s"
     for r in R))
@@ -149,7 +158,7 @@ print("\n| pass | scene | Diptych Mrays/s | peer | peer Mrays/s | ratio | Diptyc
 print("|---|---|---:|---|---:|---:|---:|---:|---:|")
 for pass_name, scene, run_name, node_name, kind in rows:
     d = [mrays(run_name, node_name, r) for r in R]
-    names = (["triangle_geometry", "pathtracer depth 1"] if kind == "coherent"
+    names = (["triangle_geometry", "user_geometry", "pathtracer depth 1"] if kind == "coherent"
              else ["pathtracer depth 5"])
     for peer in names:
         p = [tutorial(peers[peer], r) for r in R]
