@@ -3,7 +3,8 @@
 // transmission, times the factor blend_transmission_first.frag stored for them (the first
 // surface's volume transmittance when the view enters through a front face,
 // KHR_materials_volume).
-layout(binding = 1) uniform sampler2D uFirst;
+#include "common/bindings.glsl"
+layout(binding = UNIT_BLEND_FIRST) uniform sampler2D uFirst;
 layout(location = 0) out vec4 outColor;
 
 void main() {

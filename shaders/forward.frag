@@ -25,7 +25,7 @@ layout(binding = 0) uniform usampler2D uHits;
 // With uTransmissiveOnly: the pixel's first-surface distance when that surface transmits, else
 // negative (blend_transmission_first.frag, once per pixel): both tests below without rebuilding
 // the surface.
-layout(binding = 2) uniform sampler2D uFirst;
+layout(binding = UNIT_BLEND_FIRST) uniform sampler2D uFirst;
 
 // Dual-source blending (GL 3.3 core, ARB_blend_func_extended): index 1 is the per-fragment
 // destination factor k_t M_T of glBlendFunc(GL_ONE, GL_SRC1_COLOR).

@@ -170,7 +170,7 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
   program.set("uLightCount", shading.lightCount);
   program.set("uBlend", o.blend ? 1 : 0);
   if (o.behindVisibility) glBindTextureUnit(0, o.behindVisibility->id());
-  if (transmissiveOnly) glBindTextureUnit(2, o.transmissiveFirst->id());  // forward.frag uFirst
+  if (transmissiveOnly) glBindTextureUnit(UNIT_BLEND_FIRST, o.transmissiveFirst->id());
   program.use();
   buffers.vertexArray.bind();
   buffers.bindStorage();

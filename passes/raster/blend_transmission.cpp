@@ -200,7 +200,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
 
   // The slot's contract: 0 where the first surface transmits nothing. Inside the scissor only:
   // outside it every pixel is already 0.
-  gl::glBindTextureUnit(1, cache.first.id());
+  gl::glBindTextureUnit(gl::UNIT_BLEND_FIRST, cache.first.id());
   if (!cache.mask)
     cache.mask.emplace(gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"}));
   cache.mask->draw(world, out, /*multiply=*/true, scissor);

@@ -25,6 +25,9 @@ const int BINDING_SCENE_TANGENTS = 13;
 
 // Texture unit of scene_shading.glsl's uSceneAlphaMasks; units 0 and 1 are each pass's own.
 const int UNIT_SCENE_ALPHA_MASKS = 7;
+// Texture unit of the blend producers' first-surface target (blend_transmission_first.frag's
+// output), read as uFirst by forward.frag and blend_transmission.frag.
+const int UNIT_BLEND_FIRST = 2;
 // Texture unit of gl/gbuffer_surface.glsl's uGBufferSurface (the G-buffer's stored surface).
 const int UNIT_GBUFFER_SURFACE = 8;
 // Texture unit of gl/scene_environment.glsl's uEnvironmentTexels (the exact background lookup).
