@@ -5,6 +5,8 @@
 #include <limits>
 #include <optional>
 
+#include "engine/scene/analytic_hit.h"
+
 namespace diptych {
 namespace {
 
@@ -46,8 +48,9 @@ PacketRay readRay(RTCRayN* rays, unsigned n, unsigned i) {
 // is passed over and the shape's next root beyond it tried, as alphaMaskFilter does for
 // triangles (Embree runs no filter function for user geometry unless the callback asks).
 // tmin = the next float after the rejected t excludes that root (intersectAnalyticPart compares
-// float(t) >= tmin). A part has at most two roots; an SDF may have more, hence the cap. SDF
-// surfaces have no uv (materials see (0, 0): surface_point.h), so their coverage is that uv's.
+// float(t) >= tmin). A part has at most two roots; an SDF may have more, hence the cap. The
+// coverage is read at the record's texture uv (analyticHitUv: a sphere's spherical parameters
+// from its octahedral normal); SDF surfaces have no uv (materials see (0, 0): surface_point.h).
 constexpr int kMaxMaskedRoots = 16;
 std::optional<ShapeHit> coveredHit(const RtScene::GeometryData& data, int part,
                                    const PacketRay& r) {
@@ -56,7 +59,7 @@ std::optional<ShapeHit> coveredHit(const RtScene::GeometryData& data, int part,
     auto hit = intersectAnalyticPart(*data.analytic, part, r.origin, r.direction, tmin, r.tfar,
                                      data.sdfStats.get());
     if (!hit || !data.alphaMasked ||
-        data.coverageAt(data.analytic->sdf ? vec2(0.f) : hit->uv) >= data.alphaCutoff)
+        data.coverageAt(analyticHitUv(*data.analytic, part, hit->uv)) >= data.alphaCutoff)
       return hit;
     tmin = std::nextafter(float(hit->t), std::numeric_limits<float>::infinity());
   }
@@ -75,10 +78,11 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     const PacketRay r = readRay(rays, n, i);
     const auto hit = coveredHit(data, part, r);
     if (!hit) continue;
-    // SDF hits carry their object-space point: x, y as (u, v), z's bits as the primitive id
-    // (SurfaceHit's encoding, engine/rt/surface_point.h). A quadric's Ng is left at 0 here:
-    // RtScene::intersect computes it from (u, v) for the closest hit only, when asked (the
-    // tracers rebuild the normal themselves), instead of two sincos per candidate hit.
+    // (u, v) is the hit record (ShapeHit::uv, engine/scene/analytic_hit.h). SDF hits carry
+    // their object-space point: x, y as (u, v), z's bits as the primitive id (SurfaceHit's
+    // encoding, engine/rt/surface_point.h). A quadric's Ng is left at 0 here: RtScene::intersect
+    // computes it from the record for the closest hit only, when asked (the tracers rebuild the
+    // normal themselves), instead of once per candidate hit.
     const vec3 normal = a.sdf ? sdfNormal(a, hit->point) : vec3(0.f);
     const unsigned primitive = a.sdf ? std::bit_cast<unsigned>(float(hit->point.z)) : args->primID;
     RTCRayN_tfar(rays, n, i) = float(hit->t);
