@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include "engine/scene/analytic_hit.h"
 #include "engine/scene/analytic_tangents.h"
 #include "engine/scene/sdf.h"
 
@@ -146,8 +147,12 @@ std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int par
   const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
   const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
   if (a.sdf) return intersectSdf(*a.sdf, oo, od, tmin, tmax, stats);
-  auto hit = part < 0 ? intersectShape(a.shape, oo, od, double(tmin), double(tmax))
-                      : intersectPart(a.shape, part, oo, od, double(tmin), double(tmax));
+  if (part >= 0) {  // Embree's callback: intersectPart's arithmetic, the record built only on a hit
+    const double t = partDistance(a.shape, part, oo, od, double(tmin), double(tmax));
+    if (std::isnan(t) || !(float(t) >= tmin && float(t) <= tmax)) return std::nullopt;
+    return ShapeHit{t, part, shapeHitParams(a.shape, part, oo + t * od)};
+  }
+  auto hit = intersectShape(a.shape, oo, od, double(tmin), double(tmax));
   if (hit && !(float(hit->t) >= tmin && float(hit->t) <= tmax)) return std::nullopt;
   return hit;
 }
