@@ -1,6 +1,7 @@
 #include "engine/scene/analytic_hit.h"
 
 #include <cmath>
+#include <limits>
 
 namespace diptych {
 namespace {
@@ -69,6 +70,17 @@ vec3 analyticHitNormal(const AnalyticInstance& a, int part, vec2 params) {
 
 vec2 analyticHitUv(const AnalyticInstance& a, int part, vec2 params) {
   return a.sdf ? vec2(0.f) : shapeHitUv(a.shape, part, params);
+}
+
+PartHit analyticPartHit(const AnalyticInstance& a, int part, const vec3& o, const vec3& d,
+                        float tmin, float tmax) {
+  // An affine map keeps t: object-space o' + t d' is the image of o + t d.
+  const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
+  const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
+  const double t = partDistance(a.shape, part, oo, od, double(tmin), double(tmax));
+  if (std::isnan(t) || !(float(t) >= tmin && float(t) <= tmax))
+    return {std::numeric_limits<double>::quiet_NaN(), vec2(0.f)};
+  return {t, shapeHitParams(a.shape, part, oo + t * od)};
 }
 
 bool materialReadsUv(const Material& m) {

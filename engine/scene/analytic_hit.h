@@ -36,6 +36,18 @@ vec3 analyticHitNormal(const AnalyticInstance& a, int part, vec2 params);
 // The record's texture uv; (0, 0) on SDF objects, as their polygonisation's.
 vec2 analyticHitUv(const AnalyticInstance& a, int part, vec2 params);
 
+// One quadric part's closest hit of the float world ray o + t d with float(t) in [tmin, tmax]:
+// t (NaN: none) and its record. intersectAnalyticPart's arithmetic (it calls this), in 16 bytes
+// that come back in two registers: Embree's callback used to copy a std::optional<ShapeHit>
+// through three stack frames, store-forwarding stalls that were half of intersectAnalyticPart's
+// samples (perf annotate, issue 14).
+struct PartHit {
+  double t;
+  vec2 params;
+};
+PartHit analyticPartHit(const AnalyticInstance& a, int part, const vec3& o, const vec3& d,
+                        float tmin, float tmax);
+
 // Whether anything of the material depends on uv: a checker, a texture resolveMaterial reads, a
 // normal map or a bump map. Otherwise resolveMaterial (engine/rt/surface_point.h) returns the
 // same at every uv, and a sphere hit's uv need not be computed.

@@ -143,15 +143,15 @@ vec3 sdfNormal(const AnalyticInstance& a, const dvec3& p) {
 std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
                                               const vec3& d, float tmin, float tmax,
                                               SdfStats* stats) {
+  if (part >= 0 && !a.sdf) {  // one part: the arithmetic of Embree's callback (analytic_hit.h)
+    const PartHit h = analyticPartHit(a, part, o, d, tmin, tmax);
+    if (std::isnan(h.t)) return std::nullopt;
+    return ShapeHit{h.t, part, h.params};
+  }
   // An affine map keeps t: object-space o' + t d' is the image of o + t d.
   const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
   const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
   if (a.sdf) return intersectSdf(*a.sdf, oo, od, tmin, tmax, stats);
-  if (part >= 0) {  // Embree's callback: intersectPart's arithmetic, the record built only on a hit
-    const double t = partDistance(a.shape, part, oo, od, double(tmin), double(tmax));
-    if (std::isnan(t) || !(float(t) >= tmin && float(t) <= tmax)) return std::nullopt;
-    return ShapeHit{t, part, shapeHitParams(a.shape, part, oo + t * od)};
-  }
   auto hit = intersectShape(a.shape, oo, od, double(tmin), double(tmax));
   if (hit && !(float(hit->t) >= tmin && float(hit->t) <= tmax)) return std::nullopt;
   return hit;
