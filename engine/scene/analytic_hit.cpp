@@ -6,8 +6,19 @@
 namespace diptych {
 namespace {
 
-bool octahedralRecord(const AnalyticShape& s) {
-  return s.type == ShapeType::Sphere;
+enum class Record { Octahedral, Diamond, Uv };
+
+Record recordOf(const AnalyticShape& s, int part) {
+  if (s.type == ShapeType::Sphere) return Record::Octahedral;
+  if ((s.type == ShapeType::Cylinder || s.type == ShapeType::Cone) && part == 0)
+    return Record::Diamond;
+  return Record::Uv;
+}
+
+// The cylinder's and cone's walls: a point's direction (x, 0, z) about the axis, unit.
+dvec3 wallDirection(vec2 params) {
+  const dvec2 xz = diamondDecode(params.x);
+  return dvec3(xz.x, 0.0, xz.y);
 }
 
 double signNotZero(double x) {
@@ -39,19 +50,67 @@ dvec3 octahedralDecode(vec2 e) {
   return glm::normalize(v);
 }
 
+float diamondEncode(double x, double z) {
+  // The 2D octahedral map: x / (|x| + |z|) in [-1, 1] on each half, the halves laid end to end
+  // (z >= 0 on [0, 2], z < 0 on [-2, 0)); the axis itself (apex of a cone) gets direction +x.
+  const double l1 = std::abs(x) + std::abs(z);
+  if (!(l1 > 0.0)) return 0.f;
+  const double p = x / l1;
+  return float(z >= 0.0 ? 1.0 - p : p - 1.0);
+}
+
+dvec2 diamondDecode(float d) {
+  const double x = d >= 0.f ? 1.0 - double(d) : 1.0 + double(d);
+  const double z = 1.0 - std::abs(x);
+  return glm::normalize(dvec2(x, d >= 0.f ? z : -z));
+}
+
 vec2 shapeHitParams(const AnalyticShape& s, int part, const dvec3& p) {
-  return octahedralRecord(s) ? octahedralEncode(p) : shapeUv(s, part, p);
+  switch (recordOf(s, part)) {
+    case Record::Octahedral:
+      return octahedralEncode(p);
+    case Record::Diamond:  // v: the height fraction, as the uv's
+      return vec2(diamondEncode(p.x, p.z), shapeUv(s, part, p).y);
+    default:
+      return shapeUv(s, part, p);
+  }
 }
 
 void shapeHitPointAndNormal(const AnalyticShape& s, int part, vec2 params, dvec3& point,
                             dvec3& normal) {
-  if (!octahedralRecord(s)) return shapePointAndNormal(s, part, params, point, normal);
-  normal = octahedralDecode(params);  // grad(x^2+y^2+z^2-r^2) / 2 = p = r n
-  point = double(s.radius) * normal;
+  const double r = s.radius, h = s.height, v = params.y;
+  switch (recordOf(s, part)) {
+    case Record::Octahedral:
+      normal = octahedralDecode(params);  // grad(x^2+y^2+z^2-r^2) / 2 = p = r n
+      point = r * normal;
+      return;
+    case Record::Diamond: {  // shapePointAndNormal's formulas, with dir from the record
+      const dvec3 dir = wallDirection(params);
+      const dvec3 y(0.0, (v - 0.5) * h, 0.0);
+      if (s.type == ShapeType::Cylinder) {
+        point = r * dir + y;
+        normal = dir;
+      } else {
+        point = r * (1.0 - v) * dir + y;
+        normal = glm::normalize(h * dir + dvec3(0.0, r, 0.0));
+      }
+      return;
+    }
+    default:
+      shapePointAndNormal(s, part, params, point, normal);
+      return;
+  }
 }
 
 vec2 shapeHitUv(const AnalyticShape& s, int part, vec2 params) {
-  return octahedralRecord(s) ? shapeUv(s, part, octahedralDecode(params)) : params;
+  switch (recordOf(s, part)) {
+    case Record::Octahedral:
+      return shapeUv(s, part, octahedralDecode(params));
+    case Record::Diamond:  // shapeUv's u reads x and z alone
+      return vec2(shapeUv(s, part, wallDirection(params)).x, params.y);
+    default:
+      return params;
+  }
 }
 
 void analyticHitPointAndNormal(const AnalyticInstance& a, int part, vec2 params, vec3& position,

@@ -9,8 +9,9 @@
 // is computed only where it is read (materialReadsUv, ray cones, alpha masks). In float the
 // encoding's angular error is under 2e-7 rad, below the 3.7e-7 of u = phi / 2 pi rounded to
 // float (the record before).
-// Other parts (disc, caps, cylinder and cone walls): their surface parameters (the
-// tessellation's uv), as shapePointAndNormal takes them.
+// Cylinder and cone walls: (diamond angle of the point's direction about the axis, the height
+// fraction v): the same idea in 2D, one float for the direction, so again no atan2 per hit and
+// no sincos per point. Disc and caps: their uv (planar, no trigonometry).
 #include "engine/scene/world_geometry.h"
 
 namespace diptych {
@@ -19,6 +20,11 @@ namespace diptych {
 // inverse, normalised in double. The fold uses sign-not-zero, so -z round-trips.
 vec2 octahedralEncode(const dvec3& v);
 dvec3 octahedralDecode(vec2 e);
+
+// The 2D octahedral ("diamond") map of (x, z), not both 0 ((0, 0) gives +x), to [-2, 2], and its
+// inverse, unit in double. Near +-2 a float's step is 2.4e-7, about 3.7e-7 rad of angle.
+float diamondEncode(double x, double z);
+dvec2 diamondDecode(float d);
 
 // The record of an object-space point p on part (p as the intersection computed it, o + t d).
 vec2 shapeHitParams(const AnalyticShape& s, int part, const dvec3& p);

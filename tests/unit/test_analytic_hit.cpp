@@ -1,9 +1,11 @@
 // The analytic hit record (engine/scene/analytic_hit.h): a sphere hit carries its octahedral
-// unit normal (Cigolle et al. 2014), from which the point, the normal and, where a material reads
-// them, the texture (u, v) are rebuilt. Checked: the encoding round-trips every direction to
-// float precision; at extreme scales and offsets the rebuilt point lies on the sphere and on the
-// ray to float rounding, the normal is unit and radial, and the uv is the spherical parameters of
-// the exact hit; makeSurfacePoint computes uv exactly when the material reads it.
+// unit normal (Cigolle et al. 2014), a cylinder's or cone's wall its diamond angle and height,
+// from which the point, the normal and, where a material reads them, the texture (u, v) are
+// rebuilt. Checked: both encodings round-trip every direction to float precision; walls give
+// the hit's point, normal and uv; at extreme scales and offsets the rebuilt point lies on the
+// sphere and on the ray to float rounding, the normal is unit and radial, and the uv is the
+// spherical parameters of the exact hit; makeSurfacePoint computes uv exactly when the material
+// reads it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -67,6 +69,56 @@ TEST(AnalyticHit, OctahedralEncodingRoundTripsEveryDirection) {
       v[axis] = s;
       EXPECT_EQ(octahedralDecode(octahedralEncode(v)), v) << axis << " " << s;
     }
+}
+
+TEST(AnalyticHit, DiamondEncodingRoundTripsEveryDirectionAboutTheAxis) {
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi);
+  double worst = 0.0;
+  for (int i = 0; i < 200000; ++i) {
+    const double phi = angle(rng);
+    const dvec2 v(std::cos(phi), std::sin(phi));
+    const dvec2 back = diamondDecode(diamondEncode(v.x, v.y));
+    ASSERT_NEAR(glm::length(back), 1.0, 1e-15);
+    worst = std::max(worst, std::abs(std::atan2(v.x * back.y - v.y * back.x, glm::dot(v, back))));
+  }
+  EXPECT_LT(worst, 3e-7);  // a float's step near the ends of [-2, 2], 2.4e-7
+  for (const dvec2 axis : {dvec2(1, 0), dvec2(0, 1), dvec2(-1, 0), dvec2(0, -1)})
+    EXPECT_EQ(diamondDecode(diamondEncode(axis.x, axis.y)), axis);
+  EXPECT_EQ(diamondDecode(diamondEncode(0.0, 0.0)), dvec2(1, 0));  // the cone's apex: +x
+}
+
+// Cylinder and cone walls, in object space at three sizes: the record's point is the exact hit's
+// to float precision, its normal the one shapeNormal gives at the hit's uv, and its uv shapeUv's.
+TEST(AnalyticHit, WallRecordsOfCylindersAndConesGiveTheHitsPointNormalAndUv) {
+  std::mt19937 rng(10);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int tested = 0;
+  for (const ShapeType type : {ShapeType::Cylinder, ShapeType::Cone}) {
+    for (const double size : {1e-3, 1.0, 1e4}) {
+      const AnalyticShape s{type, float(size), float(2.0 * size), true};
+      for (int i = 0; i < 2000; ++i) {
+        // A point on the wall (uv away from the cone's apex), aimed at from outside.
+        const vec2 target(float(unit(rng)), float(0.02 + 0.9 * unit(rng)));
+        const dvec3 p = shapePoint(s, 0, target), n = shapeNormal(s, 0, target);
+        const dvec3 o = p + 3.0 * size * glm::normalize(n + 0.5 * randomUnit(rng));
+        const auto hit = intersectPart(s, 0, o, p - o, 0.0, 2.0);
+        if (!hit) continue;
+        ++tested;
+        const dvec3 q = o + hit->t * (p - o);
+        dvec3 point, normal;
+        shapeHitPointAndNormal(s, 0, hit->uv, point, normal);
+        EXPECT_LT(glm::length(point - q), 1e-6 * size);
+        const vec2 expected = shapeUv(s, 0, q), uv = shapeHitUv(s, 0, hit->uv);
+        EXPECT_EQ(uv.y, expected.y);
+        const float du = std::abs(uv.x - expected.x);
+        EXPECT_LT(std::min(du, 1.f - du), 1e-6f);
+        EXPECT_LT(angleBetween(normal, shapeNormal(s, 0, expected)), 1e-6);
+        EXPECT_NEAR(glm::length(normal), 1.0, 1e-15);
+      }
+    }
+  }
+  EXPECT_GT(tested, 6000);
 }
 
 // Rays from random outside points at random points of a sphere of world radius 1e-3 .. 1e4,
