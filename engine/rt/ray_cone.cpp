@@ -71,10 +71,10 @@ float surfaceCurvature(const WorldGeometry& world, const SurfacePoint& p) {
     const vec2 uv = hitUv(mesh, p);
     float k = 0.f;
     for (const vec2 step : {vec2(h, 0.f), vec2(0.f, h)}) {
-      const vec3 dp = analyticPosition(*mesh.analytic, part, uv + step) -
-                      analyticPosition(*mesh.analytic, part, uv - step);
-      const vec3 dn = analyticNormal(*mesh.analytic, part, uv + step) -
-                      analyticNormal(*mesh.analytic, part, uv - step);
+      vec3 p0, n0, p1, n1;  // bit for bit analyticPosition's and analyticNormal's
+      analyticPositionAndNormal(*mesh.analytic, part, uv + step, p1, n1);
+      analyticPositionAndNormal(*mesh.analytic, part, uv - step, p0, n0);
+      const vec3 dp = p1 - p0, dn = n1 - n0;
       const float len = glm::length(dp);
       if (len > 0.f) k = std::max(k, glm::length(dn) / len);
     }
