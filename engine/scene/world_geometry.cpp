@@ -143,10 +143,12 @@ vec3 sdfNormal(const AnalyticInstance& a, const dvec3& p) {
 std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
                                               const vec3& d, float tmin, float tmax,
                                               SdfStats* stats) {
-  if (part >= 0 && !a.sdf) {  // one part: the arithmetic of Embree's callback (analytic_hit.h)
-    const PartHit h = analyticPartHit(a, part, o, d, tmin, tmax);
+  // One part (Embree's callback, or a lift onto a sphere or disc, whose closest hit over all
+  // parts is its one part's): the callback's arithmetic, in registers (analytic_hit.h).
+  if (!a.sdf && (part >= 0 || partCount(a.shape) == 1)) {
+    const PartHit h = analyticPartHit(a, std::max(part, 0), o, d, tmin, tmax);
     if (std::isnan(h.t)) return std::nullopt;
-    return ShapeHit{h.t, part, h.params};
+    return ShapeHit{h.t, std::max(part, 0), h.params};
   }
   // An affine map keeps t: object-space o' + t d' is the image of o + t d.
   const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
