@@ -5,6 +5,8 @@
 #include <limits>
 #include <optional>
 
+#include "engine/scene/analytic_hit.h"
+
 namespace diptych {
 namespace {
 
@@ -46,9 +48,23 @@ PacketRay readRay(RTCRayN* rays, unsigned n, unsigned i) {
 // is passed over and the shape's next root beyond it tried, as alphaMaskFilter does for
 // triangles (Embree runs no filter function for user geometry unless the callback asks).
 // tmin = the next float after the rejected t excludes that root (intersectAnalyticPart compares
-// float(t) >= tmin). A part has at most two roots; an SDF may have more, hence the cap. SDF
-// surfaces have no uv (materials see (0, 0): surface_point.h), so their coverage is that uv's.
+// float(t) >= tmin). A part has at most two roots; an SDF may have more, hence the cap. The
+// coverage is read at the record's texture uv (analyticHitUv: a sphere's spherical parameters
+// from its octahedral normal); SDF surfaces have no uv (materials see (0, 0): surface_point.h).
 constexpr int kMaxMaskedRoots = 16;
+// Quadrics, in registers (PartHit, analytic_hit.h); t NaN: none.
+PartHit coveredQuadricHit(const RtScene::GeometryData& data, int part, const PacketRay& r) {
+  float tmin = r.tnear;
+  for (int i = 0; i < kMaxMaskedRoots; ++i) {
+    const PartHit hit = analyticPartHit(*data.analytic, part, r.origin, r.direction, tmin, r.tfar);
+    if (std::isnan(hit.t) || !data.alphaMasked ||
+        data.coverageAt(analyticHitUv(*data.analytic, part, hit.params)) >= data.alphaCutoff)
+      return hit;
+    tmin = std::nextafter(float(hit.t), std::numeric_limits<float>::infinity());
+  }
+  return {std::numeric_limits<double>::quiet_NaN(), vec2(0.f)};
+}
+// SDF objects, whose hit carries its object-space point.
 std::optional<ShapeHit> coveredHit(const RtScene::GeometryData& data, int part,
                                    const PacketRay& r) {
   float tmin = r.tnear;
@@ -56,7 +72,7 @@ std::optional<ShapeHit> coveredHit(const RtScene::GeometryData& data, int part,
     auto hit = intersectAnalyticPart(*data.analytic, part, r.origin, r.direction, tmin, r.tfar,
                                      data.sdfStats.get());
     if (!hit || !data.alphaMasked ||
-        data.coverageAt(data.analytic->sdf ? vec2(0.f) : hit->uv) >= data.alphaCutoff)
+        data.coverageAt(analyticHitUv(*data.analytic, part, hit->uv)) >= data.alphaCutoff)
       return hit;
     tmin = std::nextafter(float(hit->t), std::numeric_limits<float>::infinity());
   }
@@ -73,20 +89,30 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
     const PacketRay r = readRay(rays, n, i);
-    const auto hit = coveredHit(data, part, r);
-    if (!hit) continue;
-    // SDF hits carry their object-space point: x, y as (u, v), z's bits as the primitive id
-    // (SurfaceHit's encoding, engine/rt/surface_point.h). A quadric's Ng is left at 0 here:
-    // RtScene::intersect computes it from (u, v) for the closest hit only, when asked (the
-    // tracers rebuild the normal themselves), instead of two sincos per candidate hit.
-    const vec3 normal = a.sdf ? sdfNormal(a, hit->point) : vec3(0.f);
-    const unsigned primitive = a.sdf ? std::bit_cast<unsigned>(float(hit->point.z)) : args->primID;
-    RTCRayN_tfar(rays, n, i) = float(hit->t);
+    // (u, v) is the hit record (engine/scene/analytic_hit.h). SDF hits carry their object-space
+    // point: x, y as (u, v), z's bits as the primitive id (SurfaceHit's encoding,
+    // engine/rt/surface_point.h). A quadric's Ng is left at 0 here: RtScene::intersect computes
+    // it from the record for the closest hit only, when asked (the tracers rebuild the normal
+    // themselves), instead of once per candidate hit.
+    PartHit hit;
+    vec3 normal(0.f);
+    unsigned primitive = args->primID;
+    if (!a.sdf) {
+      hit = coveredQuadricHit(data, part, r);
+      if (std::isnan(hit.t)) continue;
+    } else {
+      const auto sdfHit = coveredHit(data, part, r);
+      if (!sdfHit) continue;
+      hit = {sdfHit->t, sdfHit->uv};
+      normal = sdfNormal(a, sdfHit->point);
+      primitive = std::bit_cast<unsigned>(float(sdfHit->point.z));
+    }
+    RTCRayN_tfar(rays, n, i) = float(hit.t);
     RTCHitN_Ng_x(hits, n, i) = normal.x;
     RTCHitN_Ng_y(hits, n, i) = normal.y;
     RTCHitN_Ng_z(hits, n, i) = normal.z;
-    RTCHitN_u(hits, n, i) = hit->uv.x;
-    RTCHitN_v(hits, n, i) = hit->uv.y;
+    RTCHitN_u(hits, n, i) = hit.params.x;
+    RTCHitN_v(hits, n, i) = hit.params.y;
     RTCHitN_primID(hits, n, i) = primitive;
     RTCHitN_geomID(hits, n, i) = args->geomID;
     RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
@@ -100,10 +126,11 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   for (unsigned i = 0; i < n; ++i) {
     if (args->valid[i] != -1) continue;
     const PacketRay r = readRay(args->ray, n, i);
-    const bool hit = data.alphaMasked
-                         ? coveredHit(data, int(args->primID), r).has_value()
-                         : analyticPartOccludes(a, int(args->primID), r.origin, r.direction,
-                                                r.tnear, r.tfar, data.sdfStats.get());
+    const int part = int(args->primID);
+    const bool hit = !data.alphaMasked ? analyticPartOccludes(a, part, r.origin, r.direction,
+                                                              r.tnear, r.tfar, data.sdfStats.get())
+                     : a.sdf           ? coveredHit(data, part, r).has_value()
+                                       : !std::isnan(coveredQuadricHit(data, part, r).t);
     if (hit)
       RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();  // Embree: hit
   }

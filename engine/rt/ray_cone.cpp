@@ -4,10 +4,18 @@
 #include <cmath>
 #include <limits>
 
+#include "engine/scene/analytic_hit.h"
+
 namespace diptych {
 namespace {
 
 constexpr float kNoLod = -std::numeric_limits<float>::infinity();
+
+// The texture uv of an analytic hit from its record, not SurfacePoint::uv (which a sphere
+// leaves (0, 0) when its material reads no uv, surface_point.h).
+vec2 hitUv(const WorldMesh& mesh, const SurfacePoint& p) {
+  return analyticHitUv(*mesh.analytic, int(p.hit.primitive), vec2(p.hit.u, p.hit.v));
+}
 
 // World and uv (doubled) areas of the surface element at p: the triangle's, or for an analytic
 // part the parallelogram of its uv partial derivatives (finite differences of the exact map).
@@ -18,10 +26,11 @@ bool elementAreas(const WorldGeometry& world, const SurfacePoint& p, float& worl
     if (!mesh.analytic || mesh.analytic->sdf) return false;
     const float h = 1e-3f;
     const int part = int(p.hit.primitive);
-    const vec3 du = analyticPosition(*mesh.analytic, part, p.uv + vec2(h, 0.f)) -
-                    analyticPosition(*mesh.analytic, part, p.uv - vec2(h, 0.f));
-    const vec3 dv = analyticPosition(*mesh.analytic, part, p.uv + vec2(0.f, h)) -
-                    analyticPosition(*mesh.analytic, part, p.uv - vec2(0.f, h));
+    const vec2 uv = hitUv(mesh, p);
+    const vec3 du = analyticPosition(*mesh.analytic, part, uv + vec2(h, 0.f)) -
+                    analyticPosition(*mesh.analytic, part, uv - vec2(h, 0.f));
+    const vec3 dv = analyticPosition(*mesh.analytic, part, uv + vec2(0.f, h)) -
+                    analyticPosition(*mesh.analytic, part, uv - vec2(0.f, h));
     worldArea = glm::length(glm::cross(du, dv));
     uvArea = 4.f * h * h;
     return worldArea > 0.f;
@@ -59,12 +68,13 @@ float surfaceCurvature(const WorldGeometry& world, const SurfacePoint& p) {
     if (!mesh.analytic || mesh.analytic->sdf) return 0.f;
     const float h = 1e-3f;
     const int part = int(p.hit.primitive);
+    const vec2 uv = hitUv(mesh, p);
     float k = 0.f;
     for (const vec2 step : {vec2(h, 0.f), vec2(0.f, h)}) {
-      const vec3 dp = analyticPosition(*mesh.analytic, part, p.uv + step) -
-                      analyticPosition(*mesh.analytic, part, p.uv - step);
-      const vec3 dn = analyticNormal(*mesh.analytic, part, p.uv + step) -
-                      analyticNormal(*mesh.analytic, part, p.uv - step);
+      vec3 p0, n0, p1, n1;  // bit for bit analyticPosition's and analyticNormal's
+      analyticPositionAndNormal(*mesh.analytic, part, uv + step, p1, n1);
+      analyticPositionAndNormal(*mesh.analytic, part, uv - step, p0, n0);
+      const vec3 dp = p1 - p0, dn = n1 - n0;
       const float len = glm::length(dp);
       if (len > 0.f) k = std::max(k, glm::length(dn) / len);
     }

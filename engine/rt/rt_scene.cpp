@@ -10,6 +10,7 @@
 #include "engine/core/log.h"
 #include "engine/rt/analytic_geometry.h"
 #include "engine/rt/rt_scene_instancing.h"
+#include "engine/scene/analytic_hit.h"
 #include "engine/scene/sdf.h"
 #include "engine/shading/texture_sampling.h"
 
@@ -211,7 +212,7 @@ bool RtScene::intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool 
   hit.analytic = analytic != nullptr;
   // The intersect callback leaves a quadric's Ng to here (analytic_geometry.cpp).
   if (wantNormal && analytic && !analytic->sdf)
-    hit.Ng = analyticNormal(*analytic, int(hit.primitive), vec2(hit.u, hit.v));
+    hit.Ng = analyticHitNormal(*analytic, int(hit.primitive), vec2(hit.u, hit.v));
   return true;
 }
 

@@ -24,7 +24,7 @@ struct Hit {
   float u = 0.f, v = 0.f;       // Embree barycentrics: u weights vertex 1, v weights vertex 2
   float t = 0.f;                // distance along the ray in units of |direction|
   vec3 Ng{0.f};  // Embree's unnormalised geometric normal; points like the CCW face normal (tested)
-  bool analytic = false;  // user geometry: primitive is the shape's part, (u, v) its uv
+  bool analytic = false;  // user geometry: primitive is the part, (u, v) its hit record
 };
 
 // A segment [tnear, tfar] of origin + t * direction. tnear > tfar marks an inactive ray
@@ -98,7 +98,7 @@ class RtScene {
 
   // Closest hit of ray.origin + t * ray.direction for t in [tnear, tfar]. wantNormal false:
   // Hit::Ng of an analytic quadric is left 0 (callers that rebuild the surface point from
-  // (u, v), as makeSurfacePoint does, skip its two sincos).
+  // (u, v), as makeSurfacePoint does, skip that work).
   std::optional<Hit> intersect(const Ray& ray, float tnear, float tfar,
                                bool wantNormal = true) const;
   // The same into `hit` (untouched on a miss); false on a miss. For the per-ray loops: no

@@ -12,6 +12,7 @@
 #include "engine/core/error.h"
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/ray_offset.h"
+#include "engine/scene/analytic_hit.h"
 
 namespace diptych {
 
@@ -92,7 +93,7 @@ ShadowReceiver shadowReceiver(const WorldGeometry& world, const SurfaceHit& hit)
       throw Error("shadowReceiver: instance " + std::to_string(hit.instance) +
                   " has no analytic part " + std::to_string(hit.primitive));
     ShadowReceiver r;
-    analyticPositionAndNormal(a, int(hit.primitive), vec2(hit.u, hit.v), r.position,
+    analyticHitPointAndNormal(a, int(hit.primitive), vec2(hit.u, hit.v), r.position,
                               r.geometricNormal);
     r.magnitude = a.magnitude;
     return r;

@@ -8,6 +8,7 @@
 
 #include "engine/core/error.h"
 #include "engine/rt/ray_offset.h"
+#include "engine/scene/analytic_hit.h"
 #include "engine/scene/analytic_tangents.h"
 #include "engine/scene/gltf_pbr.h"
 #include "engine/shading/bump.h"
@@ -120,9 +121,10 @@ SurfacePoint makeSdfPoint(const Scene& scene, const WorldMesh& mesh, const Surfa
                   vec2(0.f), mesh.material, scene.material(mesh.material));
 }
 
-// The exact surface: position and normal rebuilt from the part's uv in double and rounded once.
-// The offset scale is the shape's world box (as vertexMagnitude is a triangle's): the rounding
-// of the point is at the scale of the shape's coordinates, not of the point's own.
+// The exact surface: position and normal rebuilt from the hit record in double and rounded once
+// (a sphere's from its octahedral normal, without trigonometry; its texture uv only when the
+// material reads one). The offset scale is the shape's world box (as vertexMagnitude is a
+// triangle's): the rounding of the point is at the scale of the shape's coordinates.
 SurfacePoint makeAnalyticPoint(const Scene& scene, const WorldMesh& mesh, const SurfaceHit& hit,
                                const vec3& incoming) {
   if (mesh.analytic && mesh.analytic->sdf) return makeSdfPoint(scene, mesh, hit, incoming);
@@ -131,11 +133,12 @@ SurfacePoint makeAnalyticPoint(const Scene& scene, const WorldMesh& mesh, const 
                 " has no analytic part " + std::to_string(hit.primitive));
   const AnalyticInstance& a = *mesh.analytic;
   const int part = int(hit.primitive);
-  const vec2 uv(hit.u, hit.v);
+  const vec2 params(hit.u, hit.v);
   vec3 position, faceNormal;
-  analyticPositionAndNormal(a, part, uv, position, faceNormal);
+  analyticHitPointAndNormal(a, part, params, position, faceNormal);
   const bool front = glm::dot(faceNormal, incoming) <= 0.f;
   const Material& material = scene.material(mesh.material);
+  const vec2 uv = materialReadsUv(material) ? analyticHitUv(a, part, params) : vec2(0.f);
   // Exact: the gradient is the shading normal, unless a normal or bump map perturbs it; t_u and
   // t_v come from the shape's own parameterisation (analyticTangents).
   vec3 n = faceNormal;

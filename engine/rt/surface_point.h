@@ -12,10 +12,10 @@ namespace diptych {
 
 // What identifies a point on the world geometry: Embree's hit, or a visibility-buffer texel.
 // On an instance's analytic shape (WorldMesh::analytic, Embree user geometry) `analytic` is
-// true, `primitive` is the shape's part and (u, v) are its surface parameters (the
-// tessellation's texture coordinates), from which the point is rebuilt exactly. On an SDF
-// object (no parameters) (u, v) are the object-space hit point's x and y and `primitive` holds
-// the bits of its z.
+// true, `primitive` is the shape's part and (u, v) its hit record (engine/scene/analytic_hit.h:
+// a sphere's octahedral normal, other parts' uv), from which the point is rebuilt exactly. On an
+// SDF object (no parameters) (u, v) are the object-space hit point's x and y and `primitive`
+// holds the bits of its z.
 struct SurfaceHit {
   int instance = -1;
   std::uint32_t primitive = 0;
@@ -31,7 +31,7 @@ struct SurfacePoint {
   vec3 geometricNormal{0.f};    // faceNormal flipped to face the incoming ray
   vec3 shadingNormal{0.f};      // interpolated vertex normal, on the same side as geometricNormal
   bool frontFacing = true;      // the ray arrived on the front (CCW) side
-  vec2 uv{0.f};
+  vec2 uv{0.f};  // analytic sphere: (0, 0) unless materialReadsUv (engine/scene/analytic_hit.h)
   int material = -1;                    // index into Scene::materials (-1: default)
   shading::ShadingMaterial resolved{};  // C with texture/checker, M_E with its texture
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include "engine/scene/analytic_hit.h"
 #include "engine/scene/analytic_tangents.h"
 #include "engine/scene/sdf.h"
 
@@ -142,12 +143,18 @@ vec3 sdfNormal(const AnalyticInstance& a, const dvec3& p) {
 std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
                                               const vec3& d, float tmin, float tmax,
                                               SdfStats* stats) {
+  // One part (Embree's callback, or a lift onto a sphere or disc, whose closest hit over all
+  // parts is its one part's): the callback's arithmetic, in registers (analytic_hit.h).
+  if (!a.sdf && (part >= 0 || partCount(a.shape) == 1)) {
+    const PartHit h = analyticPartHit(a, std::max(part, 0), o, d, tmin, tmax);
+    if (std::isnan(h.t)) return std::nullopt;
+    return ShapeHit{h.t, std::max(part, 0), h.params};
+  }
   // An affine map keeps t: object-space o' + t d' is the image of o + t d.
   const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
   const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
   if (a.sdf) return intersectSdf(*a.sdf, oo, od, tmin, tmax, stats);
-  auto hit = part < 0 ? intersectShape(a.shape, oo, od, double(tmin), double(tmax))
-                      : intersectPart(a.shape, part, oo, od, double(tmin), double(tmax));
+  auto hit = intersectShape(a.shape, oo, od, double(tmin), double(tmax));
   if (hit && !(float(hit->t) >= tmin && float(hit->t) <= tmax)) return std::nullopt;
   return hit;
 }

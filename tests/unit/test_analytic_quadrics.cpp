@@ -12,6 +12,7 @@
 #include "engine/core/error.h"
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
+#include "engine/scene/analytic_hit.h"
 #include "engine/scene/load.h"
 #include "engine/scene/primitives.h"
 #include "tests/support/test_paths.h"
@@ -137,7 +138,8 @@ TEST(AnalyticQuadrics, ConeSideApexAxisAndBase) {
   ASSERT_TRUE(hit);
   EXPECT_DOUBLE_EQ(hit->t, 4.5);  // radius (r/h)(h/2 - y) = 0.5 at y = 0
   // Normal ~ (h cos phi, r, -h sin phi) at phi = pi: (-2, 1, 0) / sqrt 5.
-  const dvec3 n = shapeNormal(s, 0, hit->uv);
+  dvec3 p, n;
+  shapeHitPointAndNormal(s, 0, hit->uv, p, n);  // hit->uv: the wall's record (analytic_hit.h)
   EXPECT_NEAR(n.x, -2.0 / std::sqrt(5.0), 1e-7);
   EXPECT_NEAR(n.y, 1.0 / std::sqrt(5.0), 1e-7);
   // Down the axis onto the apex (a double root), up the axis onto the base.
