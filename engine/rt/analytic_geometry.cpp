@@ -58,7 +58,7 @@ PartHit coveredQuadricHit(const RtScene::GeometryData& data, int part, const Pac
   for (int i = 0; i < kMaxMaskedRoots; ++i) {
     const PartHit hit = analyticPartHit(*data.analytic, part, r.origin, r.direction, tmin, r.tfar);
     if (std::isnan(hit.t) || !data.alphaMasked ||
-        data.coverageAt(analyticHitUv(*data.analytic, part, hit.params)) >= data.alphaCutoff)
+        data.coverageAt(analyticHitUv(*data.analytic, part, hit.record)) >= data.alphaCutoff)
       return hit;
     tmin = std::nextafter(float(hit.t), std::numeric_limits<float>::infinity());
   }
@@ -72,7 +72,7 @@ std::optional<ShapeHit> coveredHit(const RtScene::GeometryData& data, int part,
     auto hit = intersectAnalyticPart(*data.analytic, part, r.origin, r.direction, tmin, r.tfar,
                                      data.sdfStats.get());
     if (!hit || !data.alphaMasked ||
-        data.coverageAt(analyticHitUv(*data.analytic, part, hit->uv)) >= data.alphaCutoff)
+        data.coverageAt(analyticHitUv(*data.analytic, part, hit->record)) >= data.alphaCutoff)
       return hit;
     tmin = std::nextafter(float(hit->t), std::numeric_limits<float>::infinity());
   }
@@ -103,7 +103,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     } else {
       const auto sdfHit = coveredHit(data, part, r);
       if (!sdfHit) continue;
-      hit = {sdfHit->t, sdfHit->uv};
+      hit = {sdfHit->t, sdfHit->record};
       normal = sdfNormal(a, sdfHit->point);
       primitive = std::bit_cast<unsigned>(float(sdfHit->point.z));
     }
@@ -111,8 +111,8 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     RTCHitN_Ng_x(hits, n, i) = normal.x;
     RTCHitN_Ng_y(hits, n, i) = normal.y;
     RTCHitN_Ng_z(hits, n, i) = normal.z;
-    RTCHitN_u(hits, n, i) = hit.params.x;
-    RTCHitN_v(hits, n, i) = hit.params.y;
+    RTCHitN_u(hits, n, i) = hit.record.x;
+    RTCHitN_v(hits, n, i) = hit.record.y;
     RTCHitN_primID(hits, n, i) = primitive;
     RTCHitN_geomID(hits, n, i) = args->geomID;
     RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];

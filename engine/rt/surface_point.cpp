@@ -133,12 +133,12 @@ SurfacePoint makeAnalyticPoint(const Scene& scene, const WorldMesh& mesh, const 
                 " has no analytic part " + std::to_string(hit.primitive));
   const AnalyticInstance& a = *mesh.analytic;
   const int part = int(hit.primitive);
-  const vec2 params(hit.u, hit.v);
+  const vec2 record(hit.u, hit.v);
   vec3 position, faceNormal;
-  analyticHitPointAndNormal(a, part, params, position, faceNormal);
+  analyticHitPointAndNormal(a, part, record, position, faceNormal);
   const bool front = glm::dot(faceNormal, incoming) <= 0.f;
   const Material& material = scene.material(mesh.material);
-  const vec2 uv = materialReadsUv(material) ? analyticHitUv(a, part, params) : vec2(0.f);
+  const vec2 uv = materialReadsUv(material) ? analyticHitUv(a, part, record) : vec2(0.f);
   // Exact: the gradient is the shading normal, unless a normal or bump map perturbs it; t_u and
   // t_v come from the shape's own parameterisation (analyticTangents).
   vec3 n = faceNormal;
@@ -167,9 +167,9 @@ SurfaceHit liftToAnalytic(const WorldGeometry& world, const SurfaceHit& hit, con
                                        std::numeric_limits<float>::infinity());
   if (!exact) return hit;
   if (mesh.analytic->sdf)
-    return {hit.instance, std::bit_cast<std::uint32_t>(float(exact->point.z)), exact->uv.x,
-            exact->uv.y, true};
-  return {hit.instance, std::uint32_t(exact->part), exact->uv.x, exact->uv.y, true};
+    return {hit.instance, std::bit_cast<std::uint32_t>(float(exact->point.z)), exact->record.x,
+            exact->record.y, true};
+  return {hit.instance, std::uint32_t(exact->part), exact->record.x, exact->record.y, true};
 }
 
 SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit,

@@ -16,8 +16,8 @@ Record recordOf(const AnalyticShape& s, int part) {
 }
 
 // The cylinder's and cone's walls: a point's direction (x, 0, z) about the axis, unit.
-dvec3 wallDirection(vec2 params) {
-  const dvec2 xz = diamondDecode(params.x);
+dvec3 wallDirection(vec2 record) {
+  const dvec2 xz = diamondDecode(record.x);
   return dvec3(xz.x, 0.0, xz.y);
 }
 
@@ -65,7 +65,7 @@ dvec2 diamondDecode(float d) {
   return glm::normalize(dvec2(x, d >= 0.f ? z : -z));
 }
 
-vec2 shapeHitParams(const AnalyticShape& s, int part, const dvec3& p) {
+vec2 shapeHitRecord(const AnalyticShape& s, int part, const dvec3& p) {
   switch (recordOf(s, part)) {
     case Record::Octahedral:
       return octahedralEncode(p);
@@ -76,16 +76,16 @@ vec2 shapeHitParams(const AnalyticShape& s, int part, const dvec3& p) {
   }
 }
 
-void shapeHitPointAndNormal(const AnalyticShape& s, int part, vec2 params, dvec3& point,
+void shapeHitPointAndNormal(const AnalyticShape& s, int part, vec2 record, dvec3& point,
                             dvec3& normal) {
-  const double r = s.radius, h = s.height, v = params.y;
+  const double r = s.radius, h = s.height, v = record.y;
   switch (recordOf(s, part)) {
     case Record::Octahedral:
-      normal = octahedralDecode(params);  // grad(x^2+y^2+z^2-r^2) / 2 = p = r n
+      normal = octahedralDecode(record);  // grad(x^2+y^2+z^2-r^2) / 2 = p = r n
       point = r * normal;
       return;
     case Record::Diamond: {  // shapePointAndNormal's formulas, with dir from the record
-      const dvec3 dir = wallDirection(params);
+      const dvec3 dir = wallDirection(record);
       const dvec3 y(0.0, (v - 0.5) * h, 0.0);
       if (s.type == ShapeType::Cylinder) {
         point = r * dir + y;
@@ -97,38 +97,38 @@ void shapeHitPointAndNormal(const AnalyticShape& s, int part, vec2 params, dvec3
       return;
     }
     default:
-      shapePointAndNormal(s, part, params, point, normal);
+      shapePointAndNormal(s, part, record, point, normal);
       return;
   }
 }
 
-vec2 shapeHitUv(const AnalyticShape& s, int part, vec2 params) {
+vec2 shapeHitUv(const AnalyticShape& s, int part, vec2 record) {
   switch (recordOf(s, part)) {
     case Record::Octahedral:
-      return shapeUv(s, part, octahedralDecode(params));
+      return shapeUv(s, part, octahedralDecode(record));
     case Record::Diamond:  // shapeUv's u reads x and z alone
-      return vec2(shapeUv(s, part, wallDirection(params)).x, params.y);
+      return vec2(shapeUv(s, part, wallDirection(record)).x, record.y);
     default:
-      return params;
+      return record;
   }
 }
 
-void analyticHitPointAndNormal(const AnalyticInstance& a, int part, vec2 params, vec3& position,
+void analyticHitPointAndNormal(const AnalyticInstance& a, int part, vec2 record, vec3& position,
                                vec3& normal) {
   dvec3 p, n;
-  shapeHitPointAndNormal(a.shape, part, params, p, n);
+  shapeHitPointAndNormal(a.shape, part, record, p, n);
   position = vec3(dvec3(a.toWorld * glm::dvec4(p, 1.0)));
   normal = vec3(glm::normalize(glm::transpose(glm::dmat3(a.toObject)) * n));
 }
 
-vec3 analyticHitNormal(const AnalyticInstance& a, int part, vec2 params) {
+vec3 analyticHitNormal(const AnalyticInstance& a, int part, vec2 record) {
   vec3 position, normal;
-  analyticHitPointAndNormal(a, part, params, position, normal);
+  analyticHitPointAndNormal(a, part, record, position, normal);
   return normal;
 }
 
-vec2 analyticHitUv(const AnalyticInstance& a, int part, vec2 params) {
-  return a.sdf ? vec2(0.f) : shapeHitUv(a.shape, part, params);
+vec2 analyticHitUv(const AnalyticInstance& a, int part, vec2 record) {
+  return a.sdf ? vec2(0.f) : shapeHitUv(a.shape, part, record);
 }
 
 PartHit analyticPartHit(const AnalyticInstance& a, int part, const vec3& o, const vec3& d,
@@ -139,7 +139,7 @@ PartHit analyticPartHit(const AnalyticInstance& a, int part, const vec3& o, cons
   const double t = partDistance(a.shape, part, oo, od, double(tmin), double(tmax));
   if (std::isnan(t) || !(float(t) >= tmin && float(t) <= tmax))
     return {std::numeric_limits<double>::quiet_NaN(), vec2(0.f)};
-  return {t, shapeHitParams(a.shape, part, oo + t * od)};
+  return {t, shapeHitRecord(a.shape, part, oo + t * od)};
 }
 
 bool materialReadsUv(const Material& m) {

@@ -1,5 +1,5 @@
 #pragma once
-// The two words an analytic hit record carries (ShapeHit::uv, SurfaceHit's u and v, a G-buffer
+// The two words an analytic hit record carries (ShapeHit::record, SurfaceHit's u and v, a G-buffer
 // texel lifted by liftToAnalytic), from which every consumer rebuilds the point and normal.
 //
 // Sphere: the octahedral encoding of the object-space unit normal n (Cigolle et al. 2014, "A
@@ -27,20 +27,20 @@ float diamondEncode(double x, double z);
 dvec2 diamondDecode(float d);
 
 // The record of an object-space point p on part (p as the intersection computed it, o + t d).
-vec2 shapeHitParams(const AnalyticShape& s, int part, const dvec3& p);
+vec2 shapeHitRecord(const AnalyticShape& s, int part, const dvec3& p);
 // The object-space point and unit outward normal of a record.
-void shapeHitPointAndNormal(const AnalyticShape& s, int part, vec2 params, dvec3& point,
+void shapeHitPointAndNormal(const AnalyticShape& s, int part, vec2 record, dvec3& point,
                             dvec3& normal);
 // The record's texture coordinates (the tessellation's uv: shapeUv of its point).
-vec2 shapeHitUv(const AnalyticShape& s, int part, vec2 params);
+vec2 shapeHitUv(const AnalyticShape& s, int part, vec2 record);
 
 // The same for a placed quadric (not an SDF object): world point and unit outward normal
 // ((M^-1)^T n), rounded once from double, as analyticPositionAndNormal does from a uv.
-void analyticHitPointAndNormal(const AnalyticInstance& a, int part, vec2 params, vec3& position,
+void analyticHitPointAndNormal(const AnalyticInstance& a, int part, vec2 record, vec3& position,
                                vec3& normal);
-vec3 analyticHitNormal(const AnalyticInstance& a, int part, vec2 params);
+vec3 analyticHitNormal(const AnalyticInstance& a, int part, vec2 record);
 // The record's texture uv; (0, 0) on SDF objects, as their polygonisation's.
-vec2 analyticHitUv(const AnalyticInstance& a, int part, vec2 params);
+vec2 analyticHitUv(const AnalyticInstance& a, int part, vec2 record);
 
 // One quadric part's closest hit of the float world ray o + t d with float(t) in [tmin, tmax]:
 // t (NaN: none) and its record. intersectAnalyticPart's arithmetic (it calls this), in 16 bytes
@@ -49,7 +49,7 @@ vec2 analyticHitUv(const AnalyticInstance& a, int part, vec2 params);
 // samples (perf annotate, issue 14).
 struct PartHit {
   double t;
-  vec2 params;
+  vec2 record;
 };
 PartHit analyticPartHit(const AnalyticInstance& a, int part, const vec3& o, const vec3& d,
                         float tmin, float tmax);

@@ -201,7 +201,7 @@ std::optional<ShapeHit> intersectPart(const AnalyticShape& s, int part, const dv
                                       const dvec3& d, double tmin, double tmax) {
   const double t = partDistance(s, part, o, d, tmin, tmax);
   if (std::isnan(t)) return std::nullopt;
-  return ShapeHit{t, part, shapeHitParams(s, part, o + t * d)};
+  return ShapeHit{t, part, shapeHitRecord(s, part, o + t * d)};
 }
 
 std::optional<ShapeHit> intersectShape(const AnalyticShape& s, const dvec3& o, const dvec3& d,

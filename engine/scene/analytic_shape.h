@@ -40,7 +40,7 @@ void partBounds(const AnalyticShape& s, int part, dvec3& lo, dvec3& hi);
 struct ShapeHit {
   double t = 0.0;
   int part = 0;
-  vec2 uv{0.f};      // the hit record (analytic_hit.h): on a sphere its octahedral normal
+  vec2 record{0.f};  // the hit record (analytic_hit.h): on a sphere its octahedral normal
   dvec3 point{0.0};  // SDF objects: the object-space hit point (they have no parameters)
 };
 

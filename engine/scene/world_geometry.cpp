@@ -148,7 +148,7 @@ std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int par
   if (!a.sdf && (part >= 0 || partCount(a.shape) == 1)) {
     const PartHit h = analyticPartHit(a, std::max(part, 0), o, d, tmin, tmax);
     if (std::isnan(h.t)) return std::nullopt;
-    return ShapeHit{h.t, std::max(part, 0), h.params};
+    return ShapeHit{h.t, std::max(part, 0), h.record};
   }
   // An affine map keeps t: object-space o' + t d' is the image of o + t d.
   const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));

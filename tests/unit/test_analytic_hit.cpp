@@ -107,9 +107,9 @@ TEST(AnalyticHit, WallRecordsOfCylindersAndConesGiveTheHitsPointNormalAndUv) {
         ++tested;
         const dvec3 q = o + hit->t * (p - o);
         dvec3 point, normal;
-        shapeHitPointAndNormal(s, 0, hit->uv, point, normal);
+        shapeHitPointAndNormal(s, 0, hit->record, point, normal);
         EXPECT_LT(glm::length(point - q), 1e-6 * size);
-        const vec2 expected = shapeUv(s, 0, q), uv = shapeHitUv(s, 0, hit->uv);
+        const vec2 expected = shapeUv(s, 0, q), uv = shapeHitUv(s, 0, hit->record);
         EXPECT_EQ(uv.y, expected.y);
         const float du = std::abs(uv.x - expected.x);
         EXPECT_LT(std::min(du, 1.f - du), 1e-6f);
@@ -147,7 +147,7 @@ TEST(AnalyticHit, SpherePointNormalAndUvFromTheRecordAtExtremeScalesAndOffsets) 
         ++tested;
         const dvec3 q = dvec3(o) + hit->t * dvec3(d);  // the exact hit, in double
         vec3 p, n;
-        analyticHitPointAndNormal(a, hit->part, hit->uv, p, n);
+        analyticHitPointAndNormal(a, hit->part, hit->record, p, n);
         const double eps = std::ldexp(1.0, -24);
         // On the sphere and on the ray: the record's 1e-7 rad plus the point's float rounding.
         EXPECT_NEAR(glm::length(dvec3(p) - c), radius, 4 * eps * mag + 2e-7 * radius);
@@ -157,7 +157,7 @@ TEST(AnalyticHit, SpherePointNormalAndUvFromTheRecordAtExtremeScalesAndOffsets) 
         // The texture uv: the spherical parameters of the exact hit (shapeUv), as the record
         // before held them; u compared around the seam, and away from the poles where it is
         // undefined.
-        const vec2 uv = analyticHitUv(a, hit->part, hit->uv);
+        const vec2 uv = analyticHitUv(a, hit->part, hit->record);
         const dvec3 qo = dvec3(a.toObject * glm::dvec4(q, 1.0));
         const vec2 expected = shapeUv(a.shape, 0, qo);
         EXPECT_NEAR(uv.y, expected.y, 1e-6);
@@ -189,7 +189,7 @@ TEST(AnalyticHit, SurfacePointHasUvExactlyWhenTheMaterialReadsIt) {
   const vec3 origin = c + vec3(0.3f, 0.4f, 5.f), dir = glm::normalize(c - origin);
   const auto hit = intersectAnalytic(a, origin, dir, 0.f, kInf);
   ASSERT_TRUE(hit);
-  const SurfaceHit sh{sphere, std::uint32_t(hit->part), hit->uv.x, hit->uv.y, true};
+  const SurfaceHit sh{sphere, std::uint32_t(hit->part), hit->record.x, hit->record.y, true};
   const Material& own = scene.material(world.meshes[std::size_t(sphere)].material);
   ASSERT_FALSE(materialReadsUv(own)) << "whitted.json's spheres are untextured";
   const SurfacePoint plain = makeSurfacePoint(scene, world, sh, dir);
@@ -200,7 +200,7 @@ TEST(AnalyticHit, SurfacePointHasUvExactlyWhenTheMaterialReadsIt) {
   const WorldGeometry checkered = flattenScene(scene);
   const SurfacePoint p = makeSurfacePoint(scene, checkered, sh, dir);
   EXPECT_EQ(p.material, checker);
-  EXPECT_EQ(p.uv, analyticHitUv(a, hit->part, hit->uv));
+  EXPECT_EQ(p.uv, analyticHitUv(a, hit->part, hit->record));
   EXPECT_EQ(p.resolved.color, checkerColor(*scene.materials[std::size_t(checker)].checker, p.uv));
   EXPECT_EQ(p.position, plain.position);
   EXPECT_EQ(p.faceNormal, plain.faceNormal);

@@ -92,8 +92,8 @@ TEST(AnalyticQuadrics, DiscBothSidesAndEdge) {
   auto hit = hitOf(s, {0.5, 3, 0.2}, {0, -1, 0});
   ASSERT_TRUE(hit);
   EXPECT_DOUBLE_EQ(hit->t, 3.0);
-  EXPECT_FLOAT_EQ(hit->uv.x, 0.75f);
-  EXPECT_FLOAT_EQ(hit->uv.y, 0.6f);
+  EXPECT_FLOAT_EQ(hit->record.x, 0.75f);
+  EXPECT_FLOAT_EQ(hit->record.y, 0.6f);
   hit = hitOf(s, {0.5, -3, 0.2}, {0, 1, 0});
   ASSERT_TRUE(hit);
   EXPECT_DOUBLE_EQ(hit->t, 3.0);
@@ -139,7 +139,8 @@ TEST(AnalyticQuadrics, ConeSideApexAxisAndBase) {
   EXPECT_DOUBLE_EQ(hit->t, 4.5);  // radius (r/h)(h/2 - y) = 0.5 at y = 0
   // Normal ~ (h cos phi, r, -h sin phi) at phi = pi: (-2, 1, 0) / sqrt 5.
   dvec3 p, n;
-  shapeHitPointAndNormal(s, 0, hit->uv, p, n);  // hit->uv: the wall's record (analytic_hit.h)
+  shapeHitPointAndNormal(s, 0, hit->record, p,
+                         n);  // hit->record: the wall's record (analytic_hit.h)
   EXPECT_NEAR(n.x, -2.0 / std::sqrt(5.0), 1e-7);
   EXPECT_NEAR(n.y, 1.0 / std::sqrt(5.0), 1e-7);
   // Down the axis onto the apex (a double root), up the axis onto the base.
