@@ -213,6 +213,16 @@ std::size_t WorldGeometry::triangleCount() const {
   return n;
 }
 
+namespace {
+vec3 computeFaceNormal(const WorldMesh& m, std::uint32_t prim) {
+  const std::uint32_t* t = &m.indices[3 * std::size_t(prim)];
+  const vec3 n =
+      glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
+  const float len = glm::length(n);
+  return len > 0.f ? n / len : vec3(0.f, 1.f, 0.f);
+}
+}  // namespace
+
 WorldGeometry flattenScene(const Scene& scene) {
   WorldGeometry world;
   world.meshes.reserve(scene.instances.size());
@@ -258,6 +268,9 @@ WorldGeometry flattenScene(const Scene& scene) {
         w.tangents = computeVertexTangents(w.positions, w.normals, w.uvs, w.indices);
       }
     }
+    w.faceNormals.resize(w.indices.size() / 3);
+    for (std::size_t t = 0; t < w.faceNormals.size(); ++t)
+      w.faceNormals[t] = computeFaceNormal(w, std::uint32_t(t));
     for (const vec3& p : w.positions) world.bounds.extend(p);
     if (mesh.analytic || mesh.sdf) {
       w.analytic = placeShape(mesh.analytic.value_or(AnalyticShape{}), mesh.sdf, inst.transform);
@@ -287,11 +300,8 @@ vec2 interpolateUv(const WorldMesh& m, std::uint32_t prim, float u, float v) {
 }
 
 vec3 geometricNormal(const WorldMesh& m, std::uint32_t prim) {
-  const std::uint32_t* t = &m.indices[3 * std::size_t(prim)];
-  const vec3 n =
-      glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
-  const float len = glm::length(n);
-  return len > 0.f ? n / len : vec3(0.f, 1.f, 0.f);
+  if (std::size_t(prim) < m.faceNormals.size()) return m.faceNormals[prim];
+  return computeFaceNormal(m, prim);
 }
 
 vec4 interpolateTangent(const WorldMesh& m, std::uint32_t prim, float u, float v) {

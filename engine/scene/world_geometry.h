@@ -32,7 +32,11 @@ struct WorldMesh {
   // meshes whose material has a normal map: TANGENT when the file has it (w negated for mirrored
   // instances), else generated from uv derivatives (computeVertexTangents).
   std::vector<vec4> tangents;
-  std::vector<std::uint32_t> indices;        // winding flipped for mirrored instances
+  std::vector<std::uint32_t> indices;  // winding flipped for mirrored instances
+  // geometricNormal() of each triangle, computed once by flattenScene (12 bytes a triangle), so
+  // that a ray hit reads it instead of a cross product, a square root and three divisions
+  // (issue 14's profile). Empty in a mesh built by hand: geometricNormal then computes it.
+  std::vector<vec3> faceNormals;
   bool mirrored = false;                     // det(transform) < 0
   std::optional<AnalyticInstance> analytic;  // the exact surface, for ray tracers (see Mesh)
 };
@@ -81,7 +85,9 @@ void analyticPartWorldBounds(const AnalyticInstance& a, int part, dvec3& lo, dve
 vec3 interpolatePosition(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
 vec3 interpolateNormal(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
 vec2 interpolateUv(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
-vec3 geometricNormal(const WorldMesh& mesh, std::uint32_t primitive);  // unit, CCW front
+// Unit normal of the CCW front face, (0, 1, 0) for a degenerate triangle: faceNormals' value
+// when the mesh has them, bit for bit the computed one.
+vec3 geometricNormal(const WorldMesh& mesh, std::uint32_t primitive);
 // Interpolated xyz (not normalised) and the w of vertex 0; (0,0,0,1) when there are none.
 vec4 interpolateTangent(const WorldMesh& mesh, std::uint32_t primitive, float u, float v);
 

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 
 #include "engine/core/error.h"
@@ -77,4 +78,29 @@ TEST(WorldGeometry, MirroredInstanceKeepsOutwardGeometricNormal) {
   EXPECT_NEAR(geometricNormal(w.meshes[0], 0).z, 1.f, 1e-6f);
   EXPECT_NEAR(geometricNormal(w.meshes[1], 0).z, 1.f, 1e-6f);
   EXPECT_NEAR(interpolatePosition(w.meshes[1], 0, 1.f / 3, 1.f / 3).x, -1.f / 3, 1e-6f);
+}
+
+// flattenScene stores each triangle's normal once (WorldMesh::faceNormals); geometricNormal
+// returns it, and it must be the normal computed from the positions, bit for bit: the same
+// shading as before, for mirrored instances and degenerate triangles too.
+TEST(WorldGeometry, StoredFaceNormalsAreTheComputedOnesBitForBit) {
+  Scene s;
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0.3f, 0}, {0.2f, 1, 0.7f}, {3, 3, 3}, {1e-20f, 0, 0}};
+  m.indices = {0, 1, 2, 1, 3, 2, 0, 4, 4, 3, 3, 3};  // the last two degenerate
+  s.meshes.push_back(m);
+  s.instances.push_back({"plain", 0, glm::rotate(mat4(1.f), 0.7f, vec3(1, 2, 3))});
+  s.instances.push_back({"mirrored", 0, glm::scale(mat4(1.f), vec3(-2, 1, 0.5f))});
+  const WorldGeometry w = flattenScene(s);
+  for (const WorldMesh& mesh : w.meshes) {
+    ASSERT_EQ(mesh.faceNormals.size(), 4u);
+    WorldMesh byHand = mesh;
+    byHand.faceNormals.clear();  // geometricNormal computes it from the positions
+    for (std::uint32_t t = 0; t < 4; ++t) {
+      const vec3 stored = geometricNormal(mesh, t), computed = geometricNormal(byHand, t);
+      EXPECT_EQ(stored, mesh.faceNormals[t]);
+      EXPECT_EQ(std::memcmp(&stored, &computed, sizeof(vec3)), 0) << "triangle " << t;
+    }
+    EXPECT_EQ(geometricNormal(byHand, 3), vec3(0.f, 1.f, 0.f));  // degenerate: the fallback
+  }
 }
