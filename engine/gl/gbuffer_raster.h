@@ -49,6 +49,11 @@ struct GBufferTargets {
   const Texture* normal = nullptr;
   const Texture* surface = nullptr;
   const Texture* depth = nullptr;
+  // false: a visibility buffer. Opaque meshes' hits texels are (instance + 1, primitive, 0, 0):
+  // their fragments fetch no triangle and intersect no ray, and whoever reads them computes
+  // (u, v) itself (the CPU passes do: passes/common/hits_texel.h). Alpha-tested meshes still
+  // write them (their test needs them), and so does every mesh when the normal is written.
+  bool barycentrics = true;
 };
 
 // Holds the compiled programs and framebuffers; create once per context, reuse every frame.
@@ -83,7 +88,8 @@ class GBufferRasterizer {
 
  private:
   int culledMeshes_ = 0;
-  const Program& program(bool alpha, bool normal, const GlShadingBuffers* shading);
+  const Program& program(bool alpha, bool normal, bool barycentrics,
+                         const GlShadingBuffers* shading);
   const Program& surfaceProgram(const GlShadingBuffers& shading);
   // gbuffer_surface.comp over the finished hits: one surfaceFromHits per pixel, not per fragment.
   void resolveSurface(const Texture& hits, const Texture& surface, const GlShadingBuffers& shading);

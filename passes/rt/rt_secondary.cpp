@@ -35,7 +35,6 @@ void RtSecondaryPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
-  const CpuImage& hits = c.cpuRead(io_.hits);
   CpuImage& out = c.cpuWrite(io_.signal);
   CpuImage* steps = sdfSteps_ != kNoResource ? &c.cpuWrite(sdfSteps_) : nullptr;
   const WhittedTracer tracer(scene, world.geometry(), world.rtScene(),
@@ -44,7 +43,7 @@ void RtSecondaryPass::execute(PassContext& c) {
   const bool reflection = kind_ == Kind::Reflection;
 
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
-  const ExactHitBuffer& exact = exactHits(world, hits, frame.camera);
+  const ExactHitBuffer& exact = exactHits(c, io_.hits);
   tbb::parallel_for(0, frame.height, [&](int y) {
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
