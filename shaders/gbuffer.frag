@@ -1,7 +1,7 @@
 // G-buffer raster: hits (instance+1, primitive, u, v) and, with GBUFFER_NORMAL, the shading
 // normal + material (with the normal or bump map when the scene has them: DIPTYCH_DETAIL_NORMAL);
 // the surface target is resolved afterwards by gbuffer_surface.comp. GBUFFER_VISIBILITY: a
-// visibility buffer, (instance+1, primitive, 0, 0), for frames whose only readers of the hits
+// visibility buffer, (instance+1, primitive, NaN, NaN), for frames whose only readers of the hits
 // compute (u, v) themselves (the CPU passes, passes/common/hits_texel.h).
 // Layout and method: engine/gl/gbuffer_raster.h and docs/gl.md.
 #include "gl/scene_buffers.glsl"
@@ -34,7 +34,8 @@ layout(location = 1) out vec4 outNormal;
 
 void main() {
 #ifdef GBUFFER_VISIBILITY
-  outHits = uvec4(uInstance + 1u, uint(gl_PrimitiveID), 0u, 0u);
+  // (u, v) = quiet NaN: "not computed" (0 would be vertex 0, a valid point).
+  outHits = uvec4(uInstance + 1u, uint(gl_PrimitiveID), 0x7fc00000u, 0x7fc00000u);
 #else
   // gl_FragCoord.xy is the pixel centre with y up; primaryRay's image y runs down, so its
   // ndcY = 1 - 2 (H - fragY) / H = 2 fragY / H - 1, the same form as x.

@@ -155,8 +155,7 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   const vec3 up = glm::cross(right, forward);
   const bool alphaTested = shading && shading->anyAlphaTested();
   const Program& opaqueProgram = program(false, withNormal, targets.barycentrics, shading);
-  const Program* alphaProgram =
-      alphaTested ? &program(true, withNormal, true, shading) : nullptr;
+  const Program* alphaProgram = alphaTested ? &program(true, withNormal, true, shading) : nullptr;
   for (const Program* program : {&opaqueProgram, alphaProgram}) {
     if (!program) continue;
     program->set("uViewProjection", reversedZProjection(camera, aspect) * viewMatrix(camera));

@@ -4,7 +4,8 @@
 // Layout (all W x H, image row 0 at the top after readTexture):
 //   hits RGBA32UI = (instance + 1, primitive, floatBitsToUint(u), floatBitsToUint(v));
 //                         x = 0 is background. (u, v) are Embree barycentrics at the pixel
-//                         centre: p = (1-u-v) p0 + u p1 + v p2, vertices in index order.
+//                         centre: p = (1-u-v) p0 + u p1 + v p2, vertices in index order;
+//                         NaN in a visibility buffer (GBufferTargets::barycentrics false).
 //   normal     RGBA32F  = (shading normal xyz, unit, interpolated with (u, v); w = material
 //                         index, -1 for the default material); (0, 0, 0, 0) for background.
 //   depth      D32F     = reversed-Z depth near / -z_view (camera_math.h), 0 = background.
@@ -49,7 +50,8 @@ struct GBufferTargets {
   const Texture* normal = nullptr;
   const Texture* surface = nullptr;
   const Texture* depth = nullptr;
-  // false: a visibility buffer. Opaque meshes' hits texels are (instance + 1, primitive, 0, 0):
+  // false: a visibility buffer. Opaque meshes' hits texels are (instance + 1, primitive, NaN,
+  // NaN) (quiet NaN bits 0x7fc00000: "not computed"):
   // their fragments fetch no triangle and intersect no ray, and whoever reads them computes
   // (u, v) itself (the CPU passes do: passes/common/hits_texel.h). Alpha-tested meshes still
   // write them (their test needs them), and so does every mesh when the normal is written.

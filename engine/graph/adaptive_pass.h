@@ -14,8 +14,9 @@ namespace diptych {
 class ReaderQuery {
  public:
   virtual ~ReaderQuery() = default;
-  // Whether a live pass placed on GL reads `id` (a CPU reader gets a readback, never the texture).
-  virtual bool readOnGl(ResourceId id) const = 0;
+  // Whether a live pass placed in `domain` reads `id` (a CPU reader of a GL resource gets a
+  // readback, never the texture).
+  virtual bool readIn(ResourceId id, Domain domain) const = 0;
   // Whether any live pass reads `id`, or the frame outputs it.
   virtual bool consumed(ResourceId id) const = 0;
 };

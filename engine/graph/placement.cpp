@@ -84,9 +84,9 @@ namespace {
 class CompiledReaders final : public ReaderQuery {
  public:
   explicit CompiledReaders(const CompiledGraph& g) : g_(g) {}
-  bool readOnGl(ResourceId id) const override {
+  bool readIn(ResourceId id, Domain domain) const override {
     for (PassIndex q : g_.resources[id].readers)
-      if (!g_.passes[q].culled && g_.passes[q].domain == Domain::Gl) return true;
+      if (!g_.passes[q].culled && g_.passes[q].domain == domain) return true;
     return false;
   }
   bool consumed(ResourceId id) const override {

@@ -16,32 +16,11 @@ bool sameCamera(const Camera& a, const Camera& b) {
          a.verticalFov == b.verticalFov;
 }
 
-// The texels' (instance + 1, primitive): all the build reads of them.
-void idsOf(const CpuImage& hits, std::vector<std::uint32_t>& ids) {
-  const std::size_t n = std::size_t(hits.desc.width) * std::size_t(hits.desc.height);
-  const std::size_t stride = std::size_t(hits.channels());
-  ids.resize(2 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    ids[2 * i] = hits.words[i * stride];
-    ids[2 * i + 1] = hits.words[i * stride + 1];
-  }
-}
-
-bool sameIds(const CpuImage& hits, const std::vector<std::uint32_t>& ids) {
-  const std::size_t n = std::size_t(hits.desc.width) * std::size_t(hits.desc.height);
-  const std::size_t stride = std::size_t(hits.channels());
-  if (ids.size() != 2 * n) return false;
-  for (std::size_t i = 0; i < n; ++i)
-    if (ids[2 * i] != hits.words[i * stride] || ids[2 * i + 1] != hits.words[i * stride + 1])
-      return false;
-  return true;
-}
-
 }  // namespace
 
 bool ExactHitBuffer::builtFrom(const CpuImage& hits, const Camera& camera) const {
   return resource_ == kNoResource && camera_ && sameCamera(*camera_, camera) &&
-         width_ == hits.desc.width && height_ == hits.desc.height && sameIds(hits, sourceIds_);
+         width_ == hits.desc.width && height_ == hits.desc.height && source_ == hits.words;
 }
 
 void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camera& camera) {
@@ -72,7 +51,7 @@ const ExactHitBuffer& exactHits(PassContext& context, ResourceId hits) {
     buffer.build(world, context.cpuRead(hits), context.frame().camera);
     buffer.frame_ = world.frameSerial();
     buffer.resource_ = hits;
-    buffer.sourceIds_.clear();
+    buffer.source_.clear();
   }
   return buffer;
 }
@@ -84,7 +63,7 @@ const ExactHitBuffer& exactHits(RenderWorld& world, const CpuImage& hits, const 
     buffer.build(world, hits, camera);
     buffer.frame_ = world.frameSerial();
     buffer.resource_ = kNoResource;
-    idsOf(hits, buffer.sourceIds_);
+    buffer.source_ = hits.words;
   }
   return buffer;
 }

@@ -5,17 +5,17 @@
 // instead of each lifting every texel again (up to five double-precision intersections per
 // analytic pixel before, one per consumer).
 //
-// Only each texel's (instance, primitive) is read: (u, v) are those of the pixel ray through the
-// named triangle, computed on the CPU (exactTexel), so the G-buffer may be a visibility buffer.
+// Where the G-buffer is a visibility buffer (passes/raster/gbuffer.h), (u, v) are those of the
+// pixel ray through the named triangle, computed on the CPU in this build (exactTexel).
 //
 // Owner: the RenderWorld (RenderWorld::cpuCached), one buffer per world. It is a cache, not a
 // graph resource, so the GL G-buffer and the slot contracts are untouched. Passes key it on the
 // graph resource they read (exactHits(PassContext&, ResourceId)): a resource version is written
 // once per frame (in-place writes make a new version), so the frame serial and the version name
 // its texels, with no look at them. Other callers (tests, tools) pass an image: it is rebuilt
-// unless it was built from an equal image (a compare of the texels' ids) and the same camera.
-// Either way a stale buffer cannot be read. Memory: 20 B (the hits) a pixel, plus 8 B (the ids)
-// for the image path, held for the world's lifetime (6 to 9 MB at 640x480).
+// unless it was built from an equal image (a compare of the texels) and the same camera. Either
+// way a stale buffer cannot be read. Memory: 20 B (the hits) a pixel, plus 16 B (the texels) for
+// the image path, held for the world's lifetime (6 to 11 MB at 640x480).
 #include <cstdint>
 #include <mutex>
 #include <optional>
@@ -53,7 +53,7 @@ class ExactHitBuffer {
   std::uint64_t frame_ = ~std::uint64_t(0);  // RenderWorld::frameSerial() it was built in
   ResourceId resource_ = kNoResource;        // the graph resource it was built from, if any
   std::vector<SurfaceHit> hits_;             // instance -1: background
-  std::vector<std::uint32_t> sourceIds_;     // image path: the texels' (instance + 1, primitive)
+  std::vector<std::uint32_t> source_;        // image path: the texels it was built from
   std::optional<Camera> camera_;             // the camera whose pixel rays lifted them
   std::mutex mutex_;
 };
@@ -65,7 +65,7 @@ class ExactHitBuffer {
 const ExactHitBuffer& exactHits(PassContext& context, ResourceId hits);
 
 // The same for an image outside a frame graph's passes: rebuilt unless the last build was from
-// this path with equal (instance, primitive) texels and the same camera.
+// this path with equal texels and the same camera.
 const ExactHitBuffer& exactHits(RenderWorld& world, const CpuImage& hits, const Camera& camera);
 
 }  // namespace diptych

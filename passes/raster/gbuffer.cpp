@@ -27,17 +27,23 @@ void GBufferPass::setup(PassBuilder& b) {
 }
 
 std::string GBufferPass::adapt(const ReaderQuery& readers) {
-  // The CPU passes never read the texel's (u, v) (exactTexel recomputes them), and requested
-  // outputs do not count (as in placement: inspecting a signal must not change the frame).
+  // A CPU reader computes (u, v) itself where the texel has none (exactTexel). Outputs do not
+  // count beside a CPU reader (compare requests the hits beside its timed frames: inspecting must
+  // not change the cost); a G-buffer nobody reads is one being inspected, and keeps them.
+  const bool gl = readers.readIn(hits_, Domain::Gl);
+  const bool cpu = readers.readIn(hits_, Domain::Cpu);
   const bool normal = readers.consumed(normal_);
   const bool surface = surface_ != kNoResource && readers.consumed(surface_);
-  barycentrics_ = readers.readOnGl(hits_) || normal || surface;
-  if (barycentrics_)
-    return readers.readOnGl(hits_)
-               ? "exact hits: a GL pass reads the hits, (u, v) computed per fragment"
-               : "exact hits: the normal or the surface is read, (u, v) computed per fragment";
-  return "visibility buffer: no GL pass reads the hits, so their (u, v) are left 0; the CPU "
-         "passes intersect the pixel ray with the named triangle (passes/common/hits_texel.h)";
+  barycentrics_ = gl || !cpu || normal || surface;
+  if (!barycentrics_)
+    return "visibility buffer: only CPU passes read the hits, so the fragments leave their "
+           "(u, v) NaN and the CPU passes intersect the pixel ray with the named triangle "
+           "(passes/common/hits_texel.h)";
+  return std::string("exact hits: (u, v) computed per fragment, because ") +
+         (gl       ? "a GL pass reads the hits"
+          : !cpu   ? "no CPU pass reads the hits"
+          : normal ? "the normal is read"
+                   : "the surface is read");
 }
 
 void GBufferPass::execute(PassContext& c) {

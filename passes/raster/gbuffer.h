@@ -9,9 +9,9 @@ namespace diptych {
 // the pixel-centre ray, shading normal RGBA32F (w = material), reversed-Z D32F depth, and the
 // surface (RGBA32F, 3 layers: the surface point GL passes read instead of rebuilding it). The
 // normal and the surface are written only in frames where a live pass reads them.
-// Adaptive (adaptive_pass.h): in a frame where no GL pass reads the hits (the hybrid: every
-// reader is a CPU pass, which computes (u, v) itself along the pixel ray, hits_texel.h) and
-// nothing reads the normal or the surface, the hits are a visibility buffer, (u, v) = 0.
+// Adaptive (adaptive_pass.h): in a frame where every reader of the hits is a CPU pass (the
+// hybrid; the CPU computes (u, v) itself along the pixel ray, hits_texel.h) and nothing reads the
+// normal or the surface, the hits are a visibility buffer, (u, v) = NaN.
 class GBufferPass : public AdaptivePass {
  public:
   static ParamSchema schema();

@@ -52,12 +52,12 @@ void RtSecondaryPass::execute(PassContext& c) {
   std::vector<char> candidate(scene.instances.size());
   for (std::size_t i = 0; i < candidate.size(); ++i) {
     const Material& m = scene.material(scene.meshes[scene.instances[i].mesh].material);
-    candidate[i] = reflection ? shading::materialHasReflection(m)
-                              : shading::materialHasTransmission(m);
+    candidate[i] =
+        reflection ? shading::materialHasReflection(m) : shading::materialHasTransmission(m);
   }
-  DIPTYCH_CHECK(out.channels() == 4 && out.desc.width == frame.width &&
-                    out.desc.height == frame.height,
-                "rt_secondary: the signal is not RGBA32F of the frame's size");
+  DIPTYCH_CHECK(
+      out.channels() == 4 && out.desc.width == frame.width && out.desc.height == frame.height,
+      "rt_secondary: the signal is not RGBA32F of the frame's size");
   tbb::parallel_for(0, frame.height, [&](int y) {
     // The row's address once (per-texel setF recomputes the stride and the index).
     std::uint32_t* row = out.row(y);

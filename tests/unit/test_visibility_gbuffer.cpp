@@ -1,10 +1,11 @@
-// The G-buffer's visibility variant (passes/raster/gbuffer.h): in a frame where no GL pass reads
-// gbuffer.hits (the hybrid), the G-buffer writes (instance + 1, primitive, 0, 0) and the CPU
-// passes compute (u, v) themselves along the pixel ray (exactTexel, passes/common/hits_texel.h).
-// A frame with a GL reader keeps the per-fragment exact (u, v). The CPU passes' images do not
-// depend on which variant ran, and their hits are the pixel ray's point of the named triangle.
+// The G-buffer's visibility variant (passes/raster/gbuffer.h): in a frame where every reader of
+// gbuffer.hits is a CPU pass (the hybrid), the G-buffer writes (instance + 1, primitive, NaN, NaN)
+// and the CPU passes compute (u, v) themselves along the pixel ray (exactTexel,
+// passes/common/hits_texel.h). A frame with a GL reader, or with no reader at all, keeps the
+// per-fragment exact (u, v), and its CPU passes use them as before.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <limits>
 
@@ -26,67 +27,86 @@ std::filesystem::path sample(const char* name) {
   return std::filesystem::path(samplesDir()) / "scenes" / name;
 }
 
-// Texels whose (u, v) channels are not both 0.
-int texelsWithBarycentrics(const CpuImage& hits) {
-  int n = 0;
+struct TexelCounts {
+  int covered = 0, withBarycentrics = 0;  // (u, v) not NaN
+};
+
+TexelCounts countTexels(const CpuImage& hits) {
+  TexelCounts n;
   for (int y = 0; y < hits.desc.height; ++y)
     for (int x = 0; x < hits.desc.width; ++x)
-      n += hits.u(x, y, 0) != 0u && (hits.u(x, y, 2) != 0u || hits.u(x, y, 3) != 0u);
+      if (const auto hit = hitsTexel(hits, x, y)) {
+        ++n.covered;
+        n.withBarycentrics += !std::isnan(hit->u) && !std::isnan(hit->v);
+      }
   return n;
 }
 
-int covered(const CpuImage& hits) {
-  int n = 0;
-  for (int y = 0; y < hits.desc.height; ++y)
-    for (int x = 0; x < hits.desc.width; ++x) n += hits.u(x, y, 0) != 0u;
-  return n;
+bool startsWith(const std::string& s, const std::string& prefix) {
+  return s.rfind(prefix, 0) == 0;
+}
+
+double relativeRmse(const CpuImage& a, const CpuImage& b) {
+  double num = 0, den = 0;
+  for (int y = 0; y < a.desc.height; ++y)
+    for (int x = 0; x < a.desc.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double d = double(a.f(x, y, c)) - double(b.f(x, y, c));
+        num += d * d;
+        den += double(b.f(x, y, c)) * double(b.f(x, y, c));
+      }
+  return std::sqrt(num / den);
 }
 
 }  // namespace
 
 TEST(VisibilityGBuffer, TheHybridFrameRastersAVisibilityBuffer) {
+  // Requesting the hits as an output beside the CPU readers (as compare does) changes nothing.
   auto f = renderHybridFrame(sample("whitted.json"), kW, kH, {"shade.color", "gbuffer.hits"});
   ASSERT_NE(f->pass("gbuffer"), nullptr);
-  // Requesting the hits as an output does not make the G-buffer compute (u, v).
-  EXPECT_EQ(f->pass("gbuffer")->variant.rfind("visibility buffer", 0), 0u)
+  EXPECT_TRUE(startsWith(f->pass("gbuffer")->variant, "visibility buffer"))
       << f->pass("gbuffer")->variant;
-  const CpuImage& hits = f->output("gbuffer.hits");
-  EXPECT_GT(covered(hits), kW * kH / 2);
-  EXPECT_EQ(texelsWithBarycentrics(hits), 0);
+  const TexelCounts n = countTexels(f->output("gbuffer.hits"));
+  EXPECT_GT(n.covered, kW * kH / 2);
+  EXPECT_EQ(n.withBarycentrics, 0);
 }
 
-TEST(VisibilityGBuffer, ARasterFrameKeepsThePerFragmentBarycentrics) {
+TEST(VisibilityGBuffer, AFrameWithAGlReaderOrNoReaderKeepsThePerFragmentBarycentrics) {
   const Recipe raster = loadRecipe(std::filesystem::path(samplesDir()) / "graphs/raster.json");
-  auto f = renderHybridFrame(sample("whitted.json"), kW, kH, {"shade.color", "gbuffer.hits"},
-                             raster);
-  EXPECT_EQ(f->pass("gbuffer")->variant.rfind("exact hits: a GL pass reads the hits", 0), 0u)
+  auto f =
+      renderHybridFrame(sample("whitted.json"), kW, kH, {"shade.color", "gbuffer.hits"}, raster);
+  EXPECT_TRUE(startsWith(f->pass("gbuffer")->variant, "exact hits"));
+  EXPECT_NE(f->pass("gbuffer")->variant.find("a GL pass reads the hits"), std::string::npos)
       << f->pass("gbuffer")->variant;
-  const CpuImage& hits = f->output("gbuffer.hits");
-  // Almost every covered texel: a vertex hit exactly has (u, v) = (0, 0).
-  EXPECT_GT(texelsWithBarycentrics(hits), covered(hits) * 99 / 100);
+  TexelCounts n = countTexels(f->output("gbuffer.hits"));
+  EXPECT_GT(n.covered, kW * kH / 2);
+  EXPECT_EQ(n.withBarycentrics, n.covered);
+  // The G-buffer alone (being inspected): nobody computes (u, v) on the CPU, so GL does.
+  auto alone = renderHybridFrame(sample("whitted.json"), kW, kH, {"gbuffer.hits"});
+  EXPECT_NE(alone->pass("gbuffer")->variant.find("no CPU pass reads the hits"), std::string::npos)
+      << alone->pass("gbuffer")->variant;
+  n = countTexels(alone->output("gbuffer.hits"));
+  EXPECT_EQ(n.withBarycentrics, n.covered);
 }
 
 // The same hybrid frame with a GL reader of the hits added (shade_gl), so that its G-buffer
-// computes (u, v) per fragment: the CPU passes ignore them, and shade_cpu is bit-identical to
-// the visibility-buffer frame's shade.
-TEST(VisibilityGBuffer, TheCpuPassesImagesDoNotDependOnTheVariant) {
+// computes (u, v) per fragment and the CPU passes use them: the variant moves the CPU shade by
+// rounding only (GL's (u, v) and the C++ twin's round differently, docs/gl.md).
+TEST(VisibilityGBuffer, TheVariantMovesTheHybridImageByRoundingOnly) {
   for (const char* scene : {"whitted.json", "cornell.json", "textures.json"}) {
     auto visibility = renderHybridFrame(sample(scene), kW, kH, {"shade.color"});
-    auto exact = renderHybridFrame(sample(scene), kW, kH, {},
-                                   withShadeInBothDomains(defaultHybridRecipe()));
-    ASSERT_EQ(visibility->pass("gbuffer")->variant.rfind("visibility", 0), 0u) << scene;
-    ASSERT_EQ(exact->pass("gbuffer")->variant.rfind("exact hits", 0), 0u) << scene;
-    ASSERT_GT(texelsWithBarycentrics(exact->output("gbuffer.hits")), 0) << scene;
-    const CpuImage& a = visibility->output("shade.color");
-    const CpuImage& b = exact->output("shade_cpu.color");
-    ASSERT_EQ(a.words.size(), b.words.size());
-    EXPECT_TRUE(a.words == b.words) << scene << ": the CPU shade differs between the variants";
+    auto exact =
+        renderHybridFrame(sample(scene), kW, kH, {}, withShadeInBothDomains(defaultHybridRecipe()));
+    ASSERT_TRUE(startsWith(visibility->pass("gbuffer")->variant, "visibility")) << scene;
+    ASSERT_TRUE(startsWith(exact->pass("gbuffer")->variant, "exact hits")) << scene;
+    const double e =
+        relativeRmse(visibility->output("shade.color"), exact->output("shade_cpu.color"));
+    std::printf("%s: visibility against exact G-buffer, CPU shade relative RMSE %.3g\n", scene, e);
+    EXPECT_GT(e, 0.0) << scene << ": the two frames should differ in the last bits";
+    EXPECT_LT(e, 1e-5) << scene;
   }
 }
 
-// Every triangle texel's exact hit has the barycentrics of the pixel-centre ray (the ray the
-// Whitted reference traces) through the named triangle, computed by the C++ twin of the GLSL;
-// where Embree's primary ray hits the same triangle, the two points agree to float rounding.
 TEST(VisibilityGBuffer, ExactHitsAreThePixelRaysPointOnTheNamedTriangle) {
   for (const char* scene : {"whitted.json", "cornell.json", "techniques.json"}) {
     auto f = renderHybridFrame(sample(scene), kW, kH, {"shade.color", "gbuffer.hits"});
@@ -112,8 +132,7 @@ TEST(VisibilityGBuffer, ExactHitsAreThePixelRaysPointOnTheNamedTriangle) {
         ASSERT_EQ(hit->v, uv.y) << scene << " pixel " << x << "," << y;
         const auto rt =
             f->world->rtScene().intersect(ray, 0.f, std::numeric_limits<float>::infinity());
-        if (!rt || rt->analytic || rt->instance != hit->instance ||
-            rt->primitive != hit->primitive)
+        if (!rt || rt->analytic || rt->instance != hit->instance || rt->primitive != hit->primitive)
           continue;
         ++sameAsEmbree;
         const vec3 pe = interpolatePosition(mesh, rt->primitive, rt->u, rt->v);
