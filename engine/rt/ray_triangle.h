@@ -4,8 +4,10 @@
 // p = (1-u-v) p0 + u p1 + v p2. Moller & Trumbore, "Fast, Minimum Storage Ray/Triangle
 // Intersection", JGT 1997: with e1 = p1-p0, e2 = p2-p0, s = o-p0,
 //   det = e1 . (d x e2),  u = s . (d x e2) / det,  v = d . (s x e1) / det.
-// Same operations in the same order as the GLSL, so that with the same ray both sides round
-// alike. Not clamped to the triangle. Returns false when the ray is parallel to the plane
+// Same operations in the same order as the GLSL; a GL driver may still round differently
+// (llvmpipe does, in the last bits: docs/gl.md, "The visibility variant"). The CPU passes call
+// it where the G-buffer is a visibility buffer (passes/common/hits_texel.h). Not clamped to the
+// triangle. Returns false when the ray is parallel to the plane
 // (det == 0) or (u, v) is not finite; `uv` is then unspecified.
 #include <cmath>
 
