@@ -1,6 +1,8 @@
 // G-buffer raster: hits (instance+1, primitive, u, v) and, with GBUFFER_NORMAL, the shading
 // normal + material (with the normal or bump map when the scene has them: DIPTYCH_DETAIL_NORMAL);
-// the surface target is resolved afterwards by gbuffer_surface.comp.
+// the surface target is resolved afterwards by gbuffer_surface.comp. GBUFFER_VISIBILITY: a
+// visibility buffer, (instance+1, primitive, NaN, NaN), for frames whose only readers of the hits
+// compute (u, v) themselves (the CPU passes, passes/common/hits_texel.h).
 // Layout and method: engine/gl/gbuffer_raster.h and docs/gl.md.
 #include "gl/scene_buffers.glsl"
 #include "gl/ray_triangle.glsl"
@@ -31,6 +33,10 @@ layout(location = 1) out vec4 outNormal;
 #endif
 
 void main() {
+#ifdef GBUFFER_VISIBILITY
+  // (u, v) = quiet NaN: "not computed" (0 would be vertex 0, a valid point).
+  outHits = uvec4(uInstance + 1u, uint(gl_PrimitiveID), 0x7fc00000u, 0x7fc00000u);
+#else
   // gl_FragCoord.xy is the pixel centre with y up; primaryRay's image y runs down, so its
   // ndcY = 1 - 2 (H - fragY) / H = 2 fragY / H - 1, the same form as x.
   vec2 ndc = 2.0 * gl_FragCoord.xy / uViewportSize - 1.0;
@@ -73,4 +79,5 @@ void main() {
 #endif
   outNormal = vec4(n, uMaterial);
 #endif
+#endif  // GBUFFER_VISIBILITY
 }

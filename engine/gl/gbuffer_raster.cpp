@@ -24,7 +24,7 @@ GBufferTextures GBufferTextures::allocate(int width, int height, bool surface) {
 }
 
 GBufferRasterizer::GBufferRasterizer() {
-  program(false, true, nullptr);
+  program(false, true, true, nullptr);
 }
 
 namespace {
@@ -45,7 +45,7 @@ bool hasDetailNormals(const std::vector<ShaderDefine>& defines) {
 
 }  // namespace
 
-const Program& GBufferRasterizer::program(bool alpha, bool normal,
+const Program& GBufferRasterizer::program(bool alpha, bool normal, bool barycentrics,
                                           const GlShadingBuffers* shading) {
   // The alpha-tested and detail-normal variants include scene_shading.glsl: the scene's
   // permutation. With normal or bump maps the normal output is surfaceFromHits' shading normal.
@@ -55,6 +55,9 @@ const Program& GBufferRasterizer::program(bool alpha, bool normal,
   if (alpha) defines.push_back({"DIPTYCH_ALPHA_MASK", ""});
   if (normal) defines.push_back({"GBUFFER_NORMAL", ""});
   if (detail) defines.push_back({"DIPTYCH_DETAIL_NORMAL", ""});
+  // The visibility buffer: no triangle fetched, no ray intersected (the alpha test and the
+  // normal need the exact (u, v), so those variants always compute them).
+  if (!barycentrics && !alpha && !normal) defines.push_back({"GBUFFER_VISIBILITY", ""});
   const std::string key = "raster:" + keyOf(defines);
   auto it = programs_.find(key);
   if (it == programs_.end())
@@ -151,8 +154,8 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   const vec3 right = glm::normalize(glm::cross(forward, camera.up));
   const vec3 up = glm::cross(right, forward);
   const bool alphaTested = shading && shading->anyAlphaTested();
-  const Program& opaqueProgram = program(false, withNormal, shading);
-  const Program* alphaProgram = alphaTested ? &program(true, withNormal, shading) : nullptr;
+  const Program& opaqueProgram = program(false, withNormal, targets.barycentrics, shading);
+  const Program* alphaProgram = alphaTested ? &program(true, withNormal, true, shading) : nullptr;
   for (const Program* program : {&opaqueProgram, alphaProgram}) {
     if (!program) continue;
     program->set("uViewProjection", reversedZProjection(camera, aspect) * viewMatrix(camera));

@@ -4,7 +4,8 @@
 // Layout (all W x H, image row 0 at the top after readTexture):
 //   hits RGBA32UI = (instance + 1, primitive, floatBitsToUint(u), floatBitsToUint(v));
 //                         x = 0 is background. (u, v) are Embree barycentrics at the pixel
-//                         centre: p = (1-u-v) p0 + u p1 + v p2, vertices in index order.
+//                         centre: p = (1-u-v) p0 + u p1 + v p2, vertices in index order;
+//                         NaN in a visibility buffer (GBufferTargets::barycentrics false).
 //   normal     RGBA32F  = (shading normal xyz, unit, interpolated with (u, v); w = material
 //                         index, -1 for the default material); (0, 0, 0, 0) for background.
 //   depth      D32F     = reversed-Z depth near / -z_view (camera_math.h), 0 = background.
@@ -49,6 +50,12 @@ struct GBufferTargets {
   const Texture* normal = nullptr;
   const Texture* surface = nullptr;
   const Texture* depth = nullptr;
+  // false: a visibility buffer. Opaque meshes' hits texels are (instance + 1, primitive, NaN,
+  // NaN) (quiet NaN bits 0x7fc00000: "not computed"):
+  // their fragments fetch no triangle and intersect no ray, and whoever reads them computes
+  // (u, v) itself (the CPU passes do: passes/common/hits_texel.h). Alpha-tested meshes still
+  // write them (their test needs them), and so does every mesh when the normal is written.
+  bool barycentrics = true;
 };
 
 // Holds the compiled programs and framebuffers; create once per context, reuse every frame.
@@ -83,7 +90,8 @@ class GBufferRasterizer {
 
  private:
   int culledMeshes_ = 0;
-  const Program& program(bool alpha, bool normal, const GlShadingBuffers* shading);
+  const Program& program(bool alpha, bool normal, bool barycentrics,
+                         const GlShadingBuffers* shading);
   const Program& surfaceProgram(const GlShadingBuffers& shading);
   // gbuffer_surface.comp over the finished hits: one surfaceFromHits per pixel, not per fragment.
   void resolveSurface(const Texture& hits, const Texture& surface, const GlShadingBuffers& shading);

@@ -53,6 +53,7 @@ nlohmann::json graphToJson(const CompiledGraph& g, const std::vector<NodeTiming>
     if (p.culled) jp["cull_reason"] = p.cullReason;
     if (!p.inputsLeftOut.empty()) jp["inputs_left_out"] = p.inputsLeftOut;
     if (!p.placement.empty()) jp["placement"] = p.placement;
+    if (!p.variant.empty()) jp["variant"] = p.variant;
     for (SceneNeed n : p.needs) jp["scene_needs"].push_back(sceneNeedName(n));
     for (ResourceId r : p.reads) jp["reads"].push_back(g.resources[r].name);
     for (ResourceId w : p.writes) jp["writes"].push_back(g.resources[w].name);

@@ -367,6 +367,7 @@ CompiledGraph compileGraph(const Recipe& recipe, const PassRegistry& registry, c
   cullUnrequested(g);
   placeAutoPasses(g, order);
   dropGlOnlyReads(g);
+  adaptPasses(g);
   schedule(g, order);
   computeLifetimesAndPool(g);
   return g;

@@ -34,6 +34,7 @@ struct GraphPass {
   bool culled = false;
   std::string cullReason;  // "scene has no transmissive materials", "output not requested"
   std::string placement;   // auto-placed passes: the rule's choice and the bytes it compared
+  std::string variant;     // adaptive passes (adaptive_pass.h): what they chose from their readers
   // Optional inputs dropped because their producer was culled for the scene:
   // "albedo <- texture_filtering.albedo (scene has no textured materials)".
   std::vector<std::string> inputsLeftOut;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 
+#include "engine/graph/adaptive_pass.h"
 #include "engine/graph/placeable_pass.h"
 
 namespace diptych {
@@ -75,6 +76,38 @@ void dropGlOnlyReads(CompiledGraph& g) {
       std::erase(g.resources[r].readers, p);
     }
     pass.glOnlyReads.clear();
+  }
+}
+
+namespace {
+
+class CompiledReaders final : public ReaderQuery {
+ public:
+  explicit CompiledReaders(const CompiledGraph& g) : g_(g) {}
+  bool readIn(ResourceId id, Domain domain) const override {
+    for (PassIndex q : g_.resources[id].readers)
+      if (!g_.passes[q].culled && g_.passes[q].domain == domain) return true;
+    return false;
+  }
+  bool consumed(ResourceId id) const override {
+    if (std::find(g_.outputs.begin(), g_.outputs.end(), id) != g_.outputs.end()) return true;
+    for (PassIndex q : g_.resources[id].readers)
+      if (!g_.passes[q].culled) return true;
+    return false;
+  }
+
+ private:
+  const CompiledGraph& g_;
+};
+
+}  // namespace
+
+void adaptPasses(CompiledGraph& g) {
+  const CompiledReaders readers(g);
+  for (PassIndex p : g.passes.ids()) {
+    GraphPass& pass = g.passes[p];
+    if (auto* adaptive = dynamic_cast<AdaptivePass*>(pass.pass.get()); adaptive && !pass.culled)
+      pass.variant = adaptive->adapt(readers);
   }
 }
 

@@ -25,6 +25,10 @@ std::size_t placementCost(const CompiledGraph& g, PassIndex p, Domain domain,
 // compared bytes in GraphPass::placement.
 void placeAutoPasses(CompiledGraph& g, const std::vector<PassIndex>& order);
 
+// Calls adapt() on every live AdaptivePass (adaptive_pass.h) with the frame's final readers, and
+// records its statement in GraphPass::variant. Runs after placement and dropGlOnlyReads.
+void adaptPasses(CompiledGraph& g);
+
 // Removes the glOnly companion reads (readCompanion, companion.h) of every pass that runs on the
 // CPU, so that they insert no readback and keep no resource alive.
 void dropGlOnlyReads(CompiledGraph& g);

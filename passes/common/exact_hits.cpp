@@ -19,8 +19,8 @@ bool sameCamera(const Camera& a, const Camera& b) {
 }  // namespace
 
 bool ExactHitBuffer::builtFrom(const CpuImage& hits, const Camera& camera) const {
-  return camera_ && sameCamera(*camera_, camera) && width_ == hits.desc.width &&
-         height_ == hits.desc.height && source_ == hits.words;
+  return resource_ == kNoResource && camera_ && sameCamera(*camera_, camera) &&
+         width_ == hits.desc.width && height_ == hits.desc.height && source_ == hits.words;
 }
 
 void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camera& camera) {
@@ -37,18 +37,33 @@ void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camer
       row[x] = hit ? *hit : SurfaceHit{};  // instance -1: background
     }
   });
-  source_ = hits.words;
   camera_ = camera;
   ++builds_;
+}
+
+const ExactHitBuffer& exactHits(PassContext& context, ResourceId hits) {
+  RenderWorld& world = context.world();
+  ExactHitBuffer& buffer = world.cpuCached<ExactHitBuffer>();
+  const std::lock_guard lock(buffer.mutex_);
+  // Once per frame: kept across frames, a still camera's timed frames would never pay the lift.
+  // One graph runs per frame serial, and a resource version is written once in it.
+  if (buffer.frame_ != world.frameSerial() || buffer.resource_ != hits) {
+    buffer.build(world, context.cpuRead(hits), context.frame().camera);
+    buffer.frame_ = world.frameSerial();
+    buffer.resource_ = hits;
+    buffer.source_.clear();
+  }
+  return buffer;
 }
 
 const ExactHitBuffer& exactHits(RenderWorld& world, const CpuImage& hits, const Camera& camera) {
   ExactHitBuffer& buffer = world.cpuCached<ExactHitBuffer>();
   const std::lock_guard lock(buffer.mutex_);
-  // Once per frame: kept across frames, a still camera's timed frames would never pay the lift.
   if (buffer.frame_ != world.frameSerial() || !buffer.builtFrom(hits, camera)) {
     buffer.build(world, hits, camera);
     buffer.frame_ = world.frameSerial();
+    buffer.resource_ = kNoResource;
+    buffer.source_ = hits.words;
   }
   return buffer;
 }

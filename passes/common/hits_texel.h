@@ -1,10 +1,14 @@
 #pragma once
 // Decoding the G-buffer hits texel shared by every pass that reads gbuffer.hits:
 // RGBA32UI = (instance + 1, primitive, floatBits(u), floatBits(v)); x == 0 is background.
+// (u, v) are NaN in a frame whose G-buffer is a visibility buffer (passes/raster/gbuffer.h):
+// hitsTexel then names the triangle only; exactTexel and triangleTexel compute them.
 #include <bit>
+#include <cmath>
 #include <optional>
 
 #include "engine/graph/cpu_image.h"
+#include "engine/rt/ray_triangle.h"
 #include "engine/rt/surface_point.h"
 
 namespace diptych {
@@ -16,18 +20,50 @@ inline std::optional<SurfaceHit> hitsTexel(const CpuImage& hits, int x, int y) {
                     std::bit_cast<float>(hits.u(x, y, 3))};
 }
 
-// The texel as the exact producers see it: a hit on the tessellation of an analytic instance
-// (quadric or SDF) is moved onto the exact surface along the pixel-centre ray the G-buffer traced
-// (liftToAnalytic), so rt_shadows, rt_reflection, rt_transmission and the CPU shade pass shade the
-// point the Whitted reference finds; raster producers keep reading hitsTexel (the triangles).
-// Those passes read it from the frame's exact-hit buffer (exact_hits.h), built once from this.
-// `pinhole`: the camera frame at the hits image's size, built once per image by per-pixel loops
-// (primaryRay would rebuild it for every lifted texel; the ray is the same bit for bit).
+// The hit's triangle intersected with `ray`: (u, v) by rayTriangleBarycentrics
+// (engine/rt/ray_triangle.h, the C++ twin of the G-buffer's GLSL), the centroid for a ray in the
+// triangle's plane (as the GLSL does).
+inline SurfaceHit alongRay(const WorldMesh& mesh, SurfaceHit hit, const Ray& ray) {
+  const std::uint32_t* i = &mesh.indices[3 * std::size_t(hit.primitive)];
+  vec2 uv;
+  if (!rayTriangleBarycentrics(ray.origin, ray.direction, mesh.positions[i[0]],
+                               mesh.positions[i[1]], mesh.positions[i[2]], uv))
+    uv = vec2(1.f / 3.f);
+  hit.u = uv.x;
+  hit.v = uv.y;
+  return hit;
+}
+
+// The texel's point on the rasterized triangle (no analytic lift): its own (u, v), or where the
+// G-buffer left them NaN (a visibility buffer), those of the pixel-centre ray (alongRay).
+inline std::optional<SurfaceHit> triangleTexel(const CpuImage& hits, const WorldGeometry& world,
+                                               const PinholeFrame& pinhole, int x, int y) {
+  auto hit = hitsTexel(hits, x, y);
+  if (hit && std::isnan(hit->u))
+    hit = alongRay(world.meshes.at(std::size_t(hit->instance)), *hit,
+                   pinhole.ray(x + 0.5f, y + 0.5f));
+  return hit;
+}
+
+// The texel as the exact producers see it: the triangle point (triangleTexel: in a visibility
+// buffer, (u, v) of the pixel-centre ray, primaryRay bit for bit, through the named triangle,
+// computed here in C++), and a hit on the tessellation of an analytic instance (quadric or SDF)
+// moved onto the exact surface along that ray (liftToAnalytic), so rt_shadows, rt_reflection,
+// rt_transmission and the CPU shade pass shade the point the Whitted reference finds; raster
+// producers keep reading the GL texel. Those passes read it from the frame's exact-hit buffer
+// (exact_hits.h), built once from this. `pinhole`: the camera frame at the hits image's size,
+// built once per image by per-pixel loops (primaryRay would rebuild it for every texel; the ray
+// is the same bit for bit).
 inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeometry& world,
                                             const PinholeFrame& pinhole, int x, int y) {
   auto hit = hitsTexel(hits, x, y);
-  if (hit && world.meshes.at(std::size_t(hit->instance)).analytic)
-    hit = liftToAnalytic(world, *hit, pinhole.ray(x + 0.5f, y + 0.5f));
+  if (!hit) return hit;
+  const WorldMesh& mesh = world.meshes.at(std::size_t(hit->instance));
+  const bool computed = !std::isnan(hit->u);
+  if (computed && !mesh.analytic) return hit;
+  const Ray ray = pinhole.ray(x + 0.5f, y + 0.5f);
+  if (!computed) hit = alongRay(mesh, *hit, ray);
+  if (mesh.analytic) hit = liftToAnalytic(world, *hit, ray);
   return hit;
 }
 inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeometry& world,

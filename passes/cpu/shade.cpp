@@ -53,7 +53,6 @@ void ShadePass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
-  const CpuImage& hits = c.cpuRead(hits_);
   const CpuImage* visibility =
       lightVisibility_ == kNoResource ? nullptr : &c.cpuRead(lightVisibility_);
   const CpuImage* reflection = reflection_ == kNoResource ? nullptr : &c.cpuRead(reflection_);
@@ -67,7 +66,7 @@ void ShadePass::execute(PassContext& c) {
 
   // The camera frame once per image (PinholeFrame::ray == primaryRay bit for bit).
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
-  const ExactHitBuffer& exact = exactHits(world, hits, frame.camera);
+  const ExactHitBuffer& exact = exactHits(c, hits_);
   const int outChannels = out.channels();
   tbb::parallel_for(0, frame.height, [&](int y) {
     // Row addresses once per row (issue 14: per-texel accessors were a tenth of this loop).

@@ -26,6 +26,26 @@ void GBufferPass::setup(PassBuilder& b) {
   depth_ = b.write("depth", {Format::D32F, w, h}, vec4(0.f));
 }
 
+std::string GBufferPass::adapt(const ReaderQuery& readers) {
+  // A CPU reader computes (u, v) itself where the texel has none (exactTexel). Outputs do not
+  // count beside a CPU reader (compare requests the hits beside its timed frames: inspecting must
+  // not change the cost); a G-buffer nobody reads is one being inspected, and keeps them.
+  const bool gl = readers.readIn(hits_, Domain::Gl);
+  const bool cpu = readers.readIn(hits_, Domain::Cpu);
+  const bool normal = readers.consumed(normal_);
+  const bool surface = surface_ != kNoResource && readers.consumed(surface_);
+  barycentrics_ = gl || !cpu || normal || surface;
+  if (!barycentrics_)
+    return "visibility buffer: only CPU passes read the hits, so the fragments leave their "
+           "(u, v) NaN and the CPU passes intersect the pixel ray with the named triangle "
+           "(passes/common/hits_texel.h)";
+  return std::string("exact hits: (u, v) computed per fragment, because ") +
+         (gl       ? "a GL pass reads the hits"
+          : !cpu   ? "no CPU pass reads the hits"
+          : normal ? "the normal is read"
+                   : "the surface is read");
+}
+
 void GBufferPass::execute(PassContext& c) {
   const gl::GlSceneBuffers& scene = c.world().glScene();
   // The shading buffers carry the alpha masks, so the G-buffer sees through the holes that
@@ -33,7 +53,8 @@ void GBufferPass::execute(PassContext& c) {
   const gl::GlShadingBuffers& shading = c.world().glShading();
   // Only what a live pass reads is written: the hybrid frame (CPU passes, which rebuild the
   // exact surface from the hits) pays for neither the normal nor the surface.
-  gl::GBufferTargets targets{.hits = &c.glTexture(hits_), .depth = &c.glTexture(depth_)};
+  gl::GBufferTargets targets{
+      .hits = &c.glTexture(hits_), .depth = &c.glTexture(depth_), .barycentrics = barycentrics_};
   if (consumed(c, normal_)) targets.normal = &c.glTexture(normal_);
   if (surface_ != kNoResource && consumed(c, surface_)) targets.surface = &c.glTexture(surface_);
   c.world().glCached<gl::GBufferRasterizer>().render(scene, c.frame().camera, targets, &shading);

@@ -2,8 +2,10 @@
 
 #include <tbb/parallel_for.h>
 
-#include <optional>
+#include <bit>
+#include <vector>
 
+#include "engine/core/check.h"
 #include "engine/graph/render_world.h"
 #include "engine/rt/ray_cone.h"
 #include "engine/rt/whitted.h"
@@ -35,7 +37,6 @@ void RtSecondaryPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
-  const CpuImage& hits = c.cpuRead(io_.hits);
   CpuImage& out = c.cpuWrite(io_.signal);
   CpuImage* steps = sdfSteps_ != kNoResource ? &c.cpuWrite(sdfSteps_) : nullptr;
   const WhittedTracer tracer(scene, world.geometry(), world.rtScene(),
@@ -44,27 +45,32 @@ void RtSecondaryPass::execute(PassContext& c) {
   const bool reflection = kind_ == Kind::Reflection;
 
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
-  const ExactHitBuffer& exact = exactHits(world, hits, frame.camera);
+  const ExactHitBuffer& exact = exactHits(c, io_.hits);
+  // The material decides first, per instance once: only its pixels pay for rebuilding the
+  // surface point (a per-pixel lookup through instance, mesh and material cost more than the
+  // test).
+  std::vector<char> candidate(scene.instances.size());
+  for (std::size_t i = 0; i < candidate.size(); ++i) {
+    const Material& m = scene.material(scene.meshes[scene.instances[i].mesh].material);
+    candidate[i] =
+        reflection ? shading::materialHasReflection(m) : shading::materialHasTransmission(m);
+  }
+  DIPTYCH_CHECK(
+      out.channels() == 4 && out.desc.width == frame.width && out.desc.height == frame.height,
+      "rt_secondary: the signal is not RGBA32F of the frame's size");
   tbb::parallel_for(0, frame.height, [&](int y) {
+    // The row's address once (per-texel setF recomputes the stride and the index).
+    std::uint32_t* row = out.row(y);
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
       beginSdfPixel();
-      // The material decides first: only its pixels pay for rebuilding the surface point.
       const auto hit = exact.at(x, y);
-      const Material* m =
-          hit ? &scene.material(
-                    scene.meshes[scene.instances.at(std::size_t(hit->instance)).mesh].material)
-              : nullptr;
-      if (m && (reflection ? shading::materialHasReflection(*m)
-                           : shading::materialHasTransmission(*m))) {
+      if (hit && candidate[std::size_t(hit->instance)]) {
         const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
-        const std::optional<SurfacePoint> sp =
-            hit ? std::optional(makeSurfacePoint(scene, world.geometry(), *hit, eye.direction))
-                : std::nullopt;
+        const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
         // Per point, as Whitted decides (a texture may make this texel rough or not metal).
-        if (sp && (reflection ? shading::hasReflection(sp->resolved, false)
-                              : shading::hasTransmission(sp->resolved))) {
-          const SurfacePoint& p = *sp;
+        if (reflection ? shading::hasReflection(p.resolved, false)
+                       : shading::hasTransmission(p.resolved)) {
           const std::uint32_t seed = std::uint32_t(y * frame.width + x);
           // The G-buffer point is the lecture's depth 1; its secondary rays are depth 2. Its cone
           // (RTG eq. 20.30) has width spread * distance there.
@@ -74,8 +80,9 @@ void RtSecondaryPass::execute(PassContext& c) {
                                 : tracer.transmitted(p, -eye.direction, 1, seed, c);
         }
       }
-      for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, radiance[ch]);
-      out.setF(x, y, 3, 1.f);
+      std::uint32_t* texel = row + 4 * std::size_t(x);
+      for (int ch = 0; ch < 3; ++ch) texel[ch] = std::bit_cast<std::uint32_t>(radiance[ch]);
+      texel[3] = std::bit_cast<std::uint32_t>(1.f);
       storeSdfPixel(steps, x, y);
     }
   });

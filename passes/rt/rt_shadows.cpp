@@ -44,7 +44,7 @@ void RtShadowsPass::execute(PassContext& c) {
   const std::size_t n = std::size_t(rowCount_[h]);
   pixelOf_.resize(n);  // pixel index: also the area-light sample seed
   receivers_.resize(n);
-  const ExactHitBuffer& exact = exactHits(world, hits, c.frame().camera);
+  const ExactHitBuffer& exact = exactHits(c, io_.hits);
   tbb::parallel_for(0, h, [&](int y) {
     std::size_t i = std::size_t(rowCount_[y]);
     for (int x = 0; x < w; ++x) {

@@ -94,6 +94,9 @@ void printTimingTable(const CompiledGraph& g, const GraphExecutor& ex, const Ren
               summarize(ex.frameMs()).median);
   std::printf("gl sync: %s\n", ex.glSyncReason().c_str());
   for (const GraphPass& p : g.passes)
+    if (!p.culled && !p.variant.empty())
+      std::printf("variant: %s (%s): %s\n", p.name.c_str(), p.type.c_str(), p.variant.c_str());
+  for (const GraphPass& p : g.passes)
     if (p.culled)
       std::printf("culled: %s (%s): %s\n", p.name.c_str(), p.type.c_str(), p.cullReason.c_str());
 }

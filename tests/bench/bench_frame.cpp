@@ -112,6 +112,7 @@ void BM_ShadowsBreakdown(benchmark::State& state, const std::string& sceneName) 
 
   std::vector<double> setupMs, traceMs, writeMs;
   std::size_t rays = 0;
+  const PinholeFrame pinhole(h.graph.frame.camera, w, hgt);
   for (auto _ : state) {
     Stopwatch clock;
     std::vector<int> pixelOf;
@@ -120,7 +121,8 @@ void BM_ShadowsBreakdown(benchmark::State& state, const std::string& sceneName) 
     receivers.reserve(std::size_t(w) * hgt);
     for (int y = 0; y < hgt; ++y) {
       for (int x = 0; x < w; ++x) {
-        const auto hit = hitsTexel(gbuffer, x, y);
+        // The hybrid's G-buffer is a visibility buffer: (u, v) from the pixel ray.
+        const auto hit = triangleTexel(gbuffer, world.geometry(), pinhole, x, y);
         if (!hit) continue;
         const WorldMesh& mesh = world.geometry().meshes.at(hit->instance);
         const std::uint32_t* tri = &mesh.indices.at(3 * std::size_t(hit->primitive));

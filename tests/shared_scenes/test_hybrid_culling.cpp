@@ -36,10 +36,19 @@ Coverage inspect(const testing::HybridFrame& f) {
   const CpuImage& vis = f.output("gbuffer.hits");
   const CpuImage& color = f.output("shade.color");
   const WorldGeometry& g = f.world->geometry();
+  // The hybrid's G-buffer is a visibility buffer: (u, v) are those the CPU passes compute.
+  const PinholeFrame pinhole(f.graph.frame.camera, kW, kH);
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {
       for (int ch = 0; ch < 4; ++ch) c.nonFinite += !std::isfinite(color.f(x, y, ch));
-      const auto hit = hitsTexel(vis, x, y);
+      const auto id = hitsTexel(vis, x, y);
+      if (id && (id->instance < 0 || std::size_t(id->instance) >= g.meshes.size() ||
+                 id->primitive >= g.meshes[std::size_t(id->instance)].indices.size() / 3)) {
+        ++c.covered;
+        ++c.invalidIds;
+        continue;
+      }
+      const auto hit = triangleTexel(vis, g, pinhole, x, y);
       if (!hit) continue;
       ++c.covered;
       if (hit->instance < 0 || std::size_t(hit->instance) >= g.meshes.size() ||

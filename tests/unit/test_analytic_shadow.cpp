@@ -67,9 +67,12 @@ TEST(AnalyticShadow, SphereOverPlaneShadowDiscHasTheExactRadius) {
   // World position of every plane pixel (NaN elsewhere).
   const float nan = std::numeric_limits<float>::quiet_NaN();
   std::vector<vec3> position(std::size_t(w) * h, vec3(nan));
+  // The hybrid's G-buffer is a visibility buffer: the point the shadow pass used is exactTexel's.
+  const PinholeFrame pinhole(frame->graph.frame.camera, w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      if (const auto hit = hitsTexel(gbuffer, x, y); hit && hit->instance == plane)
+      if (const auto hit = exactTexel(gbuffer, frame->world->geometry(), pinhole, x, y);
+          hit && hit->instance == plane)
         position[std::size_t(y) * w + x] =
             interpolatePosition(mesh, hit->primitive, hit->u, hit->v);
   auto at = [&](int x, int y) { return position[std::size_t(y) * w + x]; };

@@ -90,11 +90,14 @@ void measureGeometry(StateReference& s, const FrameSettings& frame, int light,
   const std::vector<float> exact =
       l ? layer(signal, std::min(light, signal.desc.layers - 1)) : std::vector<float>(n, 1.f);
   const WorldGeometry& world = s.world->geometry();
+  // The hybrid's G-buffer is a visibility buffer: (u, v) come from the pixel ray (hits_texel.h).
+  const PinholeFrame pinhole(frame.camera, w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const std::size_t i = std::size_t(y) * w + x;
       if (!s.mask[i]) continue;
-      const SurfacePoint p = makeSurfacePoint(*s.scene, world, *hitsTexel(gb, x, y), vec3(0.f));
+      const SurfacePoint p =
+          makeSurfacePoint(*s.scene, world, *triangleTexel(gb, world, pinhole, x, y), vec3(0.f));
       const vec3 view = p.position - frame.camera.position;
       const double cosView = std::abs(glm::dot(glm::normalize(view), p.faceNormal));
       s.footprint[i] = float(glm::length(view) * pixelAngle / std::sqrt(std::max(cosView, 1e-3)));
