@@ -154,7 +154,10 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   const vec3 right = glm::normalize(glm::cross(forward, camera.up));
   const vec3 up = glm::cross(right, forward);
   const bool alphaTested = shading && shading->anyAlphaTested();
-  const Program& opaqueProgram = program(false, withNormal, targets.barycentrics, shading);
+  // The surface target is built from the hits texels' (u, v) (resolveSurface), so, like the
+  // normal, it needs them computed: a visibility buffer is only drawn without both.
+  const bool barycentrics = targets.barycentrics || withSurface;
+  const Program& opaqueProgram = program(false, withNormal, barycentrics, shading);
   const Program* alphaProgram = alphaTested ? &program(true, withNormal, true, shading) : nullptr;
   for (const Program* program : {&opaqueProgram, alphaProgram}) {
     if (!program) continue;

@@ -54,7 +54,8 @@ struct GBufferTargets {
   // NaN) (quiet NaN bits 0x7fc00000: "not computed"):
   // their fragments fetch no triangle and intersect no ray, and whoever reads them computes
   // (u, v) itself (the CPU passes do: passes/common/hits_texel.h). Alpha-tested meshes still
-  // write them (their test needs them), and so does every mesh when the normal is written.
+  // write them (their test needs them), and so does every mesh when the normal or the surface
+  // is written (both are built from them): false is then ignored.
   bool barycentrics = true;
 };
 

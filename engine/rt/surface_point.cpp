@@ -181,6 +181,8 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, co
   if (std::size_t(hit.primitive) >= mesh.indices.size() / 3)
     throw Error("makeSurfacePoint: primitive " + std::to_string(hit.primitive) +
                 " out of range in instance " + std::to_string(hit.instance));
+  if (!std::isfinite(hit.u) || !std::isfinite(hit.v))  // a visibility texel not resolved
+    throw Error("makeSurfacePoint: (u, v) not finite in instance " + std::to_string(hit.instance));
 
   const vec3 position = interpolatePosition(mesh, hit.primitive, hit.u, hit.v);
   const std::uint32_t* tri = &mesh.indices[3 * std::size_t(hit.primitive)];

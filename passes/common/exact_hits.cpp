@@ -24,6 +24,11 @@ bool ExactHitBuffer::builtFrom(const CpuImage& hits, const Camera& camera) const
 }
 
 void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camera& camera) {
+  // Forget the keys first: a build that throws (a forged texel, hits_texel.h) leaves hits_
+  // half written, which no later call may take for a finished build.
+  camera_.reset();
+  frame_ = ~std::uint64_t(0);
+  resource_ = kNoResource;
   width_ = hits.desc.width;
   height_ = hits.desc.height;
   // Every element is written below: resize keeps last frame's storage (no fill, no page faults).

@@ -7,6 +7,9 @@
 #include <cmath>
 #include <optional>
 
+#include <string>
+
+#include "engine/core/error.h"
 #include "engine/graph/cpu_image.h"
 #include "engine/rt/ray_triangle.h"
 #include "engine/rt/surface_point.h"
@@ -24,6 +27,9 @@ inline std::optional<SurfaceHit> hitsTexel(const CpuImage& hits, int x, int y) {
 // (engine/rt/ray_triangle.h, the C++ twin of the G-buffer's GLSL), the centroid for a ray in the
 // triangle's plane (as the GLSL does).
 inline SurfaceHit alongRay(const WorldMesh& mesh, SurfaceHit hit, const Ray& ray) {
+  if (hit.primitive >= mesh.indices.size() / 3)
+    throw Error("G-buffer hits texel: primitive " + std::to_string(hit.primitive) +
+                " out of range in instance " + std::to_string(hit.instance));
   const std::uint32_t* i = &mesh.indices[3 * std::size_t(hit.primitive)];
   vec2 uv;
   if (!rayTriangleBarycentrics(ray.origin, ray.direction, mesh.positions[i[0]],
@@ -34,14 +40,21 @@ inline SurfaceHit alongRay(const WorldMesh& mesh, SurfaceHit hit, const Ray& ray
   return hit;
 }
 
+// The texel's mesh; a texel naming no instance of `world` (a G-buffer of another scene, a
+// corrupt texture) is an Error, as in shadowReceiver, not an out-of-range read.
+inline const WorldMesh& texelMesh(const WorldGeometry& world, const SurfaceHit& hit) {
+  if (hit.instance < 0 || std::size_t(hit.instance) >= world.meshes.size())
+    throw Error("G-buffer hits texel: instance " + std::to_string(hit.instance) + " out of range");
+  return world.meshes[std::size_t(hit.instance)];
+}
+
 // The texel's point on the rasterized triangle (no analytic lift): its own (u, v), or where the
 // G-buffer left them NaN (a visibility buffer), those of the pixel-centre ray (alongRay).
 inline std::optional<SurfaceHit> triangleTexel(const CpuImage& hits, const WorldGeometry& world,
                                                const PinholeFrame& pinhole, int x, int y) {
   auto hit = hitsTexel(hits, x, y);
   if (hit && std::isnan(hit->u))
-    hit = alongRay(world.meshes.at(std::size_t(hit->instance)), *hit,
-                   pinhole.ray(x + 0.5f, y + 0.5f));
+    hit = alongRay(texelMesh(world, *hit), *hit, pinhole.ray(x + 0.5f, y + 0.5f));
   return hit;
 }
 
@@ -58,7 +71,7 @@ inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeo
                                             const PinholeFrame& pinhole, int x, int y) {
   auto hit = hitsTexel(hits, x, y);
   if (!hit) return hit;
-  const WorldMesh& mesh = world.meshes.at(std::size_t(hit->instance));
+  const WorldMesh& mesh = texelMesh(world, *hit);
   const bool computed = !std::isnan(hit->u);
   if (computed && !mesh.analytic) return hit;
   const Ray ray = pinhole.ray(x + 0.5f, y + 0.5f);

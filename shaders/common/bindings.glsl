@@ -23,7 +23,7 @@ const int BINDING_SHADOW_LIGHTS = 8;
 const int BINDING_SCENE_TEXTURES = 12;
 const int BINDING_SCENE_TANGENTS = 13;
 
-// Texture unit of scene_shading.glsl's uSceneAlphaMasks; units 0 and 1 are each pass's own.
+// Texture unit of scene_shading.glsl's uSceneAlphaMasks; units 0 to 2 are each pass's own.
 const int UNIT_SCENE_ALPHA_MASKS = 7;
 // Texture unit of the blend producers' first-surface target (blend_transmission_first.frag's
 // output), read as uFirst by forward.frag and blend_transmission.frag.

@@ -158,8 +158,10 @@ print("\n| pass | scene | Diptych Mrays/s | peer | peer Mrays/s | ratio | Diptyc
 print("|---|---|---:|---|---:|---:|---:|---:|---:|")
 for pass_name, scene, run_name, node_name, kind in rows:
     d = [mrays(run_name, node_name, r) for r in R]
-    names = (["triangle_geometry", "user_geometry", "pathtracer depth 1"] if kind == "coherent"
+    names = (["triangle_geometry", "pathtracer depth 1"] if kind == "coherent"
              else ["pathtracer depth 5"])
+    if kind == "coherent" and scene == "whitted":  # analytic spheres: user_geometry's kind
+        names.insert(1, "user_geometry")
     for peer in names:
         p = [tutorial(peers[peer], r) for r in R]
         ratio = [d[i] / p[i] for i in range(runs)]

@@ -11,6 +11,9 @@
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/rt/surface_point.h"
 #include "engine/scene/analytic_hit.h"
@@ -204,4 +207,51 @@ TEST(AnalyticHit, SurfacePointHasUvExactlyWhenTheMaterialReadsIt) {
   EXPECT_EQ(p.resolved.color, checkerColor(*scene.materials[std::size_t(checker)].checker, p.uv));
   EXPECT_EQ(p.position, plain.position);
   EXPECT_EQ(p.faceNormal, plain.faceNormal);
+}
+
+// materialReadsUv is a hand-kept list of the Material fields that resolveMaterial, normalMapped
+// and the bump map read at uv: each such field set alone makes it true, a plain material none.
+// Where cheap (colour and emission textures), resolveMaterial differs at two uvs.
+TEST(AnalyticHit, MaterialReadsUvForEachUvReadingFieldAlone) {
+  EXPECT_FALSE(materialReadsUv(Material{}));
+  Material plain;
+  plain.color = vec3(0.3f);
+  plain.emission = vec3(1.f);
+  plain.ks = 0.5f;
+  plain.kt = 0.2f;
+  plain.alphaMode = AlphaMode::Mask;
+  EXPECT_FALSE(materialReadsUv(plain)) << "constants read no uv";
+  std::vector<std::pair<const char*, Material>> readers;
+  auto with = [&](const char* name, auto set) {
+    Material m;
+    set(m);
+    readers.emplace_back(name, m);
+  };
+  with("checker", [](Material& m) { m.checker = Checker{}; });
+  with("colorTexture", [](Material& m) { m.colorTexture = 0; });
+  with("emissionTexture", [](Material& m) { m.emissionTexture = 0; });
+  with("metallicRoughnessTexture", [](Material& m) { m.metallicRoughnessTexture = 0; });
+  with("occlusionTexture", [](Material& m) { m.occlusionTexture = 0; });
+  with("normalTexture", [](Material& m) { m.normalTexture = 0; });
+  with("bump", [](Material& m) { m.bump = BumpMap{}; });
+  for (const auto& [name, m] : readers) EXPECT_TRUE(materialReadsUv(m)) << name;
+
+  // A 2 x 1 texture, black on the left, white on the right, nearest filtering.
+  Scene scene;
+  Texture t;
+  t.image = Image(2, 1, 4, 1.f);
+  for (int c = 0; c < 3; ++c) t.image.at(0, 0, c) = 0.f;
+  t.minFilter = t.magFilter = FilterMode::Nearest;
+  scene.textures.push_back(t);
+  const vec2 left(0.25f, 0.5f), right(0.75f, 0.5f);
+  for (const auto& [name, m] : readers) {
+    if (std::string(name) == "colorTexture") {
+      EXPECT_NE(resolveMaterial(scene, m, left).color, resolveMaterial(scene, m, right).color);
+    } else if (std::string(name) == "emissionTexture") {
+      Material e = m;
+      e.emission = vec3(1.f);
+      EXPECT_NE(resolveMaterial(scene, e, left).emission,
+                resolveMaterial(scene, e, right).emission);
+    }
+  }
 }

@@ -4,6 +4,11 @@
 // texel itself.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <limits>
+#include <string>
+
+#include "engine/core/error.h"
 #include "passes/common/exact_hits.h"
 #include "passes/common/hits_texel.h"
 #include "tests/support/hybrid_frame.h"
@@ -88,4 +93,58 @@ TEST(ExactHits, RebuiltWhenTheHitsOrTheCameraChange) {
   EXPECT_TRUE(sameHit(there, expected));
   EXPECT_FALSE(sameHit(there, exactTexel(hits, f->world->geometry(), camera, ax, ay)));
   EXPECT_EQ(f->world->cpuCached<ExactHitBuffer>().builds(), before + 2);
+}
+
+// The pass-keyed path (frame serial + resource version, no look at the texels): a camera moved
+// between runFrame calls gives a new G-buffer and a new buffer, built once for that frame's
+// consumers and equal to lifting the new texels along the new camera's pixel rays.
+TEST(ExactHits, PassKeyedBufferFollowsTheCameraBetweenFrames) {
+  auto f = whittedFrame();
+  const ExactHitBuffer& exact = f->world->cpuCached<ExactHitBuffer>();
+  const Camera before = f->graph.frame.camera;
+  const int builds = exact.builds();
+  // The executor reads the compiled graph's frame settings by reference, as the viewer does.
+  f->graph.frame.camera.position += vec3(0.f, 0.3f, 0.f);
+  const Camera moved = f->graph.frame.camera;
+  f->executor->runFrame();
+  EXPECT_EQ(exact.builds(), builds + 1) << "once per frame for all its consumers";
+  const CpuImage& hits = f->output("gbuffer.hits");
+  int differ = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      ASSERT_TRUE(sameHit(exact.at(x, y), exactTexel(hits, f->world->geometry(), moved, x, y)))
+          << "pixel " << x << "," << y;
+      differ += !sameHit(exact.at(x, y), exactTexel(hits, f->world->geometry(), before, x, y));
+    }
+  EXPECT_GT(differ, 0) << "the old camera's rays would lift the texels elsewhere";
+}
+
+// A hits texel naming an instance or a primitive the world does not have (a G-buffer of another
+// scene, a corrupt texture) is the project's Error naming it, never an out-of-range read.
+TEST(ExactHits, AForgedTexelIsAnErrorNamingIt) {
+  auto f = whittedFrame();
+  const Camera camera = cameraOf(f->scene);
+  const WorldGeometry& geometry = f->world->geometry();
+  const PinholeFrame pinhole(camera, kW, kH);
+  auto message = [&](const CpuImage& hits) -> std::string {
+    try {
+      exactHits(*f->world, hits, camera);
+    } catch (const Error& e) {
+      EXPECT_THROW(triangleTexel(hits, geometry, pinhole, 3, 2), Error);
+      return e.what();
+    }
+    return "no Error";
+  };
+  CpuImage hits = f->output("gbuffer.hits");
+  const std::uint32_t nan = std::bit_cast<std::uint32_t>(std::numeric_limits<float>::quiet_NaN());
+  hits.setU(3, 2, 0, std::uint32_t(geometry.meshes.size()) + 1);  // instance = meshes.size()
+  hits.setU(3, 2, 2, nan);
+  EXPECT_NE(
+      message(hits).find("instance " + std::to_string(geometry.meshes.size()) + " out of range"),
+      std::string::npos)
+      << message(hits);
+  hits.setU(3, 2, 0, 1u);  // instance 0
+  hits.setU(3, 2, 1, 1u << 30);
+  EXPECT_NE(message(hits).find("primitive 1073741824 out of range"), std::string::npos)
+      << message(hits);
 }

@@ -35,6 +35,7 @@
 #include <filesystem>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "passes/common/hits_texel.h"
 #include "tests/support/hybrid_frame.h"
@@ -45,6 +46,8 @@ namespace {
 
 struct Agreement {
   long pixels = 0, covered = 0, idMismatches = 0, compared = 0;
+  long notComputed = 0;  // texels whose (u, v) the G-buffer left NaN (a visibility buffer)
+  long nanPoints = 0;    // compared points that came out NaN (must be none: max() drops NaN)
   double maxRelativeError = 0.0;     // G-buffer point vs Embree's barycentric point
   double maxRelativeErrorRay = 0.0;  // G-buffer point vs o + t d
   double maxRelativeToP = 0.0;       // G-buffer vs Embree point, divided by |p_rt| only
@@ -54,8 +57,12 @@ struct Agreement {
   double agreement() const { return 1.0 - double(idMismatches) / double(pixels); }
 };
 
-Agreement compareWithEmbree(const std::filesystem::path& file, int w, int h) {
-  auto frame = testing::renderHybridFrame(file, w, h, {"gbuffer.hits"});
+// `outputs`: {"gbuffer.hits"} alone gives the exact G-buffer variant (GL writes (u, v)); with
+// "shade.color" every reader of the hits is a CPU pass, so the frame's G-buffer is the
+// visibility variant and (u, v) come from triangleTexel (alongRay, C++).
+Agreement compareWithEmbree(const std::filesystem::path& file, int w, int h,
+                            const std::vector<std::string>& outputs) {
+  auto frame = testing::renderHybridFrame(file, w, h, outputs);
   const CpuImage& vis = frame->output("gbuffer.hits");
   EXPECT_EQ(vis.desc.width, w);
   EXPECT_EQ(vis.desc.height, h);
@@ -65,13 +72,16 @@ Agreement compareWithEmbree(const std::filesystem::path& file, int w, int h) {
   RtDevice device;
   const RtScene rt(device, geometry, frame->scene, {.analytic = false});
   const Camera& camera = frame->graph.frame.camera;
+  const PinholeFrame pinhole(camera, w, h);
 
   Agreement a;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       ++a.pixels;
       const Ray ray = primaryRay(camera, w, h, x + 0.5f, y + 0.5f);
-      const auto gl = hitsTexel(vis, x, y);
+      const auto raw = hitsTexel(vis, x, y);
+      if (raw && std::isnan(raw->u)) ++a.notComputed;
+      const auto gl = triangleTexel(vis, geometry, pinhole, x, y);
       const auto hit = rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
       if (gl) ++a.covered;
       if (bool(gl) != bool(hit) ||
@@ -85,6 +95,10 @@ Agreement compareWithEmbree(const std::filesystem::path& file, int w, int h) {
       const vec3 pGl = interpolatePosition(mesh, gl->primitive, gl->u, gl->v);
       const vec3 pRt = interpolatePosition(mesh, hit->primitive, hit->u, hit->v);
       const vec3 pRay = ray.origin + hit->t * ray.direction;
+      if (!std::isfinite(pGl.x + pGl.y + pGl.z)) {
+        ++a.nanPoints;
+        continue;
+      }
       const std::uint32_t* tri = &mesh.indices.at(3 * std::size_t(gl->primitive));
       const double m = std::max({glm::length(glm::dvec3(mesh.positions[tri[0]])),
                                  glm::length(glm::dvec3(mesh.positions[tri[1]])),
@@ -113,9 +127,22 @@ Agreement compareWithEmbree(const std::filesystem::path& file, int w, int h) {
   return a;
 }
 
-void checkScene(const std::string& name, int w, int h) {
+void checkScene(const std::string& name, int w, int h, bool visibility = false) {
   const auto file = std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / name;
-  const Agreement a = compareWithEmbree(file, w, h);
+  const Agreement a =
+      compareWithEmbree(file, w, h,
+                        visibility ? std::vector<std::string>{"shade.color", "gbuffer.hits"}
+                                   : std::vector<std::string>{"gbuffer.hits"});
+  // Which variant ran: the exact one writes every (u, v); the visibility one none (these scenes
+  // have no alpha-tested mesh).
+  if (visibility)
+    EXPECT_EQ(a.notComputed, a.covered) << name;
+  else
+    EXPECT_EQ(a.notComputed, 0) << name;
+  // std::max and `err > max` drop NaN: a NaN point would pass every bound below unseen.
+  EXPECT_EQ(a.nanPoints, 0) << name;
+  EXPECT_GE(a.compared, a.covered - a.idMismatches) << name;
+  EXPECT_GE(double(a.compared), 0.999 * double(a.covered)) << name;
   std::printf(
       "[hybrid consistency] %s %dx%d: covered %ld/%ld, id agreement %.6f (%ld mismatches), "
       "max |p_gl - p_rt| / max(|p_rt|, m) = %.3g (vs o + t d: %.3g) at %s; "
@@ -140,6 +167,16 @@ TEST(HybridConsistency, WhittedGBufferMatchesEmbreePrimaryRays) {
 
 TEST(HybridConsistency, CornellGBufferMatchesEmbreePrimaryRays) {
   checkScene("cornell.json", 640, 480);
+}
+
+// The hybrid's own G-buffer (shade reads the hits on the CPU: the visibility variant), with
+// (u, v) computed in C++ along the same pixel ray: the same bounds hold.
+TEST(HybridConsistency, WhittedVisibilityGBufferMatchesEmbreePrimaryRays) {
+  checkScene("whitted.json", 640, 480, true);
+}
+
+TEST(HybridConsistency, CornellVisibilityGBufferMatchesEmbreePrimaryRays) {
+  checkScene("cornell.json", 640, 480, true);
 }
 
 }  // namespace
