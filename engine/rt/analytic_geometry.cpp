@@ -52,15 +52,23 @@ PacketRay readRay(RTCRayN* rays, unsigned n, unsigned i) {
 // coverage is read at the record's texture uv (analyticHitUv: a sphere's spherical parameters
 // from its octahedral normal); SDF surfaces have no uv (materials see (0, 0): surface_point.h).
 constexpr int kMaxMaskedRoots = 16;
+// The step both loops share: true where the mask keeps the root at t (record: its hit record);
+// else tmin moves just past it. The loops stay two, one per hit type: quadrics keep their hit
+// in registers (PartHit), SDF hits carry their object-space point (ShapeHit); one template
+// over both would need accessors for t, record and "no hit" longer than the loops themselves.
+bool keepsRoot(const RtScene::GeometryData& data, int part, double t, vec2 record, float& tmin) {
+  if (!data.alphaMasked ||
+      data.coverageAt(analyticHitUv(*data.analytic, part, record)) >= data.alphaCutoff)
+    return true;
+  tmin = std::nextafter(float(t), std::numeric_limits<float>::infinity());
+  return false;
+}
 // Quadrics, in registers (PartHit, analytic_hit.h); t NaN: none.
 PartHit coveredQuadricHit(const RtScene::GeometryData& data, int part, const PacketRay& r) {
   float tmin = r.tnear;
   for (int i = 0; i < kMaxMaskedRoots; ++i) {
     const PartHit hit = analyticPartHit(*data.analytic, part, r.origin, r.direction, tmin, r.tfar);
-    if (std::isnan(hit.t) || !data.alphaMasked ||
-        data.coverageAt(analyticHitUv(*data.analytic, part, hit.record)) >= data.alphaCutoff)
-      return hit;
-    tmin = std::nextafter(float(hit.t), std::numeric_limits<float>::infinity());
+    if (std::isnan(hit.t) || keepsRoot(data, part, hit.t, hit.record, tmin)) return hit;
   }
   return {std::numeric_limits<double>::quiet_NaN(), vec2(0.f)};
 }
@@ -71,10 +79,7 @@ std::optional<ShapeHit> coveredHit(const RtScene::GeometryData& data, int part,
   for (int i = 0; i < kMaxMaskedRoots; ++i) {
     auto hit = intersectAnalyticPart(*data.analytic, part, r.origin, r.direction, tmin, r.tfar,
                                      data.sdfStats.get());
-    if (!hit || !data.alphaMasked ||
-        data.coverageAt(analyticHitUv(*data.analytic, part, hit->record)) >= data.alphaCutoff)
-      return hit;
-    tmin = std::nextafter(float(hit->t), std::numeric_limits<float>::infinity());
+    if (!hit || keepsRoot(data, part, hit->t, hit->record, tmin)) return hit;
   }
   return std::nullopt;
 }

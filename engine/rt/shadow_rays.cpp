@@ -87,7 +87,7 @@ ShadowReceiver shadowReceiver(const WorldGeometry& world, const SurfaceHit& hit)
     const AnalyticInstance& a = *mesh.analytic;
     if (a.sdf) {  // SurfaceHit's SDF encoding: (u, v, bits of z) is the object-space point
       const dvec3 p(hit.u, hit.v, std::bit_cast<float>(hit.primitive));
-      return {sdfPosition(a, p), sdfNormal(a, p), a.magnitude};
+      return {toWorldPoint(a, p), sdfNormal(a, p), a.magnitude};
     }
     if (int(hit.primitive) >= partCount(a.shape))
       throw Error("shadowReceiver: instance " + std::to_string(hit.instance) +

@@ -117,7 +117,7 @@ SurfacePoint makeSdfPoint(const Scene& scene, const WorldMesh& mesh, const Surfa
   const dvec3 p(hit.u, hit.v, std::bit_cast<float>(hit.primitive));
   const vec3 faceNormal = sdfNormal(a, p);
   const bool front = glm::dot(faceNormal, incoming) <= 0.f;
-  return assemble(scene, hit, sdfPosition(a, p), a.magnitude, faceNormal, faceNormal, front,
+  return assemble(scene, hit, toWorldPoint(a, p), a.magnitude, faceNormal, faceNormal, front,
                   vec2(0.f), mesh.material, scene.material(mesh.material));
 }
 

@@ -117,8 +117,8 @@ void analyticHitPointAndNormal(const AnalyticInstance& a, int part, vec2 record,
                                vec3& normal) {
   dvec3 p, n;
   shapeHitPointAndNormal(a.shape, part, record, p, n);
-  position = vec3(dvec3(a.toWorld * glm::dvec4(p, 1.0)));
-  normal = vec3(glm::normalize(glm::transpose(glm::dmat3(a.toObject)) * n));
+  position = toWorldPoint(a, p);
+  normal = toWorldNormal(a, n);
 }
 
 vec3 analyticHitNormal(const AnalyticInstance& a, int part, vec2 record) {
@@ -133,13 +133,11 @@ vec2 analyticHitUv(const AnalyticInstance& a, int part, vec2 record) {
 
 PartHit analyticPartHit(const AnalyticInstance& a, int part, const vec3& o, const vec3& d,
                         float tmin, float tmax) {
-  // An affine map keeps t: object-space o' + t d' is the image of o + t d.
-  const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
-  const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
-  const double t = partDistance(a.shape, part, oo, od, double(tmin), double(tmax));
+  const ObjectRay r = toObjectRay(a, o, d);
+  const double t = partDistance(a.shape, part, r.origin, r.direction, double(tmin), double(tmax));
   if (std::isnan(t) || !(float(t) >= tmin && float(t) <= tmax))
     return {std::numeric_limits<double>::quiet_NaN(), vec2(0.f)};
-  return {t, shapeHitRecord(a.shape, part, oo + t * od)};
+  return {t, shapeHitRecord(a.shape, part, r.origin + t * r.direction)};
 }
 
 bool materialReadsUv(const Material& m) {

@@ -131,13 +131,9 @@ void analyticPartWorldBounds(const AnalyticInstance& a, int part, dvec3& lo, dve
   }
 }
 
-vec3 sdfPosition(const AnalyticInstance& a, const dvec3& p) {
-  return vec3(dvec3(a.toWorld * glm::dvec4(p, 1.0)));
-}
-
 vec3 sdfNormal(const AnalyticInstance& a, const dvec3& p) {
   const dvec3 n = sdfNormal(a.sdf->sdf, p, a.sdf->settings.tolerance);
-  return vec3(glm::normalize(glm::transpose(glm::dmat3(a.toObject)) * n));
+  return toWorldNormal(a, n);
 }
 
 std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int part, const vec3& o,
@@ -150,11 +146,9 @@ std::optional<ShapeHit> intersectAnalyticPart(const AnalyticInstance& a, int par
     if (std::isnan(h.t)) return std::nullopt;
     return ShapeHit{h.t, std::max(part, 0), h.record};
   }
-  // An affine map keeps t: object-space o' + t d' is the image of o + t d.
-  const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
-  const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
-  if (a.sdf) return intersectSdf(*a.sdf, oo, od, tmin, tmax, stats);
-  auto hit = intersectShape(a.shape, oo, od, double(tmin), double(tmax));
+  const ObjectRay r = toObjectRay(a, o, d);
+  if (a.sdf) return intersectSdf(*a.sdf, r.origin, r.direction, tmin, tmax, stats);
+  auto hit = intersectShape(a.shape, r.origin, r.direction, double(tmin), double(tmax));
   if (hit && !(float(hit->t) >= tmin && float(hit->t) <= tmax)) return std::nullopt;
   return hit;
 }
@@ -163,9 +157,8 @@ bool analyticPartOccludes(const AnalyticInstance& a, int part, const vec3& o, co
                           float tmin, float tmax, SdfStats* stats) {
   if (a.sdf) return intersectAnalyticPart(a, part, o, d, tmin, tmax, stats).has_value();
   // The same arithmetic as intersectAnalyticPart, so both agree on every ray.
-  const dvec3 oo = dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0));
-  const dvec3 od = dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0));
-  const double t = partDistance(a.shape, part, oo, od, double(tmin), double(tmax));
+  const ObjectRay r = toObjectRay(a, o, d);
+  const double t = partDistance(a.shape, part, r.origin, r.direction, double(tmin), double(tmax));
   return !std::isnan(t) && float(t) >= tmin && float(t) <= tmax;
 }
 
@@ -173,15 +166,6 @@ std::optional<ShapeHit> intersectAnalytic(const AnalyticInstance& a, const vec3&
                                           float tmin, float tmax) {
   return intersectAnalyticPart(a, -1, o, d, tmin, tmax);
 }
-
-namespace {
-vec3 toWorldPoint(const AnalyticInstance& a, const dvec3& p) {
-  return vec3(dvec3(a.toWorld * glm::dvec4(p, 1.0)));
-}
-vec3 toWorldNormal(const AnalyticInstance& a, const dvec3& n) {
-  return vec3(glm::normalize(glm::transpose(glm::dmat3(a.toObject)) * n));
-}
-}  // namespace
 
 vec3 analyticPosition(const AnalyticInstance& a, int part, vec2 uv) {
   return toWorldPoint(a, shapePoint(a.shape, part, uv));

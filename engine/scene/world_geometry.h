@@ -22,6 +22,24 @@ struct AnalyticInstance {
   vec3 magnitude{0.f};  // per-axis max |coordinate| of bounds: the rounding scale of its points
 };
 
+// The instance transform's three maps, in one place (inline: they run per ray and per hit).
+// A world ray in object space; an affine map keeps t: o' + t d' is the image of o + t d.
+struct ObjectRay {
+  dvec3 origin, direction;
+};
+inline ObjectRay toObjectRay(const AnalyticInstance& a, const vec3& o, const vec3& d) {
+  return {dvec3(a.toObject * glm::dvec4(dvec3(o), 1.0)),
+          dvec3(a.toObject * glm::dvec4(dvec3(d), 0.0))};
+}
+// An object-space point in world space, rounded to float once.
+inline vec3 toWorldPoint(const AnalyticInstance& a, const dvec3& p) {
+  return vec3(dvec3(a.toWorld * glm::dvec4(p, 1.0)));
+}
+// An object-space normal in world space: the inverse transpose of the linear part, unit length.
+inline vec3 toWorldNormal(const AnalyticInstance& a, const dvec3& n) {
+  return vec3(glm::normalize(glm::transpose(glm::dmat3(a.toObject)) * n));
+}
+
 struct WorldMesh {
   int instance = 0;
   int material = -1;
@@ -70,9 +88,8 @@ vec3 analyticNormal(const AnalyticInstance& a, int part, vec2 uv);
 // Both, bit for bit, with the shape's trigonometry evaluated once (hot in the ray tracers).
 void analyticPositionAndNormal(const AnalyticInstance& a, int part, vec2 uv, vec3& position,
                                vec3& normal);
-// SDF objects: world point and unit normal (central differences at the tolerance) of an
-// object-space hit point.
-vec3 sdfPosition(const AnalyticInstance& a, const dvec3& objectPoint);
+// SDF objects: world unit normal (central differences at the tolerance) of an object-space hit
+// point (its world point: toWorldPoint).
 vec3 sdfNormal(const AnalyticInstance& a, const dvec3& objectPoint);
 int analyticPartCount(const AnalyticInstance& a);
 // Object-space box of one part (the SDF's bounds for SDF objects).

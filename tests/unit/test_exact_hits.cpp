@@ -148,3 +148,31 @@ TEST(ExactHits, AForgedTexelIsAnErrorNamingIt) {
   EXPECT_NE(message(hits).find("primitive 1073741824 out of range"), std::string::npos)
       << message(hits);
 }
+
+// Two hits resources in one frame: a recipe with a second G-buffer pass (gbuffer2) whose hits
+// the reflection and shade passes read, the shadows and transmission passes reading gbuffer's.
+// One frame has one camera and size, so the recipe format cannot make the two resources' texels
+// differ: what a buffer keyed on the frame alone would get wrong is which resource it names, so
+// the test counts builds (one per switch of resource, at least two a frame; one if the key
+// ignored the resource) and checks the image equals the one-G-buffer recipe's, byte for byte.
+TEST(ExactHits, TwoHitsResourcesInOneFrameEachGetTheirOwnBuffer) {
+  Recipe two = defaultHybridRecipe();
+  two.passes.insert(two.passes.begin() + 1, RecipePass{.name = "gbuffer2", .type = "gbuffer"});
+  int repointed = 0;
+  for (RecipePass& p : two.passes)
+    if (p.type == "rt_reflection" || p.type == "shade") {
+      p.inputs["hits"] = "gbuffer2.hits";
+      ++repointed;
+    }
+  ASSERT_EQ(repointed, 2);
+  const auto scene = std::filesystem::path(samplesDir()) / "scenes/whitted.json";
+  auto f = renderHybridFrame(scene, kW, kH, {"shade.color"}, two);
+  ASSERT_NE(f->pass("gbuffer2"), nullptr);
+  const ExactHitBuffer& exact = f->world->cpuCached<ExactHitBuffer>();
+  const int before = exact.builds();
+  f->executor->runFrame();
+  EXPECT_GE(exact.builds() - before, 2) << "one build per frame: the key ignored the resource";
+  const auto one = whittedFrame();
+  EXPECT_TRUE(f->output("shade.color").words == one->output("shade.color").words)
+      << "a consumer read the other resource's buffer wrongly";
+}
