@@ -11,6 +11,7 @@
 #include "engine/gl/debug.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/scene/load.h"
+#include "tests/support/lit_model.h"
 #include "tests/support/test_paths.h"
 #include "tests/unit/shadow_map_compare.h"
 
@@ -26,14 +27,7 @@ TEST(AlphaMaskGltf, AlphaBlendModeTestRendersThroughBothProducers) {
   for (const Material& m : scene.materials) masked += m.alphaMode == AlphaMode::Mask;
   EXPECT_EQ(masked, 3);
   // The file has no lights: a point light above the scene's centre, in front of the tests.
-  const Aabb b = scene.bounds();
-  Light l;
-  l.type = LightType::Point;
-  l.position = 0.5f * (b.lo + b.hi) + vec3(0.f, 1.5f * (b.hi.y - b.lo.y), 0.f) +
-               vec3(0.f, 0.f, 0.5f * (b.hi.z - b.lo.z));
-  l.intensity = 50.f;
-  scene.lights.push_back(l);
-  if (!scene.hasCamera) scene.camera = frameBounds(b);
+  testing::addTestLight(scene);
 
   {
     RenderWorld world(scene, &gl::testing::osmesaContext());

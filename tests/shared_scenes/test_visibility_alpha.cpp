@@ -13,6 +13,7 @@
 #include "engine/gl/shading_buffers.h"
 #include "passes/common/hits_texel.h"
 #include "tests/support/hybrid_frame.h"
+#include "tests/support/lit_model.h"
 #include "tests/support/test_paths.h"
 
 namespace diptych {
@@ -21,16 +22,8 @@ namespace {
 Scene alphaScene() {
   Scene scene = loadScene(std::filesystem::path(DIPTYCH_SHARED_SCENES) /
                           "alpha-blend-mode-test/AlphaBlendModeTest.glb");
-  // The file has no lights: a point light above and in front of the tests, as in
-  // test_alpha_mask_gltf.cpp, so the shade image is not black.
-  const Aabb b = scene.bounds();
-  Light l;
-  l.type = LightType::Point;
-  l.position = 0.5f * (b.lo + b.hi) + vec3(0.f, 1.5f * (b.hi.y - b.lo.y), 0.f) +
-               vec3(0.f, 0.f, 0.5f * (b.hi.z - b.lo.z));
-  l.intensity = 50.f;
-  scene.lights.push_back(l);
-  if (!scene.hasCamera) scene.camera = frameBounds(b);
+  // The file has no lights: the one test_alpha_mask_gltf.cpp adds, so the image is not black.
+  testing::addTestLight(scene);
   return scene;
 }
 
