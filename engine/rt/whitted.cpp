@@ -19,25 +19,40 @@ WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, con
 vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone,
                              float* hitDistance) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
-  rays_.add(1);
   // Hit::Ng only for an observer: the shading rebuilds the normal (makeSurfacePoint).
   Hit h;
   const bool found =
-      rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, bool(observer_));
-  if (observer_) observer_({ray, depth, found ? std::optional<Hit>(h) : std::nullopt});
+      rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, wantsHitNormal());
+  return radianceAt(ray, depth, seed, found ? &h : nullptr, cone, hitDistance);
+}
+
+vec3 WhittedTracer::radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
+                               const RayCone* cone, float* hitDistance) const {
+  countRay(ray, depth, hit);
   if (hitDistance)
     *hitDistance =
-        found ? h.t * glm::length(ray.direction) : std::numeric_limits<float>::infinity();
-  if (!found) return sampleEnvironment(scene_.environment, ray.direction);
-  SurfacePoint p = makeSurfacePoint(scene_, world_, {h.instance, h.primitive, h.u, h.v, h.analytic},
-                                    ray.direction);
-  if (cone && settings_.rayCones) {
-    const RayCone at{cone->width + cone->spread * h.t * glm::length(ray.direction), cone->spread};
-    p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
-                                 coneUvLod(world_, p, ray.direction, at.width));
-    return shade(p, -ray.direction, depth, seed, &at);
-  }
-  return shade(p, -ray.direction, depth, seed);
+        hit ? hit->t * glm::length(ray.direction) : std::numeric_limits<float>::infinity();
+  if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
+  SurfacePoint p;
+  RayCone at;
+  const RayCone* c = surfaceAt(ray, *hit, cone, p, at);
+  return shade(p, -ray.direction, depth, seed, c);
+}
+
+void WhittedTracer::countRay(const Ray& ray, int depth, const Hit* hit) const {
+  rays_.add(1);
+  if (observer_) observer_({ray, depth, hit ? std::optional<Hit>(*hit) : std::nullopt});
+}
+
+const RayCone* WhittedTracer::surfaceAt(const Ray& ray, const Hit& h, const RayCone* cone,
+                                        SurfacePoint& p, RayCone& at) const {
+  p = makeSurfacePoint(scene_, world_, {h.instance, h.primitive, h.u, h.v, h.analytic},
+                       ray.direction);
+  if (!cone || !settings_.rayCones) return nullptr;
+  at = {cone->width + cone->spread * h.t * glm::length(ray.direction), cone->spread};
+  p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
+                               coneUvLod(world_, p, ray.direction, at.width));
+  return &at;
 }
 
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
@@ -63,8 +78,13 @@ vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t s
 
 vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
                           const RayCone* cone) const {
+  return shadeGiven(p, v, depth, seed, cone, direct(p, v, seed));
+}
+
+vec3 WhittedTracer::shadeGiven(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
+                               const RayCone* cone, const vec3& directSum) const {
   const shading::ShadingMaterial& m = p.resolved;
-  vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + direct(p, v, seed);
+  vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + directSum;
   // The material's model says whether the signals exist (hasReflection, hasTransmission: as for
   // the hybrid's rt_reflection and rt_transmission); secondaryTerms weights them.
   const vec3 trans = shading::hasTransmission(m) ? transmitted(p, v, depth, seed, cone) : vec3(0.f);

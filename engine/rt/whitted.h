@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "engine/rt/ray_counter.h"
@@ -48,6 +49,21 @@ class WhittedTracer {
   // hitDistance, when given, receives the distance to the hit (infinity on a miss).
   vec3 radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone = nullptr,
                 float* hitDistance = nullptr) const;
+  // The rest of RAYTRACING(o, u, depth) once the ray's closest hit is known (hit: null on a
+  // miss), for callers that trace many rays at once (RtScene::intersectTile); depth <= maxDepth.
+  // radiance() is trace + this, so both give the same result bit for bit.
+  vec3 radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
+                  const RayCone* cone = nullptr, float* hitDistance = nullptr) const;
+  // Whether hits passed to radianceAt need Hit::Ng (an observer reads it).
+  bool wantsHitNormal() const { return bool(observer_); }
+  // radianceAt for a tile of up to kMaxTile rays (hits[i] null: a miss; seeds[i] each) into
+  // out[i], bit for bit, but the direct light's shadow rays of all the tile's points are traced
+  // as one coherent Embree stream (neighbouring pixels aimed at the same lights) instead of one
+  // rtcOccluded1 per ray (engine/rt/whitted_tile.cpp). The recursion below stays per ray.
+  static constexpr std::size_t kMaxTile = 64;
+  void radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
+                    std::span<const std::uint32_t> seeds, int depth, const RayCone* cone,
+                    std::span<vec3> out) const;
   // EVALUAMILREC at a known surface point seen from direction v (unit, toward the viewer); cone:
   // the cone's width at the point and its spread.
   vec3 shade(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
@@ -69,6 +85,14 @@ class WhittedTracer {
 
  private:
   vec3 direct(const SurfacePoint& point, const vec3& v, std::uint32_t seed) const;
+  // radianceAt's steps: count the ray (and show it to the observer); the hit's surface point,
+  // with its texture LOD from the ray's cone where asked (returns the cone at the point, else
+  // null); EVALUAMILREC given the direct light's sum.
+  void countRay(const Ray& ray, int depth, const Hit* hit) const;
+  const RayCone* surfaceAt(const Ray& ray, const Hit& hit, const RayCone* cone, SurfacePoint& point,
+                           RayCone& at) const;
+  vec3 shadeGiven(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
+                  const RayCone* cone, const vec3& directSum) const;
   // radiance() along `direction` from `point`, Beer-Lambert attenuated when the ray travels
   // inside the point's volume (KHR_materials_volume, shading.glsl volumeTransmittance).
   vec3 secondary(const SurfacePoint& point, const vec3& direction, int depth, std::uint32_t seed,

@@ -2,7 +2,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -14,6 +16,10 @@
 
 namespace diptych {
 namespace {
+
+// Primary rays per Embree stream call: a row is traced in tiles of this many pixels (80 bytes
+// each on the stack), the most WhittedTracer::radianceTile shades at once.
+constexpr std::size_t kPrimaryTile = WhittedTracer::kMaxTile;
 
 // A per-pixel random permutation of 0..n-1 (Fisher-Yates driven by pcgHash). Pairing pixel
 // stratum s with lens stratum perm[s] keeps both sets stratified while decorrelating them, as
@@ -66,6 +72,49 @@ void RtDistributedPass::execute(PassContext& c) {
   const RayCone primaryCone{0.f, pixelSpreadAngle(camera, frame.height) / std::sqrt(float(spp_))};
   const RayCone* cone = rayCones_ ? &primaryCone : nullptr;
   const PinholeFrame pinhole(camera, frame.width, frame.height);
+  const bool lens = camera.aperture > 0.f;
+  // One pinhole ray through each pixel centre (rt_whitted): the rays of a row are coherent, so
+  // they are traced as Embree streams and each hit is then shaded as radiance() would
+  // (radianceAt). With SDF objects the per-pixel ray keeps its place between
+  // beginSdfPixel and storeSdfPixel, which count its sphere-tracing steps.
+  if (spp_ == 1 && !lens && !steps) {
+    const RtScene& rt = world.rtScene();
+    tbb::parallel_for(0, frame.height, [&](int y) {
+      RTCRayHit tile[kPrimaryTile];  // RTC_ALIGN(16), as rtcIntersect1M requires
+      for (int x0 = 0; x0 < frame.width; x0 += int(kPrimaryTile)) {
+        const int n = std::min(int(kPrimaryTile), frame.width - x0);
+        for (int i = 0; i < n; ++i) {
+          const Ray ray = pinhole.ray(float(x0 + i) + 0.5f, float(y) + 0.5f);
+          setEmbreeRay(tile[i].ray, ray.origin, ray.direction, 0.f,
+                       std::numeric_limits<float>::infinity());
+          tile[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+          tile[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        }
+        rt.intersectTile({tile, std::size_t(n)}, true);
+        Ray rays[kPrimaryTile];
+        Hit hits[kPrimaryTile];
+        const Hit* found[kPrimaryTile];
+        std::uint32_t seeds[kPrimaryTile];
+        vec3 colors[kPrimaryTile];
+        for (int i = 0; i < n; ++i) {
+          const RTCRay& r = tile[i].ray;
+          rays[i] = {vec3(r.org_x, r.org_y, r.org_z), vec3(r.dir_x, r.dir_y, r.dir_z)};
+          found[i] = rt.hitOf(tile[i], hits[i], tracer.wantsHitNormal()) ? &hits[i] : nullptr;
+          seeds[i] = std::uint32_t(y * frame.width + x0 + i);
+        }
+        // The tile's direct-light shadow rays go to Embree as one stream too.
+        const std::size_t m = std::size_t(n);
+        tracer.radianceTile({rays, m}, {found, m}, {seeds, m}, 1, cone, {colors, m});
+        for (int i = 0; i < n; ++i) {
+          for (int ch = 0; ch < 3; ++ch) out.setF(x0 + i, y, ch, colors[i][ch]);
+          out.setF(x0 + i, y, 3, 1.f);
+        }
+      }
+    });
+    c.count("rays", double(tracer.raysTraced()));
+    c.count("samples", double(frame.width) * frame.height);
+    return;
+  }
   tbb::parallel_for(0, frame.height, [&](int y) {
     std::vector<int> lensStratum(std::size_t(spp_), 0);
     for (int x = 0; x < frame.width; ++x) {
@@ -74,7 +123,6 @@ void RtDistributedPass::execute(PassContext& c) {
       const std::uint32_t pixelSeed = pcgHash(pixel);
       const std::uint32_t lensSeed = pcgHash(pixel ^ 0x4c454e53u);  // "LENS"
       // A pinhole (rt_whitted) never reads the lens sample: skip its shuffle and strata.
-      const bool lens = camera.aperture > 0.f;
       if (lens) shuffle(lensStratum, lensSeed);
       beginSdfPixel();
       vec3 sum(0.f);
