@@ -93,37 +93,61 @@ vec3 WhittedTracer::shadeGiven(const SurfacePoint& p, const vec3& v, int depth, 
   return rad + shading::secondaryTerms(m, p.shadingNormal, v, refl, trans);
 }
 
-vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
-                              const RayCone* cone) const {
-  if (depth >= settings_.maxDepth) return vec3(0.f);
-  const vec3 r = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
-  const RayCone next = cone ? reflectedCone(world_, p, cone->width, cone->spread) : RayCone{};
-  return secondary(p, r, depth, pcgHash(seed ^ 0x52454646u), cone ? &next : nullptr);  // "REFF"
-}
-
-vec3 WhittedTracer::secondary(const SurfacePoint& p, const vec3& direction, int depth,
-                              std::uint32_t seed, const RayCone* cone) const {
+bool WhittedTracer::secondaryRay(const SurfacePoint& p, const vec3& v, int depth,
+                                 std::uint32_t seed, const RayCone* cone, bool reflection,
+                                 SecondaryRay& out) const {
+  if (depth >= settings_.maxDepth) return false;
+  vec3 direction;
+  if (reflection) {
+    direction = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
+    out.seed = pcgHash(seed ^ 0x52454646u);  // "REFF"
+    out.hasCone = cone != nullptr;
+    if (cone) out.cone = reflectedCone(world_, p, cone->width, cone->spread);
+  } else {
+    // Entering through the front face goes from air (1) into the material (ior); leaving goes
+    // back out. Nested media are told apart by face orientation only (no medium stack).
+    const float ior = scene_.material(p.material).ior;
+    const float eta = p.frontFacing ? 1.f / ior : ior;
+    direction = shading::refractLecture(v, p.shadingNormal, eta).t;
+    out.seed = pcgHash(seed ^ 0x5452414eu);  // "TRAN"
+    out.hasCone = cone != nullptr;
+    if (cone) out.cone = *cone;
+  }
   // KHR_materials_volume: a ray that leaves p into the back side of its (outward, CCW) face
   // travels inside the material's volume, to the next hit: Beer-Lambert over that length. A
   // thin-walled material (thickness 0) has no volume. Nested volumes are not tracked.
-  const Material& m = scene_.material(p.material);
-  const bool inside = shading::hasVolumeAttenuation(m) && glm::dot(direction, p.faceNormal) < 0.f;
+  out.material = p.material;
+  out.inside = shading::hasVolumeAttenuation(scene_.material(p.material)) &&
+               glm::dot(direction, p.faceNormal) < 0.f;
+  out.ray = spawnRay(p, direction);
+  out.depth = depth + 1;
+  return true;
+}
+
+vec3 WhittedTracer::attenuated(const SecondaryRay& s, const vec3& radiance, float distance) const {
+  if (!s.inside) return radiance;
+  const Material& m = scene_.material(s.material);
+  return radiance *
+         shading::volumeTransmittance(m.attenuationColor, m.attenuationDistance, distance);
+}
+
+vec3 WhittedTracer::traced(const SecondaryRay& s) const {
   float distance = 0.f;
-  const vec3 l =
-      radiance(spawnRay(p, direction), depth + 1, seed, cone, inside ? &distance : nullptr);
-  if (!inside) return l;
-  return l * shading::volumeTransmittance(m.attenuationColor, m.attenuationDistance, distance);
+  const vec3 l = radiance(s.ray, s.depth, s.seed, s.hasCone ? &s.cone : nullptr,
+                          s.inside ? &distance : nullptr);
+  return attenuated(s, l, distance);
+}
+
+vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
+                              const RayCone* cone) const {
+  SecondaryRay s;
+  return secondaryRay(p, v, depth, seed, cone, true, s) ? traced(s) : vec3(0.f);
 }
 
 vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
                                 const RayCone* cone) const {
-  if (depth >= settings_.maxDepth) return vec3(0.f);
-  // Entering through the front face goes from air (1) into the material (ior); leaving goes
-  // back out. Nested media are told apart by face orientation only (no medium stack).
-  const float ior = scene_.material(p.material).ior;
-  const float eta = p.frontFacing ? 1.f / ior : ior;
-  const shading::Refraction t = shading::refractLecture(v, p.shadingNormal, eta);
-  return secondary(p, t.t, depth, pcgHash(seed ^ 0x5452414eu), cone);  // "TRAN"
+  SecondaryRay s;
+  return secondaryRay(p, v, depth, seed, cone, false, s) ? traced(s) : vec3(0.f);
 }
 
 }  // namespace diptych

@@ -1,14 +1,16 @@
-// WhittedTracer::radianceTile: RAYTRACING for a tile of rays whose closest hits are known, with
-// the direct light's shadow rays of all the tile's points traced as one coherent Embree stream.
-// Each point's result is radianceAt's bit for bit: the same surface point, the same light
+// WhittedTracer::radianceTile and tracedTile: the first level of RAYTRACING for a tile of rays
+// traced together, so that Embree sees coherent streams (rtcIntersect1M, rtcOccluded1M) rather
+// than one call per ray: the tile's closest hits, then the direct light's shadow rays of all its
+// points. Each ray's result is radianceAt's bit for bit: the same surface point, the same light
 // samples and responses, the same shadow rays (makeShadowSample is lightVisibility's ray), the
-// same visible fraction, and the contributions summed in the same order (shadeGiven).
+// same visible fraction, the terms summed in the same order (shadeGiven), and the recursion
+// below is radiance()'s. Only the order in which rays are traced differs, which no result
+// depends on (each ray's seed is its own).
+#include <limits>
 #include <vector>
 
 #include "engine/core/check.h"
-
 #include "engine/rt/light_sampling.h"
-#include "engine/rt/ray_cone.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/rt/whitted.h"
 #include "engine/scene/environment.h"
@@ -32,17 +34,19 @@ struct PendingLight {
 
 void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                                  std::span<const std::uint32_t> seeds, int depth,
-                                 const RayCone* cone, std::span<vec3> out) const {
+                                 std::span<const RayCone* const> cone, std::span<vec3> out) const {
   const std::size_t n = rays.size(), lights = lights_.size();
-  DIPTYCH_CHECK(n <= kMaxTile && hits.size() == n && seeds.size() == n && out.size() >= n,
+  DIPTYCH_CHECK(n <= kMaxTile && hits.size() == n && seeds.size() == n && out.size() >= n &&
+                    (cone.empty() || cone.size() == n),
                 "WhittedTracer::radianceTile: tile sizes disagree");
-  // Per thread, reused tile after tile: no allocation per ray.
+  // Per thread, reused tile after tile: no allocation per ray. The recursion below this level
+  // is per ray (radiance()), so a thread is in at most one radianceTile at a time.
   thread_local std::vector<PendingLight> pending;
   pending.assign(n * lights, PendingLight{});
   SurfacePoint points[kMaxTile];
   RayCone cones[kMaxTile];
-  bool shaded[kMaxTile];
-  bool coned[kMaxTile];  // texture LOD by ray cone: shade with cones[i]
+  bool shaded[kMaxTile] = {};
+  bool coned[kMaxTile] = {};  // shade with cones[i] (texture LOD)
 
   RTCRay stream[kStreamRays];  // RTC_ALIGN(16), as rtcOccluded1M requires
   std::uint32_t owner[kStreamRays];
@@ -57,14 +61,14 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
   };
 
   for (std::size_t i = 0; i < n; ++i) {
-    shaded[i] = false;
     const Ray& ray = rays[i];
     countRay(ray, depth, hits[i]);
     if (!hits[i]) {
       out[i] = sampleEnvironment(scene_.environment, ray.direction);
       continue;
     }
-    coned[i] = surfaceAt(ray, *hits[i], cone, points[i], cones[i]) != nullptr;
+    const RayCone* c = cone.empty() ? nullptr : cone[i];
+    coned[i] = surfaceAt(ray, *hits[i], c, points[i], cones[i]) != nullptr;
     shaded[i] = true;
     const SurfacePoint& p = points[i];
     const vec3 v = -ray.direction;
@@ -101,8 +105,47 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
       const float visibility = float(q.visible) / float(q.count);
       sum += shading::lightContributionOf(q.response, {vec3(0.f), 0.f, q.radiance}, visibility);
     }
+    // The reflected and transmitted rays ray by ray below this level: traced as streams level by
+    // level they were slower (the tiles of the deeper levels hold a few rays each: 127.4 against
+    // 120.8 CPU ms for the Whitted reference, docs/ray-tracing.md).
     out[i] = shadeGiven(points[i], -rays[i].direction, depth, seeds[i],
                         coned[i] ? &cones[i] : nullptr, sum);
+  }
+}
+
+void WhittedTracer::tracedTile(std::span<const SecondaryRay> rays, std::span<vec3> out) const {
+  DIPTYCH_CHECK(out.size() >= rays.size(), "WhittedTracer::tracedTile: output too small");
+  for (std::size_t begin = 0; begin < rays.size(); begin += kMaxTile) {
+    const std::size_t n = std::min(kMaxTile, rays.size() - begin);
+    const SecondaryRay* s = rays.data() + begin;
+    RTCRayHit tile[kMaxTile];  // RTC_ALIGN(16), as rtcIntersect1M requires
+    for (std::size_t i = 0; i < n; ++i) {
+      setEmbreeRay(tile[i].ray, s[i].ray.origin, s[i].ray.direction, 0.f,
+                   std::numeric_limits<float>::infinity());
+      tile[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      tile[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rt_.intersectTile({tile, n}, true);
+    Ray traced[kMaxTile];
+    Hit hits[kMaxTile];
+    const Hit* found[kMaxTile];
+    std::uint32_t seeds[kMaxTile];
+    const RayCone* cones[kMaxTile];
+    vec3 radiance[kMaxTile];
+    for (std::size_t i = 0; i < n; ++i) {
+      DIPTYCH_CHECK(s[i].depth == s[0].depth, "WhittedTracer::tracedTile: rays of two depths");
+      traced[i] = s[i].ray;
+      found[i] = rt_.hitOf(tile[i], hits[i], wantsHitNormal()) ? &hits[i] : nullptr;
+      seeds[i] = s[i].seed;
+      cones[i] = s[i].hasCone ? &s[i].cone : nullptr;
+    }
+    radianceTile({traced, n}, {found, n}, {seeds, n}, s[0].depth, {cones, n}, {radiance, n});
+    for (std::size_t i = 0; i < n; ++i) {
+      // radiance()'s hitDistance.
+      const float distance = found[i] ? hits[i].t * glm::length(traced[i].direction)
+                                      : std::numeric_limits<float>::infinity();
+      out[begin + i] = attenuated(s[i], radiance[i], distance);
+    }
   }
 }
 

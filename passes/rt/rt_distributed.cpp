@@ -96,15 +96,18 @@ void RtDistributedPass::execute(PassContext& c) {
         const Hit* found[kPrimaryTile];
         std::uint32_t seeds[kPrimaryTile];
         vec3 colors[kPrimaryTile];
+        const RayCone* cones[kPrimaryTile];
         for (int i = 0; i < n; ++i) {
           const RTCRay& r = tile[i].ray;
           rays[i] = {vec3(r.org_x, r.org_y, r.org_z), vec3(r.dir_x, r.dir_y, r.dir_z)};
           found[i] = rt.hitOf(tile[i], hits[i], tracer.wantsHitNormal()) ? &hits[i] : nullptr;
           seeds[i] = std::uint32_t(y * frame.width + x0 + i);
+          cones[i] = cone;
         }
-        // The tile's direct-light shadow rays go to Embree as one stream too.
+        // The tile's shadow rays and secondary rays go to Embree as streams too, level by level.
         const std::size_t m = std::size_t(n);
-        tracer.radianceTile({rays, m}, {found, m}, {seeds, m}, 1, cone, {colors, m});
+        tracer.radianceTile({rays, m}, {found, m}, {seeds, m}, 1, {cones, cone ? m : 0},
+                            {colors, m});
         for (int i = 0; i < n; ++i) {
           for (int ch = 0; ch < 3; ++ch) out.setF(x0 + i, y, ch, colors[i][ch]);
           out.setF(x0 + i, y, 3, 1.f);
