@@ -1,6 +1,8 @@
 #include "engine/rt/whitted.h"
 
 #include <limits>
+#include <new>
+#include <type_traits>
 
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/ray_cone.h"
@@ -33,10 +35,10 @@ vec3 WhittedTracer::radianceAt(const Ray& ray, int depth, std::uint32_t seed, co
     *hitDistance =
         hit ? hit->t * glm::length(ray.direction) : std::numeric_limits<float>::infinity();
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
-  SurfacePoint p;
   RayCone at;
-  const RayCone* c = surfaceAt(ray, *hit, cone, p, at);
-  return shade(p, -ray.direction, depth, seed, c);
+  bool coned = false;
+  const SurfacePoint p = surfaceAt(ray, *hit, cone, at, coned);
+  return shade(p, -ray.direction, depth, seed, coned ? &at : nullptr);
 }
 
 void WhittedTracer::countRay(const Ray& ray, int depth, const Hit* hit) const {
@@ -44,15 +46,18 @@ void WhittedTracer::countRay(const Ray& ray, int depth, const Hit* hit) const {
   if (observer_) observer_({ray, depth, hit ? std::optional<Hit>(*hit) : std::nullopt});
 }
 
-const RayCone* WhittedTracer::surfaceAt(const Ray& ray, const Hit& h, const RayCone* cone,
-                                        SurfacePoint& p, RayCone& at) const {
-  p = makeSurfacePoint(scene_, world_, {h.instance, h.primitive, h.u, h.v, h.analytic},
-                       ray.direction);
-  if (!cone || !settings_.rayCones) return nullptr;
+SurfacePoint WhittedTracer::surfaceAt(const Ray& ray, const Hit& h, const RayCone* cone,
+                                      RayCone& at, bool& coned) const {
+  // Returned by value into the caller's object (no ~250-byte copy of a point just written by
+  // narrower stores: a store-forwarding stall per ray, perf annotate).
+  SurfacePoint p = makeSurfacePoint(scene_, world_, {h.instance, h.primitive, h.u, h.v, h.analytic},
+                                    ray.direction);
+  coned = cone && settings_.rayCones;
+  if (!coned) return p;
   at = {cone->width + cone->spread * h.t * glm::length(ray.direction), cone->spread};
   p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
                                coneUvLod(world_, p, ray.direction, at.width));
-  return &at;
+  return p;
 }
 
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
@@ -119,7 +124,10 @@ bool WhittedTracer::secondaryRay(const SurfacePoint& p, const vec3& v, int depth
   out.material = p.material;
   out.inside = shading::hasVolumeAttenuation(scene_.material(p.material)) &&
                glm::dot(direction, p.faceNormal) < 0.f;
-  out.ray = spawnRay(p, direction);
+  // In place (copy elision), not assigned: copying the returned Ray reloaded its just-stored
+  // floats as one 16-byte load, a store-forwarding stall per ray (perf annotate).
+  static_assert(std::is_trivially_destructible_v<Ray>);
+  ::new (static_cast<void*>(&out.ray)) Ray(spawnRay(p, direction));
   out.depth = depth + 1;
   return true;
 }

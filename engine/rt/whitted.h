@@ -109,11 +109,11 @@ class WhittedTracer {
  private:
   vec3 direct(const SurfacePoint& point, const vec3& v, std::uint32_t seed) const;
   // radianceAt's steps: count the ray (and show it to the observer); the hit's surface point,
-  // with its texture LOD from the ray's cone where asked (returns the cone at the point, else
-  // null); EVALUAMILREC given the direct light's sum.
+  // with its texture LOD from the ray's cone where asked (coned: then `at` is the cone at the
+  // point); EVALUAMILREC given the direct light's sum.
   void countRay(const Ray& ray, int depth, const Hit* hit) const;
-  const RayCone* surfaceAt(const Ray& ray, const Hit& hit, const RayCone* cone, SurfacePoint& point,
-                           RayCone& at) const;
+  SurfacePoint surfaceAt(const Ray& ray, const Hit& hit, const RayCone* cone, RayCone& at,
+                         bool& coned) const;
   vec3 shadeGiven(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
                   const RayCone* cone, const vec3& directSum) const;
   const Scene& scene_;

@@ -7,6 +7,8 @@
 // below is radiance()'s. Only the order in which rays are traced differs, which no result
 // depends on (each ray's seed is its own).
 #include <limits>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 #include "engine/core/check.h"
@@ -43,6 +45,7 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
   // is per ray (radiance()), so a thread is in at most one radianceTile at a time.
   thread_local std::vector<PendingLight> pending;
   pending.assign(n * lights, PendingLight{});
+  static_assert(std::is_trivially_destructible_v<SurfacePoint>);  // constructed in place below
   SurfacePoint points[kMaxTile];
   RayCone cones[kMaxTile];
   bool shaded[kMaxTile] = {};
@@ -68,7 +71,9 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
       continue;
     }
     const RayCone* c = cone.empty() ? nullptr : cone[i];
-    coned[i] = surfaceAt(ray, *hits[i], c, points[i], cones[i]) != nullptr;
+    // In place (guaranteed copy elision): an assignment would copy the ~250-byte point.
+    ::new (static_cast<void*>(&points[i]))
+        SurfacePoint(surfaceAt(ray, *hits[i], c, cones[i], coned[i]));
     shaded[i] = true;
     const SurfacePoint& p = points[i];
     const vec3 v = -ray.direction;
