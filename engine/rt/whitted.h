@@ -70,16 +70,17 @@ class WhittedTracer {
                 float* hitDistance = nullptr) const;
   // The rest of RAYTRACING(o, u, depth) once the ray's closest hit is known (hit: null on a
   // miss), for callers that trace many rays at once (RtScene::intersectTile); depth <= maxDepth.
-  // radiance() is trace + this, so both give the same result bit for bit.
+  // radiance() is trace + this.
   vec3 radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
                   const RayCone* cone = nullptr, float* hitDistance = nullptr) const;
   // Whether hits passed to radianceAt need Hit::Ng (an observer reads it).
   bool wantsHitNormal() const { return bool(observer_); }
   // radianceAt for a tile of up to kMaxTile rays (hits[i] null: a miss; seeds[i], cones[i]
-  // each; cones empty: none) into out[i], bit for bit, but the direct light's shadow rays of all
-  // the tile's points go to Embree as one coherent stream (neighbouring pixels aimed at the same
-  // lights) instead of one rtcOccluded1 each (engine/rt/whitted_tile.cpp). Their reflected and
-  // transmitted rays are traced ray by ray, as radiance() does.
+  // each; cones empty: none) into out[i], with the direct light's shadow rays of all the tile's
+  // points traced as one coherent Embree stream (neighbouring pixels aimed at the same lights)
+  // instead of one rtcOccluded1 each (engine/rt/whitted_tile.cpp): the same arithmetic, up to
+  // the rounding of Embree's packet kernels (see there). Their reflected and transmitted rays
+  // are traced ray by ray, as radiance() does.
   static constexpr std::size_t kMaxTile = 64;
   void radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                     std::span<const std::uint32_t> seeds, int depth,

@@ -1,11 +1,14 @@
 // WhittedTracer::radianceTile and tracedTile: the first level of RAYTRACING for a tile of rays
-// traced together, so that Embree sees coherent streams (rtcIntersect1M, rtcOccluded1M) rather
-// than one call per ray: the tile's closest hits, then the direct light's shadow rays of all its
-// points. Each ray's result is radianceAt's bit for bit: the same surface point, the same light
-// samples and responses, the same shadow rays (makeShadowSample is lightVisibility's ray), the
-// same visible fraction, the terms summed in the same order (shadeGiven), and the recursion
-// below is radiance()'s. Only the order in which rays are traced differs, which no result
-// depends on (each ray's seed is its own).
+// traced together, so that Embree sees coherent streams (rtcIntersect1M, rtcOccluded1M with
+// RTC_INTERSECT_CONTEXT_FLAG_COHERENT: its 8/16-wide packet kernels) rather than one call per
+// ray: the tile's closest hits, then the direct light's shadow rays of all its points. The
+// arithmetic after Embree is radianceAt's: the same surface point, light samples and responses,
+// the same shadow rays (makeShadowSample is lightVisibility's ray), the same visible fraction,
+// the terms summed in the same order (shadeGiven), and radiance()'s recursion below. Embree's
+// packet kernels may round differently from its single-ray ones: a ray through an edge shared
+// by two triangles can get the other triangle, or t, u, v can differ in the last bits, and the
+// recursion below can amplify that (docs/ray-tracing.md: 3 pixels of 76,800 on techniques.json's
+// hybrid frame, FLIP mean 8.6e-5; whitted.json is byte-identical).
 #include <limits>
 #include <new>
 #include <type_traits>

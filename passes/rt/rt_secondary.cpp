@@ -68,7 +68,8 @@ void RtSecondaryPass::execute(PassContext& c) {
     };
     // The row's secondary rays, in tiles: traced as Embree streams level by level (neighbouring
     // pixels of a mirror or a glass leave in similar directions; WhittedTracer::tracedTile).
-    // Results are those of tracer.reflected / transmitted bit for bit. With SDF objects each
+    // Results are those of tracer.reflected / transmitted up to the rounding of Embree's packet
+    // kernels (engine/rt/whitted_tile.cpp). With SDF objects each
     // pixel's rays stay between beginSdfPixel and storeSdfPixel, which count their sphere-tracing
     // steps: one ray at a time there.
     constexpr std::size_t kTile = WhittedTracer::kMaxTile;

@@ -1,7 +1,9 @@
 // The Whitted tracer's tiled entry points (engine/rt/whitted_tile.cpp) against its ray-by-ray
 // recursion: a tile of primary rays traced as an Embree stream (RtScene::intersectTile) and
 // shaded by radianceTile, whose shadow rays go as one stream, must give radiance()'s result bit
-// for bit, and count the same rays; tracedTile must give reflected() and transmitted(). The
+// for bit, and count the same rays; tracedTile must give reflected() and transmitted(). (Embree's
+// packet kernels may round a ray through a shared triangle edge differently from its single-ray
+// ones; none of these frames has such a ray, so a difference here is ours.) The
 // scenes cover analytic spheres, a glass volume, point, spot, directional and area lights
 // (stratified samples), a checker texture, and ray cones.
 #include <gtest/gtest.h>
@@ -43,15 +45,16 @@ void traceRow(const RtScene& rt, const Scene& scene, int y, int x0, int n, Ray* 
   for (int i = 0; i < n; ++i) found[i] = rt.hitOf(tile[i], hits[i], true) ? &hits[i] : nullptr;
 }
 
-// Every pixel of a kW x kH frame both ways; returns the number of pixels that hit something.
-int expectTileEqualsRayByRay(const Scene& scene, WhittedSettings settings, bool cones) {
+// Every pixel of a kW x kH frame both ways; hitCount: the number of pixels that hit something.
+void expectTileEqualsRayByRay(const Scene& scene, WhittedSettings settings, bool cones,
+                              int& hitCount) {
   RenderWorld world(scene);
   const RtScene& rt = world.rtScene();
   const WhittedTracer tiled(scene, world.geometry(), rt, settings);
   const WhittedTracer single(scene, world.geometry(), rt, settings);
   const RayCone primary{0.f, pixelSpreadAngle(scene.camera, kH)};
   constexpr int kTile = int(WhittedTracer::kMaxTile);
-  int hitCount = 0;
+  hitCount = 0;
   for (int y = 0; y < kH; ++y) {
     for (int x0 = 0; x0 < kW; x0 += kTile) {
       const int n = std::min(kTile, kW - x0);
@@ -87,24 +90,29 @@ int expectTileEqualsRayByRay(const Scene& scene, WhittedSettings settings, bool 
     }
   }
   EXPECT_EQ(tiled.raysTraced(), single.raysTraced());
-  return hitCount;
 }
 
 }  // namespace
 
 TEST(WhittedTile, RadianceTileEqualsRayByRayOnWhitted) {
   // Analytic mirror and glass spheres over a checker, one point light.
-  EXPECT_GT(expectTileEqualsRayByRay(sample("whitted.json"), {5, 16, false}, false), kW * kH / 2);
+  int hits = 0;
+  expectTileEqualsRayByRay(sample("whitted.json"), {5, 16, false}, false, hits);
+  EXPECT_GT(hits, kW * kH / 2);
 }
 
 TEST(WhittedTile, RadianceTileEqualsRayByRayWithAreaLightSamples) {
   // cornell.json's area light: 4 stratified shadow rays per point, jittered by the pixel seed.
-  EXPECT_GT(expectTileEqualsRayByRay(sample("cornell.json"), {5, 4, false}, false), kW * kH / 2);
+  int hits = 0;
+  expectTileEqualsRayByRay(sample("cornell.json"), {5, 4, false}, false, hits);
+  EXPECT_GT(hits, kW * kH / 2);
 }
 
 TEST(WhittedTile, RadianceTileEqualsRayByRayWithRayConesAndSeveralLights) {
   // Directional and spot lights, glass with a volume, a box, a cylinder; texture LOD by cone.
-  EXPECT_GT(expectTileEqualsRayByRay(sample("techniques.json"), {5, 16, true}, true), kW * kH / 2);
+  int hits = 0;
+  expectTileEqualsRayByRay(sample("techniques.json"), {5, 16, true}, true, hits);
+  EXPECT_GT(hits, kW * kH / 2);
 }
 
 TEST(WhittedTile, TracedTileEqualsReflectedAndTransmitted) {
