@@ -194,6 +194,21 @@ bool RtScene::intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool 
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rh);
   raysTraced_.add(1);
+  return hitOf(rh, hit, wantNormal);
+}
+
+void RtScene::intersectTile(std::span<RTCRayHit> rays, bool coherent) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags =
+      coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  std::uint64_t active = 0;
+  for (const RTCRayHit& r : rays) active += r.ray.tnear <= r.ray.tfar ? 1 : 0;
+  rtcIntersect1M(scene_, &context, rays.data(), unsigned(rays.size()), sizeof(RTCRayHit));
+  raysTraced_.add(active);
+}
+
+bool RtScene::hitOf(const RTCRayHit& rh, Hit& hit, bool wantNormal) const {
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   // A hit inside a prototype names its instance in instID[0] and has an object-space Ng.
   const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;

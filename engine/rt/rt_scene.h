@@ -104,6 +104,14 @@ class RtScene {
   // The same into `hit` (untouched on a miss); false on a miss. For the per-ray loops: no
   // std::optional<Hit> copied through the stack.
   bool intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool wantNormal) const;
+  // One tile of closest-hit queries, built by the caller (setEmbreeRay, hit.geomID and
+  // hit.instID[0] = RTC_INVALID_GEOMETRY_ID), traced as a stream (rtcIntersect1M) on the calling
+  // thread; `coherent` as for occludedTile. Embree groups coherent rays into packets, so a row of
+  // pixel rays pays one traversal setup per packet instead of one per ray. Read each result
+  // with hitOf.
+  void intersectTile(std::span<RTCRayHit> rays, bool coherent) const;
+  // The Hit of a traced RTCRayHit (intersect's conversion); false on a miss.
+  bool hitOf(const RTCRayHit& rh, Hit& hit, bool wantNormal) const;
   // Any hit in [tnear, tfar].
   bool occluded(const vec3& origin, const vec3& direction, float tnear, float tfar) const;
 

@@ -1,6 +1,8 @@
 #include "engine/rt/whitted.h"
 
 #include <limits>
+#include <new>
+#include <type_traits>
 
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/ray_cone.h"
@@ -19,25 +21,43 @@ WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, con
 vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone,
                              float* hitDistance) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
-  rays_.add(1);
   // Hit::Ng only for an observer: the shading rebuilds the normal (makeSurfacePoint).
   Hit h;
   const bool found =
-      rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, bool(observer_));
-  if (observer_) observer_({ray, depth, found ? std::optional<Hit>(h) : std::nullopt});
+      rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, wantsHitNormal());
+  return radianceAt(ray, depth, seed, found ? &h : nullptr, cone, hitDistance);
+}
+
+vec3 WhittedTracer::radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
+                               const RayCone* cone, float* hitDistance) const {
+  countRay(ray, depth, hit);
   if (hitDistance)
     *hitDistance =
-        found ? h.t * glm::length(ray.direction) : std::numeric_limits<float>::infinity();
-  if (!found) return sampleEnvironment(scene_.environment, ray.direction);
+        hit ? hit->t * glm::length(ray.direction) : std::numeric_limits<float>::infinity();
+  if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
+  RayCone at;
+  bool coned = false;
+  const SurfacePoint p = surfaceAt(ray, *hit, cone, at, coned);
+  return shade(p, -ray.direction, depth, seed, coned ? &at : nullptr);
+}
+
+void WhittedTracer::countRay(const Ray& ray, int depth, const Hit* hit) const {
+  rays_.add(1);
+  if (observer_) observer_({ray, depth, hit ? std::optional<Hit>(*hit) : std::nullopt});
+}
+
+SurfacePoint WhittedTracer::surfaceAt(const Ray& ray, const Hit& h, const RayCone* cone,
+                                      RayCone& at, bool& coned) const {
+  // Returned by value into the caller's object (no ~250-byte copy of a point just written by
+  // narrower stores: a store-forwarding stall per ray, perf annotate).
   SurfacePoint p = makeSurfacePoint(scene_, world_, {h.instance, h.primitive, h.u, h.v, h.analytic},
                                     ray.direction);
-  if (cone && settings_.rayCones) {
-    const RayCone at{cone->width + cone->spread * h.t * glm::length(ray.direction), cone->spread};
-    p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
-                                 coneUvLod(world_, p, ray.direction, at.width));
-    return shade(p, -ray.direction, depth, seed, &at);
-  }
-  return shade(p, -ray.direction, depth, seed);
+  coned = cone && settings_.rayCones;
+  if (!coned) return p;
+  at = {cone->width + cone->spread * h.t * glm::length(ray.direction), cone->spread};
+  p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
+                               coneUvLod(world_, p, ray.direction, at.width));
+  return p;
 }
 
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
@@ -63,8 +83,13 @@ vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t s
 
 vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
                           const RayCone* cone) const {
+  return shadeGiven(p, v, depth, seed, cone, direct(p, v, seed));
+}
+
+vec3 WhittedTracer::shadeGiven(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
+                               const RayCone* cone, const vec3& directSum) const {
   const shading::ShadingMaterial& m = p.resolved;
-  vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + direct(p, v, seed);
+  vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + directSum;
   // The material's model says whether the signals exist (hasReflection, hasTransmission: as for
   // the hybrid's rt_reflection and rt_transmission); secondaryTerms weights them.
   const vec3 trans = shading::hasTransmission(m) ? transmitted(p, v, depth, seed, cone) : vec3(0.f);
@@ -73,37 +98,64 @@ vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth, std::
   return rad + shading::secondaryTerms(m, p.shadingNormal, v, refl, trans);
 }
 
-vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
-                              const RayCone* cone) const {
-  if (depth >= settings_.maxDepth) return vec3(0.f);
-  const vec3 r = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
-  const RayCone next = cone ? reflectedCone(world_, p, cone->width, cone->spread) : RayCone{};
-  return secondary(p, r, depth, pcgHash(seed ^ 0x52454646u), cone ? &next : nullptr);  // "REFF"
-}
-
-vec3 WhittedTracer::secondary(const SurfacePoint& p, const vec3& direction, int depth,
-                              std::uint32_t seed, const RayCone* cone) const {
+bool WhittedTracer::secondaryRay(const SurfacePoint& p, const vec3& v, int depth,
+                                 std::uint32_t seed, const RayCone* cone, bool reflection,
+                                 SecondaryRay& out) const {
+  if (depth >= settings_.maxDepth) return false;
+  vec3 direction;
+  if (reflection) {
+    direction = glm::normalize(shading::reflectAbout(v, p.shadingNormal));
+    out.seed = pcgHash(seed ^ 0x52454646u);  // "REFF"
+    out.hasCone = cone != nullptr;
+    if (cone) out.cone = reflectedCone(world_, p, cone->width, cone->spread);
+  } else {
+    // Entering through the front face goes from air (1) into the material (ior); leaving goes
+    // back out. Nested media are told apart by face orientation only (no medium stack).
+    const float ior = scene_.material(p.material).ior;
+    const float eta = p.frontFacing ? 1.f / ior : ior;
+    direction = shading::refractLecture(v, p.shadingNormal, eta).t;
+    out.seed = pcgHash(seed ^ 0x5452414eu);  // "TRAN"
+    out.hasCone = cone != nullptr;
+    if (cone) out.cone = *cone;
+  }
   // KHR_materials_volume: a ray that leaves p into the back side of its (outward, CCW) face
   // travels inside the material's volume, to the next hit: Beer-Lambert over that length. A
   // thin-walled material (thickness 0) has no volume. Nested volumes are not tracked.
-  const Material& m = scene_.material(p.material);
-  const bool inside = shading::hasVolumeAttenuation(m) && glm::dot(direction, p.faceNormal) < 0.f;
+  out.material = p.material;
+  out.inside = shading::hasVolumeAttenuation(scene_.material(p.material)) &&
+               glm::dot(direction, p.faceNormal) < 0.f;
+  // In place (copy elision), not assigned: copying the returned Ray reloaded its just-stored
+  // floats as one 16-byte load, a store-forwarding stall per ray (perf annotate).
+  static_assert(std::is_trivially_destructible_v<Ray>);
+  ::new (static_cast<void*>(&out.ray)) Ray(spawnRay(p, direction));
+  out.depth = depth + 1;
+  return true;
+}
+
+vec3 WhittedTracer::attenuated(const SecondaryRay& s, const vec3& radiance, float distance) const {
+  if (!s.inside) return radiance;
+  const Material& m = scene_.material(s.material);
+  return radiance *
+         shading::volumeTransmittance(m.attenuationColor, m.attenuationDistance, distance);
+}
+
+vec3 WhittedTracer::traced(const SecondaryRay& s) const {
   float distance = 0.f;
-  const vec3 l =
-      radiance(spawnRay(p, direction), depth + 1, seed, cone, inside ? &distance : nullptr);
-  if (!inside) return l;
-  return l * shading::volumeTransmittance(m.attenuationColor, m.attenuationDistance, distance);
+  const vec3 l = radiance(s.ray, s.depth, s.seed, s.hasCone ? &s.cone : nullptr,
+                          s.inside ? &distance : nullptr);
+  return attenuated(s, l, distance);
+}
+
+vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
+                              const RayCone* cone) const {
+  SecondaryRay s;
+  return secondaryRay(p, v, depth, seed, cone, true, s) ? traced(s) : vec3(0.f);
 }
 
 vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
                                 const RayCone* cone) const {
-  if (depth >= settings_.maxDepth) return vec3(0.f);
-  // Entering through the front face goes from air (1) into the material (ior); leaving goes
-  // back out. Nested media are told apart by face orientation only (no medium stack).
-  const float ior = scene_.material(p.material).ior;
-  const float eta = p.frontFacing ? 1.f / ior : ior;
-  const shading::Refraction t = shading::refractLecture(v, p.shadingNormal, eta);
-  return secondary(p, t.t, depth, pcgHash(seed ^ 0x5452414eu), cone);  // "TRAN"
+  SecondaryRay s;
+  return secondaryRay(p, v, depth, seed, cone, false, s) ? traced(s) : vec3(0.f);
 }
 
 }  // namespace diptych

@@ -13,8 +13,10 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
+#include "engine/rt/ray_cone.h"
 #include "engine/rt/ray_counter.h"
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
@@ -36,18 +38,56 @@ struct WhittedSettings {
   bool rayCones = false;
 };
 
-struct RayCone;
-
 class WhittedTracer {
  public:
   WhittedTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
                 WhittedSettings settings);
+
+  // The ray that reflected() (reflection true) or transmitted() traces from point, for callers
+  // that trace many at once (RtScene::intersectTile, then radianceTile at `depth` with `seed`
+  // and the cone, then attenuated()); false when depth >= maxDepth (the radiance is 0).
+  struct SecondaryRay {
+    Ray ray;
+    int depth = 0;  // of the ray's hit
+    std::uint32_t seed = 0;
+    RayCone cone{};  // when hasCone
+    bool hasCone = false;
+    bool inside = false;  // travels inside the point's volume: Beer-Lambert over its length
+    int material = -1;    // the point's
+  };
+  bool secondaryRay(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
+                    const RayCone* cone, bool reflection, SecondaryRay& out) const;
+  // The radiance the secondary ray brought from distance (its hit's, infinity on a miss),
+  // Beer-Lambert attenuated when it travelled inside a volume.
+  vec3 attenuated(const SecondaryRay& ray, const vec3& radiance, float distance) const;
+  // radiance() along the secondary ray, attenuated().
+  vec3 traced(const SecondaryRay& ray) const;
 
   // RAYTRACING(o, u, depth); the caller offsets o if it leaves a surface.
   // cone: the ray's cone at its origin, used for texture LOD when settings.rayCones is set.
   // hitDistance, when given, receives the distance to the hit (infinity on a miss).
   vec3 radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone = nullptr,
                 float* hitDistance = nullptr) const;
+  // The rest of RAYTRACING(o, u, depth) once the ray's closest hit is known (hit: null on a
+  // miss), for callers that trace many rays at once (RtScene::intersectTile); depth <= maxDepth.
+  // radiance() is trace + this.
+  vec3 radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
+                  const RayCone* cone = nullptr, float* hitDistance = nullptr) const;
+  // Whether hits passed to radianceAt need Hit::Ng (an observer reads it).
+  bool wantsHitNormal() const { return bool(observer_); }
+  // radianceAt for a tile of up to kMaxTile rays (hits[i] null: a miss; seeds[i], cones[i]
+  // each; cones empty: none) into out[i], with the direct light's shadow rays of all the tile's
+  // points traced as one coherent Embree stream (neighbouring pixels aimed at the same lights)
+  // instead of one rtcOccluded1 each (engine/rt/whitted_tile.cpp): the same arithmetic, up to
+  // the rounding of Embree's packet kernels (see there). Their reflected and transmitted rays
+  // are traced ray by ray, as radiance() does.
+  static constexpr std::size_t kMaxTile = 64;
+  void radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
+                    std::span<const std::uint32_t> seeds, int depth,
+                    std::span<const RayCone* const> cones, std::span<vec3> out) const;
+  // traced() of each ray (all of one depth, any number): their closest hits found by Embree
+  // streams (RtScene::intersectTile) of kMaxTile rays, then radianceTile and attenuated().
+  void tracedTile(std::span<const SecondaryRay> rays, std::span<vec3> out) const;
   // EVALUAMILREC at a known surface point seen from direction v (unit, toward the viewer); cone:
   // the cone's width at the point and its spread.
   vec3 shade(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
@@ -69,10 +109,14 @@ class WhittedTracer {
 
  private:
   vec3 direct(const SurfacePoint& point, const vec3& v, std::uint32_t seed) const;
-  // radiance() along `direction` from `point`, Beer-Lambert attenuated when the ray travels
-  // inside the point's volume (KHR_materials_volume, shading.glsl volumeTransmittance).
-  vec3 secondary(const SurfacePoint& point, const vec3& direction, int depth, std::uint32_t seed,
-                 const RayCone* cone) const;
+  // radianceAt's steps: count the ray (and show it to the observer); the hit's surface point,
+  // with its texture LOD from the ray's cone where asked (coned: then `at` is the cone at the
+  // point); EVALUAMILREC given the direct light's sum.
+  void countRay(const Ray& ray, int depth, const Hit* hit) const;
+  SurfacePoint surfaceAt(const Ray& ray, const Hit& hit, const RayCone* cone, RayCone& at,
+                         bool& coned) const;
+  vec3 shadeGiven(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
+                  const RayCone* cone, const vec3& directSum) const;
   const Scene& scene_;
   const WorldGeometry& world_;
   const RtScene& rt_;

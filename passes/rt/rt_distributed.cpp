@@ -2,8 +2,11 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <span>
 #include <vector>
 
 #include "engine/graph/render_world.h"
@@ -14,6 +17,10 @@
 
 namespace diptych {
 namespace {
+
+// Primary rays per Embree stream call: a row is traced in tiles of this many pixels (80 bytes
+// each on the stack), the most WhittedTracer::radianceTile shades at once.
+constexpr std::size_t kPrimaryTile = WhittedTracer::kMaxTile;
 
 // A per-pixel random permutation of 0..n-1 (Fisher-Yates driven by pcgHash). Pairing pixel
 // stratum s with lens stratum perm[s] keeps both sets stratified while decorrelating them, as
@@ -66,27 +73,90 @@ void RtDistributedPass::execute(PassContext& c) {
   const RayCone primaryCone{0.f, pixelSpreadAngle(camera, frame.height) / std::sqrt(float(spp_))};
   const RayCone* cone = rayCones_ ? &primaryCone : nullptr;
   const PinholeFrame pinhole(camera, frame.width, frame.height);
+  const bool lens = camera.aperture > 0.f;
+  // The primary ray of pixel x's sample s (its seed in `seed`), as below.
+  const auto sampleRay = [&](int x, int y, int s, std::span<const int> lensStratum,
+                             std::uint32_t& seed) {
+    const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
+    const std::uint32_t pixelSeed = pcgHash(pixel);
+    const std::uint32_t lensSeed = pcgHash(pixel ^ 0x4c454e53u);  // "LENS"
+    const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pixelSeed);
+    const float px = float(x) + offset.x, py = float(y) + offset.y;
+    seed = spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s));
+    return lens ? thinLensRay(camera, frame.width, frame.height, px, py,
+                              stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed))
+                : pinhole.ray(px, py);  // == thinLensRay with no aperture
+  };
+  // Without SDF objects a row's sample rays (neighbouring pixels, or one pixel's strata: all
+  // coherent) are traced in tiles of 64 as Embree streams and shaded by radianceTile, whose
+  // shadow rays go as one stream too; each pixel sums its samples in their order, so the image
+  // is the ray-by-ray loop's below up to the rounding of Embree's packet kernels
+  // (engine/rt/whitted_tile.cpp). With SDF objects that loop stays: its
+  // beginSdfPixel / storeSdfPixel count each pixel's sphere-tracing steps.
+  if (!steps) {
+    const RtScene& rt = world.rtScene();
+    tbb::parallel_for(0, frame.height, [&](int y) {
+      std::vector<int> lensStratum(std::size_t(spp_), 0);
+      std::vector<vec3> sum(std::size_t(frame.width), vec3(0.f));
+      RTCRayHit tile[kPrimaryTile];  // RTC_ALIGN(16), as rtcIntersect1M requires
+      Ray rays[kPrimaryTile];
+      std::uint32_t seeds[kPrimaryTile];
+      int pixelOf[kPrimaryTile];
+      std::size_t filled = 0;
+      const auto flush = [&] {
+        for (std::size_t i = 0; i < filled; ++i) {
+          setEmbreeRay(tile[i].ray, rays[i].origin, rays[i].direction, 0.f,
+                       std::numeric_limits<float>::infinity());
+          tile[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+          tile[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        }
+        rt.intersectTile({tile, filled}, true);
+        Hit hits[kPrimaryTile];
+        const Hit* found[kPrimaryTile];
+        const RayCone* cones[kPrimaryTile];
+        vec3 colors[kPrimaryTile];
+        for (std::size_t i = 0; i < filled; ++i) {
+          found[i] = rt.hitOf(tile[i], hits[i], tracer.wantsHitNormal()) ? &hits[i] : nullptr;
+          cones[i] = cone;
+        }
+        tracer.radianceTile({rays, filled}, {found, filled}, {seeds, filled}, 1,
+                            {cones, cone ? filled : 0}, {colors, filled});
+        for (std::size_t i = 0; i < filled; ++i) sum[std::size_t(pixelOf[i])] += colors[i];
+        filled = 0;
+      };
+      for (int x = 0; x < frame.width; ++x) {
+        const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
+        if (lens) shuffle(lensStratum, pcgHash(pixel ^ 0x4c454e53u));
+        for (int s = 0; s < spp_; ++s) {
+          rays[filled] = sampleRay(x, y, s, lensStratum, seeds[filled]);
+          pixelOf[filled] = x;
+          if (++filled == kPrimaryTile) flush();
+        }
+      }
+      if (filled > 0) flush();
+      for (int x = 0; x < frame.width; ++x) {
+        const vec3 color = sum[std::size_t(x)] / float(spp_);
+        for (int ch = 0; ch < 3; ++ch) out.setF(x, y, ch, color[ch]);
+        out.setF(x, y, 3, 1.f);
+      }
+    });
+    c.count("rays", double(tracer.raysTraced()));
+    c.count("samples", double(spp_) * frame.width * frame.height);
+    return;
+  }
   tbb::parallel_for(0, frame.height, [&](int y) {
     std::vector<int> lensStratum(std::size_t(spp_), 0);
     for (int x = 0; x < frame.width; ++x) {
       const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
       // The same pixel pattern and seeds as rt_whitted, so that the two differ only by the lens.
-      const std::uint32_t pixelSeed = pcgHash(pixel);
-      const std::uint32_t lensSeed = pcgHash(pixel ^ 0x4c454e53u);  // "LENS"
       // A pinhole (rt_whitted) never reads the lens sample: skip its shuffle and strata.
-      const bool lens = camera.aperture > 0.f;
-      if (lens) shuffle(lensStratum, lensSeed);
+      if (lens) shuffle(lensStratum, pcgHash(pixel ^ 0x4c454e53u));  // "LENS"
       beginSdfPixel();
       vec3 sum(0.f);
       for (int s = 0; s < spp_; ++s) {
-        const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pixelSeed);
-        const float px = float(x) + offset.x, py = float(y) + offset.y;
-        const Ray ray =
-            lens ? thinLensRay(camera, frame.width, frame.height, px, py,
-                               stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed))
-                 : pinhole.ray(px, py);  // == thinLensRay with no aperture
-        sum += tracer.radiance(ray, 1,
-                               spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s)), cone);
+        std::uint32_t seed;
+        const Ray ray = sampleRay(x, y, s, lensStratum, seed);
+        sum += tracer.radiance(ray, 1, seed, cone);
       }
       storeSdfPixel(steps, x, y);
       const vec3 color = sum / float(spp_);

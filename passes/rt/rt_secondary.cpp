@@ -61,6 +61,27 @@ void RtSecondaryPass::execute(PassContext& c) {
   tbb::parallel_for(0, frame.height, [&](int y) {
     // The row's address once (per-texel setF recomputes the stride and the index).
     std::uint32_t* row = out.row(y);
+    const auto store = [&](int x, const vec3& radiance) {
+      std::uint32_t* texel = row + 4 * std::size_t(x);
+      for (int ch = 0; ch < 3; ++ch) texel[ch] = std::bit_cast<std::uint32_t>(radiance[ch]);
+      texel[3] = std::bit_cast<std::uint32_t>(1.f);
+    };
+    // The row's secondary rays, in tiles: traced as Embree streams level by level (neighbouring
+    // pixels of a mirror or a glass leave in similar directions; WhittedTracer::tracedTile).
+    // Results are those of tracer.reflected / transmitted up to the rounding of Embree's packet
+    // kernels (engine/rt/whitted_tile.cpp). With SDF objects each
+    // pixel's rays stay between beginSdfPixel and storeSdfPixel, which count their sphere-tracing
+    // steps: one ray at a time there.
+    constexpr std::size_t kTile = WhittedTracer::kMaxTile;
+    WhittedTracer::SecondaryRay rays[kTile];
+    int pixel[kTile];
+    std::size_t filled = 0;
+    const auto flush = [&] {
+      vec3 radiance[kTile];
+      tracer.tracedTile({rays, filled}, {radiance, filled});
+      for (std::size_t i = 0; i < filled; ++i) store(pixel[i], radiance[i]);
+      filled = 0;
+    };
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
       beginSdfPixel();
@@ -76,15 +97,20 @@ void RtSecondaryPass::execute(PassContext& c) {
           // (RTG eq. 20.30) has width spread * distance there.
           const RayCone cone{spread * glm::length(p.position - eye.origin), spread};
           const RayCone* c = rayCones_ ? &cone : nullptr;
-          radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c)
-                                : tracer.transmitted(p, -eye.direction, 1, seed, c);
+          if (steps) {
+            radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c)
+                                  : tracer.transmitted(p, -eye.direction, 1, seed, c);
+          } else if (tracer.secondaryRay(p, -eye.direction, 1, seed, c, reflection, rays[filled])) {
+            pixel[filled] = x;
+            if (++filled == kTile) flush();
+            continue;  // stored by flush
+          }
         }
       }
-      std::uint32_t* texel = row + 4 * std::size_t(x);
-      for (int ch = 0; ch < 3; ++ch) texel[ch] = std::bit_cast<std::uint32_t>(radiance[ch]);
-      texel[3] = std::bit_cast<std::uint32_t>(1.f);
+      store(x, radiance);
       storeSdfPixel(steps, x, y);
     }
+    if (filled > 0) flush();
   });
   c.count("rays", double(tracer.raysTraced()));
 }
