@@ -20,6 +20,7 @@
 #include "passes/raster/env_prefilter.h"
 #include "passes/raster/fullscreen_resolve.h"
 #include "passes/raster/gbuffer_surface.h"
+#include "passes/raster/screen_rect.h"
 
 namespace diptych {
 namespace {
@@ -185,6 +186,8 @@ struct EnvReflectionGl {
         .first->second;
   }
 
+  std::vector<Aabb> bounds;  // world bounds per mesh (screen_rect.h meshBounds)
+
   // env_sphere's view-independent levels per sphere-map side (sphereWorldLevels).
   std::map<int, envmap::PrefilteredCube> sphereLevels;
 
@@ -304,9 +307,27 @@ void EnvReflectionPass::execute(PassContext& c) {
   gl::glBindTextureUnit(0, c.glTexture(io_.hits).id());
   gl::glBindTextureUnit(1, map.id());
   bindSurface(c, surface_);
-  // 0 where the material cannot reflect: those pixels are discarded before any surface work.
+  // 0 where the material cannot reflect: those pixels are discarded before any surface work,
+  // and the lookup is scissored to the window rectangle of the meshes whose material may
+  // reflect (the shader's gate, sceneHitMayReflect): no other pixel can show one of them.
   clearToZero(out);
-  pass.draw(world, out);
+  const Scene& scene = world.scene();
+  const WorldGeometry& geometry = world.geometry();
+  const bool lobe = map.levels() > 1;  // as the shader's uMaxLod > 0
+  const mat4 viewProj =
+      reversedZProjection(camera, float(out.width()) / float(out.height())) * viewMatrix(camera);
+  std::vector<PixelRect> rects;
+  const PixelRect covered = unionRect(
+      meshBounds(state.bounds, geometry), viewProj, out.width(), out.height(),
+      [&](int m) {
+        return shading::materialHasReflection(
+            scene.material(geometry.meshes[std::size_t(m)].material), lobe);
+      },
+      rects);
+  c.count("env_scissor_pixels", covered.empty() ? 0.0
+                                                : double(covered.hi.x - covered.lo.x) *
+                                                      double(covered.hi.y - covered.lo.y));
+  if (!covered.empty()) pass.draw(world, out, /*multiply=*/false, covered.scissor());
 }
 
 }  // namespace diptych
