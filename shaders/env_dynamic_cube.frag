@@ -13,8 +13,11 @@ uniform vec3 uEye;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), texelFetch(uHits, ivec2(gl_FragCoord.xy), 0));
-  if (!s.hit || s.instance != uInstance) discard;
+  // The instance decides first, from the hits texel: other pixels skip the surface rebuild
+  // (llvmpipe skips the rest of the shader for blocks whose pixels are all discarded).
+  uvec4 hits = texelFetch(uHits, ivec2(gl_FragCoord.xy), 0);
+  if (hits.x != uint(uInstance + 1)) discard;
+  SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), hits);
   vec3 incoming = s.position - uEye;
   vec3 n = dot(s.faceNormal, incoming) > 0.0 ? -s.shadingNormal : s.shadingNormal;
   vec3 r = reflectAbout(safeNormalize(-incoming), n);

@@ -138,17 +138,27 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
-  if (o.clear) {
-    const GLfloat zero[4] = {0.f, 0.f, 0.f, 0.f};
-    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, zero);
-    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);
-    glDisable(GL_DEPTH_TEST);
+  // The environment background: a full-screen triangle at depth 0, the cleared (far) depth.
+  const auto drawBackground = [&] {
     glDisable(GL_BLEND);
     setCamera(background_, view, viewProjection, width, height);
     background_.use();
     glBindTextureUnit(1, environment_.id());
     empty_.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
+  };
+  // Drawn after the meshes where their depth marks what they covered, as engines draw the sky:
+  // then only pixels no mesh wrote run its cube lookup (the early depth test rejects the
+  // others), and every pixel ends as it did with the background drawn first and overwritten.
+  const bool backgroundLast = o.clear && o.depthWrite && !o.blend;
+  if (o.clear) {
+    const GLfloat zero[4] = {0.f, 0.f, 0.f, 0.f};
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);
+    if (!backgroundLast) {
+      glDisable(GL_DEPTH_TEST);
+      drawBackground();
+    }
   }
 
   glEnable(GL_DEPTH_TEST);
@@ -185,6 +195,12 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
                    reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));
   }
   glDisable(GL_CLIP_DISTANCE0);
+  if (backgroundLast) {
+    // Reversed-Z: a mesh fragment's depth is > 0, so GEQUAL passes only where none was written.
+    glDepthFunc(GL_GEQUAL);
+    glDepthMask(GL_FALSE);
+    drawBackground();
+  }
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   // Mesa rejects draws into several colour buffers while a dual-source factor is set, even with

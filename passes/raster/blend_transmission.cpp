@@ -1,7 +1,6 @@
 #include "passes/raster/blend_transmission.h"
 
 #include <algorithm>
-#include <limits>
 #include <optional>
 
 #include "engine/gl/bindings.h"
@@ -12,6 +11,7 @@
 #include "engine/shading/shading.h"
 #include "passes/raster/fullscreen_resolve.h"
 #include "passes/raster/gbuffer_surface.h"
+#include "passes/raster/screen_rect.h"
 
 namespace diptych {
 
@@ -26,15 +26,7 @@ struct BlendCache {
   // Compiled for the world's scene on first use; [1] reads the G-buffer's stored surface.
   std::optional<FullscreenResolve> firstSurface[2];
   std::optional<FullscreenResolve> mask;
-  std::vector<Aabb> bounds;  // world bounds per mesh; the world's geometry is fixed
-  const std::vector<Aabb>& meshBounds(const WorldGeometry& geometry) {
-    if (bounds.size() != geometry.meshes.size()) {
-      bounds.assign(geometry.meshes.size(), Aabb{});
-      for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
-        for (const vec3& p : geometry.meshes[m].positions) bounds[m].extend(p);
-    }
-    return bounds;
-  }
+  std::vector<Aabb> bounds;  // world bounds per mesh (screen_rect.h meshBounds)
   void ensure(int width, int height) {
     if (depth && depth.width() == width && depth.height() == height) return;
     depth = gl::Texture::create2D(gl::TextureFormat::D32F, width, height);
@@ -48,37 +40,6 @@ vec3 meshCentre(const WorldMesh& mesh) {
   Aabb box;
   for (const vec3& p : mesh.positions) box.extend(p);
   return box.center();
-}
-
-// Window rectangle [lo, hi) (pixels, GL window coordinates) holding every pixel centre that
-// `box` can cover: the projection of a box wholly in front of the eye is the convex hull of its
-// projected corners. A box reaching to or behind the eye plane gets the whole viewport.
-struct PixelRect {
-  ivec2 lo{0}, hi{0};
-  bool empty() const { return hi.x <= lo.x || hi.y <= lo.y; }
-};
-
-PixelRect windowRect(const Aabb& box, const mat4& viewProj, int width, int height) {
-  const PixelRect whole{ivec2(0), ivec2(width, height)};
-  if (box.empty()) return {};
-  vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-  for (int i = 0; i < 8; ++i) {
-    const vec4 c = viewProj * vec4(i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y,
-                                   i & 4 ? box.hi.z : box.lo.z, 1.f);
-    if (!(c.w > 1e-6f)) return whole;
-    const vec2 w = (0.5f * vec2(c) / c.w + 0.5f) * vec2(float(width), float(height));
-    lo = glm::min(lo, w);
-    hi = glm::max(hi, w);
-  }
-  // One pixel of margin for rounding in the projection and the rasterizer's snapping.
-  PixelRect r;
-  r.lo = glm::clamp(ivec2(glm::floor(lo)) - 1, ivec2(0), ivec2(width, height));
-  r.hi = glm::clamp(ivec2(glm::ceil(hi)) + 1, ivec2(0), ivec2(width, height));
-  return r;
-}
-
-bool overlap(const PixelRect& a, const PixelRect& b) {
-  return a.lo.x < b.hi.x && b.lo.x < a.hi.x && a.lo.y < b.hi.y && b.lo.y < a.hi.y;
 }
 
 }  // namespace
@@ -139,17 +100,14 @@ void BlendTransmissionPass::execute(PassContext& c) {
   const Scene& scene = world.scene();
   const WorldGeometry& geometry = world.geometry();
   const mat4 viewProj = view.projection * view.view;
-  const std::vector<Aabb>& bounds = cache.meshBounds(geometry);
-  std::vector<PixelRect> rects(geometry.meshes.size());
-  PixelRect covered{ivec2(out.width(), out.height()), ivec2(0)};
-  for (std::size_t m = 0; m < geometry.meshes.size(); ++m) {
-    rects[m] = windowRect(bounds[m], viewProj, out.width(), out.height());
-    if (shading::materialHasTransmission(scene.material(geometry.meshes[m].material)) &&
-        !rects[m].empty()) {
-      covered.lo = glm::min(covered.lo, rects[m].lo);
-      covered.hi = glm::max(covered.hi, rects[m].hi);
-    }
-  }
+  std::vector<PixelRect> rects;
+  const PixelRect covered = unionRect(
+      meshBounds(cache.bounds, geometry), viewProj, out.width(), out.height(),
+      [&](int m) {
+        return shading::materialHasTransmission(
+            scene.material(geometry.meshes[std::size_t(m)].material));
+      },
+      rects);
   c.count(
       "blend_scissor_pixels",
       covered.empty() ? 0.0 : double(covered.hi.x - covered.lo.x) * (covered.hi.y - covered.lo.y));
@@ -157,7 +115,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   // The slot's 0 outside the scissor (the passes below clear and write inside it only).
   clearToZero(out);
   if (covered.empty()) return;
-  const glm::ivec4 scissor(covered.lo, covered.hi - covered.lo);
+  const glm::ivec4 scissor = covered.scissor();
 
   // The first visible surface of each pixel, rebuilt once here (the mask factor and the distance
   // the forward passes' "strictly behind" test needs) rather than in every forward fragment.

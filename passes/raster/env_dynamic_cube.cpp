@@ -1,14 +1,17 @@
 #include "passes/raster/env_dynamic_cube.h"
 
 #include <optional>
+#include <vector>
 
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
+#include "engine/scene/camera_math.h"
 #include "engine/shading/shading.h"
 #include "passes/raster/fullscreen_resolve.h"
 #include "passes/raster/gbuffer_surface.h"
+#include "passes/raster/screen_rect.h"
 
 namespace diptych {
 
@@ -18,6 +21,7 @@ struct CubeCache {
   gl::Texture cube, depth;
   // Built on first use, with the scene's defines; [1] reads the G-buffer's stored surface.
   std::optional<FullscreenResolve> resolve[2];
+  std::vector<Aabb> bounds;  // world bounds per mesh (screen_rect.h meshBounds)
   void ensure(int size) {
     if (cube && cube.width() == size) return;
     cube = gl::Texture::createCube(gl::TextureFormat::RGBA32F, size);
@@ -58,11 +62,17 @@ void EnvDynamicCubePass::execute(PassContext& c) {
   const float znear = 1e-4f * std::max(glm::length(bounds.hi - bounds.lo), 1e-30f);
 
   clearToZero(out);
-  for (const WorldMesh& mesh : world.geometry().meshes) {
+  const Camera& camera = c.frame().camera;
+  const mat4 viewProj =
+      reversedZProjection(camera, float(out.width()) / float(out.height())) * viewMatrix(camera);
+  const std::vector<Aabb>& boxes = meshBounds(cache.bounds, world.geometry());
+  for (std::size_t m = 0; m < boxes.size(); ++m) {
+    const WorldMesh& mesh = world.geometry().meshes[m];
     if (mesh.indices.empty() || !shading::materialHasReflection(scene.material(mesh.material)))
       continue;
-    Aabb box;
-    for (const vec3& p : mesh.positions) box.extend(p);
+    const Aabb& box = boxes[m];
+    // Only pixels inside the mesh's window rectangle can show it: the resolve runs there.
+    const PixelRect rect = windowRect(box, viewProj, out.width(), out.height());
     gl::ForwardOptions options;
     options.excludeInstance = mesh.instance;
     for (int face = 0; face < 6; ++face) {
@@ -75,7 +85,7 @@ void EnvDynamicCubePass::execute(PassContext& c) {
     bindSurface(c, surface_);
     resolve->program().set("uInstance", mesh.instance);
     resolve->program().set("uEye", c.frame().camera.position);
-    resolve->draw(world, out);
+    if (!rect.empty()) resolve->draw(world, out, /*multiply=*/false, rect.scissor());
   }
 }
 

@@ -4,6 +4,7 @@
 // (e.g. two bias modes side by side) share the programs; each execution renders its maps, then
 // looks them up, before the next pass runs, so sharing the map textures is safe.
 #include <array>
+#include <cstddef>
 #include <map>
 #include <utility>
 #include <vector>
@@ -64,6 +65,9 @@ class ShadowMapGl {
   gl::Framebuffer depthFbo_, lookupFbo_;
   gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle
   gl::Buffer layers_, lights_;
+  // The bytes last uploaded to layers_ and lights_: a static light's frusta are uploaded once,
+  // not every frame (an upload into a buffer that queued draws read makes llvmpipe wait for them).
+  std::vector<std::byte> uploadedLayers_, uploadedLights_;
   // One D32F array per (resolution, layers); `key` is what its contents were rendered for (the
   // slope offset among them). A sweep of the slope offset re-renders one array instead of
   // keeping one per value (a 4096 cube is 384 MiB); two passes of one graph that differ only in

@@ -29,11 +29,16 @@ struct GpuShadowLight {
 };
 static_assert(sizeof(GpuLayer) == 128 && sizeof(GpuShadowLight) == 64);
 
+// Uploads `data` unless `uploaded` (what the buffer holds) already equals it.
 template <class T>
-void uploadArray(gl::Buffer& buffer, const std::vector<T>& data) {
+void uploadArray(gl::Buffer& buffer, const std::vector<T>& data, std::vector<std::byte>& uploaded) {
   const std::size_t bytes = std::max<std::size_t>(sizeof(T), data.size() * sizeof(T));
+  const auto* first = reinterpret_cast<const std::byte*>(data.data());
+  const std::vector<std::byte> now(first, first + data.size() * sizeof(T));
+  if (buffer.id() && buffer.size() >= bytes && now == uploaded) return;
   if (!buffer.id() || buffer.size() < bytes) buffer = gl::Buffer::create(bytes);
   if (!data.empty()) buffer.upload(0, data.size() * sizeof(T), data.data());
+  uploaded = now;
 }
 
 }  // namespace
@@ -71,8 +76,8 @@ void ShadowMapGl::uploadFrusta(const std::vector<LightFrustum>& frusta, const Se
     lights.push_back({int(f.kind), f.firstLayer, f.layers, 0, vec4(f.position, f.zNear),
                       vec4(f.direction, f.zFar), vec4(f.texelScale, f.lightSize, 0.f, 0.f)});
   }
-  uploadArray(layers_, layers);
-  uploadArray(lights_, lights);
+  uploadArray(layers_, layers, uploadedLayers_);
+  uploadArray(lights_, lights, uploadedLights_);
 }
 
 const gl::Program& ShadowMapGl::lookupProgram(RenderWorld& world, ViewKind kind, const Settings& s,
