@@ -146,6 +146,23 @@ SHADING_FN float safeLength(vec3 v) {
   return min(m * sqrt(dot(s, s)), SHADING_FLT_MAX);
 }
 
+// |v| and v / |v| together: safeLength(v) and safeNormalize(v) bit for bit, with the scaled vector
+// and its squared length formed once (sampleLight needs both per light and point: the divisions
+// were the largest cost of the CPU shade loop, perf, issue 14). A zero, huge-overflowing or
+// non-finite v gives the zero direction, as safeNormalize.
+struct LengthAndDirection {
+  float magnitude;
+  vec3 direction;
+};
+SHADING_FN LengthAndDirection safeLengthAndDirection(vec3 v) {
+  float m = maxAbsComponent(v);
+  if (!(m > 0.0f)) return LengthAndDirection(0.0f, vec3(0.0f));
+  if (!(m <= SHADING_FLT_MAX)) return LengthAndDirection(SHADING_FLT_MAX, vec3(0.0f));
+  vec3 s = v / m;
+  float ss = dot(s, s);
+  return LengthAndDirection(min(m * sqrt(ss), SHADING_FLT_MAX), s * inversesqrt(ss));
+}
+
 // x clamped to [0, 1], with NaN mapped to 0 (GLSL leaves clamp(NaN) undefined).
 SHADING_FN float saturate01(float x) {
   return x > 0.0f ? min(x, 1.0f) : 0.0f;
@@ -243,9 +260,9 @@ SHADING_FN LightSample sampleLight(ShadingLight light, vec3 p) {
     vec3 ld = safeNormalize(-light.direction);
     return LightSample(ld, SHADING_FLT_MAX, maxAbsComponent(ld) > 0.0f ? emitted : vec3(0.0f));
   }
-  vec3 toLight = light.position - p;
-  float d = safeLength(toLight);
-  vec3 l = safeNormalize(toLight);
+  LengthAndDirection toLight = safeLengthAndDirection(light.position - p);
+  float d = toLight.magnitude;
+  vec3 l = toLight.direction;
   if (!(d > 0.0f) || maxAbsComponent(l) == 0.0f) {
     return LightSample(vec3(0.0f), 0.0f, vec3(0.0f));
   }
