@@ -146,18 +146,27 @@ SHADING_FN float safeLength(vec3 v) {
   return min(m * sqrt(dot(s, s)), SHADING_FLT_MAX);
 }
 
-// |v| and v / |v| together: safeLength(v) and safeNormalize(v) bit for bit, with the scaled vector
-// and its squared length formed once (sampleLight needs both per light and point: the divisions
-// were the largest cost of the CPU shade loop, perf, issue 14). A zero, huge-overflowing or
-// non-finite v gives the zero direction, as safeNormalize.
+// |v| and v / |v| together, for sampleLight (per light and shading point: its divisions were the
+// largest cost of the CPU shade loop, perf, issue 14). Where the largest component m is in
+// [2^-60, 2^60] the squares neither overflow (3 * 2^120 < FLT_MAX) nor leave the normal range
+// (2^-120 > FLT_MIN): |v| and v / |v| are formed directly, without the scaling's three divisions
+// (within rounding of safeLength and safeNormalize, docs/ray-tracing.md "Shading model").
+// Outside it, safeLength(v) and safeNormalize(v) bit for bit; a zero or non-finite v gives the
+// zero direction.
 struct LengthAndDirection {
   float magnitude;
   vec3 direction;
 };
+const float SHADING_UNSCALED_MIN = 8.67361738e-19f;  // 2^-60
+const float SHADING_UNSCALED_MAX = 1.15292150e18f;   // 2^60
 SHADING_FN LengthAndDirection safeLengthAndDirection(vec3 v) {
   float m = maxAbsComponent(v);
   if (!(m > 0.0f)) return LengthAndDirection(0.0f, vec3(0.0f));
   if (!(m <= SHADING_FLT_MAX)) return LengthAndDirection(SHADING_FLT_MAX, vec3(0.0f));
+  if (m >= SHADING_UNSCALED_MIN && m <= SHADING_UNSCALED_MAX) {
+    float vv = dot(v, v);
+    return LengthAndDirection(sqrt(vv), v * inversesqrt(vv));
+  }
   vec3 s = v / m;
   float ss = dot(s, s);
   return LengthAndDirection(min(m * sqrt(ss), SHADING_FLT_MAX), s * inversesqrt(ss));
