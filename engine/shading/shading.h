@@ -36,7 +36,7 @@ using glm::vec4;
 // Inlined, the copies vanish. Every operation and its order are the same, so results are too.
 #define SHADING_FN inline __attribute__((always_inline))
 // directTerm's precondition: n, v, l unit (or zero). 1e-3 on |v|^2 admits every float rounding
-// of a normalised vector and catches a forgotten normalisation (docs/shading.md).
+// of a normalised vector and catches a forgotten normalisation (docs/ray-tracing.md).
 #define SHADING_ASSERT_UNIT(v) \
   assert(dot(v, v) == 0.0f || (dot(v, v) > 0.999f && dot(v, v) < 1.001f))
 #include "shaders/common/shading.glsl"
