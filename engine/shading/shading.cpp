@@ -25,13 +25,6 @@ ShadingLight toShadingLight(const Light& light) {
                       std::cos(light.outerConeAngle), area);
 }
 
-ShadingMaterial toShadingMaterial(const Material& m) {
-  return ShadingMaterial(m.color, m.ka, m.kd, m.ks, m.exponent, m.specularColor, m.kps,
-                         m.mirrorColor, m.kt, m.transmitColor, m.emission, m.ior, m.alpha,
-                         int(m.model), vec3(m.baseColorFactor), m.metallicFactor, m.roughnessFactor,
-                         m.transmissionFactor, m.specularWeight, m.specularTint);
-}
-
 bool materialHasReflection(const Material& m, bool lobe) {
   ShadingMaterial s = toShadingMaterial(m);
   if (m.metallicRoughnessTexture >= 0) s.roughness = 0.f;

@@ -2,6 +2,8 @@
 // The shared shading model (shaders/common/shading.glsl) compiled as C++ through GLM, in
 // namespace diptych::shading, plus converters from the scene's Light and Material.
 // The prelude below is all the C++ side needs; the subset rules are at the top of the .glsl.
+#include <cassert>
+
 #include <glm/glm.hpp>
 
 #include "engine/scene/scene.h"
@@ -33,7 +35,12 @@ using glm::vec4;
 // then reloaded it field by field (perf annotate of sampleLight and directTerm, issue 14).
 // Inlined, the copies vanish. Every operation and its order are the same, so results are too.
 #define SHADING_FN inline __attribute__((always_inline))
+// directTerm's precondition: n, v, l unit (or zero). 1e-3 on |v|^2 admits every float rounding
+// of a normalised vector and catches a forgotten normalisation (docs/ray-tracing.md).
+#define SHADING_ASSERT_UNIT(v) \
+  assert(dot(v, v) == 0.0f || (dot(v, v) > 0.999f && dot(v, v) < 1.001f))
 #include "shaders/common/shading.glsl"
+#undef SHADING_ASSERT_UNIT
 #undef SHADING_FN
 #undef in
 
@@ -49,8 +56,15 @@ static_assert(SHADING_MODEL_LECTURE == int(ShadingModel::Lecture) &&
 ShadingLight toShadingLight(const Light& light);
 
 // The material's constant parameters; textures and the checker are NOT applied here (see
-// engine/rt/surface_point.h, which resolves them at a point).
-ShadingMaterial toShadingMaterial(const Material& material);
+// engine/rt/surface_point.h, which resolves them at a point). Inline: resolveMaterial runs it per
+// shading point, and out of line the ~100-byte result went through the stack before being copied
+// into the surface point (perf of the hybrid's shade, issue 14); inlined it is built in place.
+inline ShadingMaterial toShadingMaterial(const Material& m) {
+  return ShadingMaterial(m.color, m.ka, m.kd, m.ks, m.exponent, m.specularColor, m.kps,
+                         m.mirrorColor, m.kt, m.transmitColor, m.emission, m.ior, m.alpha,
+                         int(m.model), vec3(m.baseColorFactor), m.metallicFactor, m.roughnessFactor,
+                         m.transmissionFactor, m.specularWeight, m.specularTint);
+}
 
 // Whether some point of the material has a reflection / transmission signal (hasReflection /
 // hasTransmission of shading.glsl, by the material's own model), for passes that select meshes

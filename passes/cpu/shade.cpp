@@ -2,6 +2,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <new>
+#include <type_traits>
+
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
@@ -13,6 +16,8 @@
 
 namespace diptych {
 namespace {
+
+static_assert(std::is_trivially_destructible_v<SurfacePoint>);  // placement new in the row loop
 
 // The texture_filtering slot's C and coverage replace shade's own level-0 lookup (a = -1: none
 // there). Not for materials whose metallic-roughness texture re-maps C per texel: the signal is
@@ -90,7 +95,10 @@ void ShadePass::execute(PassContext& c) {
       const auto hit = exact.at(x, y);
       covered[x] = hit.has_value();
       if (!hit) continue;
-      points[x] = makeSurfacePoint(scene, world.geometry(), *hit, eyes[x]);
+      // Built in place (the prvalue initialises the slot: C++17 guaranteed elision); assigned,
+      // the ~250-byte point went through a stack temporary and was copied (perf, issue 14).
+      // SurfacePoint is trivially destructible, so the slot's old value needs no destructor.
+      ::new (&points[x]) SurfacePoint(makeSurfacePoint(scene, world.geometry(), *hit, eyes[x]));
       if (albedoRow) applyAlbedo(points[x], scene, albedoRow, x);
     }
     for (int x = 0; x < frame.width; ++x) {

@@ -44,6 +44,12 @@
 #define SHADING_FN
 #endif
 
+// SHADING_ASSERT_UNIT(v): the unit-vector precondition of directTerm, checked where the language
+// has an assert (engine/shading/shading.h: C++ debug builds); nothing in GLSL.
+#ifndef SHADING_ASSERT_UNIT
+#define SHADING_ASSERT_UNIT(v)
+#endif
+
 // Light types: the values of diptych::LightType (checked by a static_assert on the C++ side).
 const int LIGHT_POINT = 0;
 const int LIGHT_DIRECTIONAL = 1;
@@ -140,6 +146,32 @@ SHADING_FN float safeLength(vec3 v) {
   return min(m * sqrt(dot(s, s)), SHADING_FLT_MAX);
 }
 
+// |v| and v / |v| together, for sampleLight (per light and shading point: its divisions were the
+// largest cost of the CPU shade loop, perf, issue 14). Where the largest component m is in
+// [2^-60, 2^60] the squares neither overflow (3 * 2^120 < FLT_MAX) nor leave the normal range
+// (2^-120 > FLT_MIN): |v| and v / |v| are formed directly, without the scaling's three divisions
+// (within rounding of safeLength and safeNormalize, docs/ray-tracing.md "Shading model").
+// Outside it, safeLength(v) and safeNormalize(v) bit for bit; a zero or non-finite v gives the
+// zero direction.
+struct LengthAndDirection {
+  float magnitude;
+  vec3 direction;
+};
+const float SHADING_UNSCALED_MIN = 8.67361738e-19f;  // 2^-60
+const float SHADING_UNSCALED_MAX = 1.15292150e18f;   // 2^60
+SHADING_FN LengthAndDirection safeLengthAndDirection(vec3 v) {
+  float m = maxAbsComponent(v);
+  if (!(m > 0.0f)) return LengthAndDirection(0.0f, vec3(0.0f));
+  if (!(m <= SHADING_FLT_MAX)) return LengthAndDirection(SHADING_FLT_MAX, vec3(0.0f));
+  if (m >= SHADING_UNSCALED_MIN && m <= SHADING_UNSCALED_MAX) {
+    float vv = dot(v, v);
+    return LengthAndDirection(sqrt(vv), v * inversesqrt(vv));
+  }
+  vec3 s = v / m;
+  float ss = dot(s, s);
+  return LengthAndDirection(min(m * sqrt(ss), SHADING_FLT_MAX), s * inversesqrt(ss));
+}
+
 // x clamped to [0, 1], with NaN mapped to 0 (GLSL leaves clamp(NaN) undefined).
 SHADING_FN float saturate01(float x) {
   return x > 0.0f ? min(x, 1.0f) : 0.0f;
@@ -147,11 +179,29 @@ SHADING_FN float saturate01(float x) {
 
 // base^e for the glossy lobe: negative bases count as 0, negative exponents as 0, 0^0 := 1
 // (the limit of x^0), so pow never sees an argument with an undefined result.
+// An integer e up to 1024 (the lecture's exponents are integers) is formed by repeated squaring
+// (binary exponentiation, Knuth, TAOCP vol. 2, 4.6.3): at most 2 log2(e) products, each rounded
+// once, so relative error <= (e - 1) 2^-24 against pow's ~1 ulp (docs/ray-tracing.md, "Shading
+// model"); the same products in GLSL and C++. A result below FLT_MIN is returned as 0 (no
+// subnormal products; pow would give the subnormal). Other exponents go to pow.
 SHADING_FN float safePow(float base, float e) {
   float b = base > 0.0f ? base : 0.0f;
   float x = e > 0.0f ? e : 0.0f;
   if (x == 0.0f) return 1.0f;
   if (b == 0.0f) return 0.0f;
+  if (x <= 1024.0f && x == floor(x)) {
+    int k = int(x);
+    float r = 1.0f;
+    float p = min(b, SHADING_FLT_MAX);
+    while (true) {
+      if ((k & 1) != 0) r = r * p;
+      k = k >> 1;
+      if (k == 0) break;
+      if (p < 1.0e-19f) return 0.0f;  // p^2 < FLT_MIN, and p^2 is a factor still to come
+      p = min(p * p, SHADING_FLT_MAX);
+    }
+    return min(r, SHADING_FLT_MAX);
+  }
   return min(pow(b, x), SHADING_FLT_MAX);
 }
 
@@ -219,9 +269,9 @@ SHADING_FN LightSample sampleLight(ShadingLight light, vec3 p) {
     vec3 ld = safeNormalize(-light.direction);
     return LightSample(ld, SHADING_FLT_MAX, maxAbsComponent(ld) > 0.0f ? emitted : vec3(0.0f));
   }
-  vec3 toLight = light.position - p;
-  float d = safeLength(toLight);
-  vec3 l = safeNormalize(toLight);
+  LengthAndDirection toLight = safeLengthAndDirection(light.position - p);
+  float d = toLight.magnitude;
+  vec3 l = toLight.direction;
   if (!(d > 0.0f) || maxAbsComponent(l) == 0.0f) {
     return LightSample(vec3(0.0f), 0.0f, vec3(0.0f));
   }
@@ -251,15 +301,20 @@ SHADING_FN LightSample sampleLight(ShadingLight light, vec3 p) {
 }
 
 // The lecture's DIRECTA: k_a C + k_d C max(0, n.l) + k_s d_i max(0, r.v)^e (see the header for
-// the n.l > 0 gate on the glossy term). n, v, l need not be normalised; zero vectors give 0
-// for the terms that need them.
+// the n.l > 0 gate on the glossy term).
+// Precondition (issue 14): n, v, l are unit vectors (or zero: a zero l, sampleLight's "no
+// direction", gives 0 for the terms that need it). Every caller already has them unit: the
+// shading normal (makeSurfacePoint, the G-buffer), v = -(unit ray direction), l from sampleLight;
+// re-normalising them here cost 12 divisions and 3 square roots per light and changed only the
+// last bits (docs/ray-tracing.md, "Shading model"). SHADING_ASSERT_UNIT checks it in C++ debug
+// builds.
 SHADING_FN vec3 directTerm(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
-  vec3 N = safeNormalize(n);
-  vec3 V = safeNormalize(v);
-  vec3 L = safeNormalize(l);
-  float nl = saturate01(dot(N, L));
-  vec3 r = reflectAbout(L, N);
-  float rv = saturate01(dot(r, V));
+  SHADING_ASSERT_UNIT(n);
+  SHADING_ASSERT_UNIT(v);
+  SHADING_ASSERT_UNIT(l);
+  float nl = saturate01(dot(n, l));
+  vec3 r = reflectAbout(l, n);
+  float rv = saturate01(dot(r, v));
   float glossy = nl > 0.0f ? safePow(rv, m.exponent) : 0.0f;
   return m.ka * m.color + m.kd * m.color * nl + m.ks * m.specularColor * glossy;
 }
@@ -267,8 +322,9 @@ SHADING_FN vec3 directTerm(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
 #include "pbr.glsl"
 
 // The material's response to one light per unit of S_i: the lecture's DIRECTA or the glTF
-// BRDF's pi f(l, v) max(0, n.l) (pbr.glsl), by m.model. The one place the model is chosen for
-// direct light; the path tracer's next-event estimation calls it too.
+// BRDF's pi f(l, v) max(0, n.l) (pbr.glsl), by m.model. n, v, l unit, as directTerm requires.
+// The one place the model is chosen for direct light; the path tracer's next-event estimation
+// calls it too.
 SHADING_FN vec3 directResponse(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
   if (m.model == SHADING_MODEL_GLTF) return pbrDirect(m, n, v, l);
   return directTerm(m, n, v, l);

@@ -62,6 +62,21 @@ TEST(Shading, DiffuseUnderPointLightIsKdCCosOverDistanceSquared) {
   EXPECT_EQ(lightContribution(m, n, vec3(0, 0, 1), s, 0.f), vec3(0.f));
 }
 
+// directTerm's precondition (unit n, v, l, or zero) is checked in debug builds: a forgotten
+// normalisation aborts there instead of shading with a scaled dot product.
+TEST(Shading, DirectTermChecksUnitInputsInDebugBuilds) {
+#ifdef NDEBUG
+  GTEST_SKIP() << "the precondition is an assert: checked in debug builds only";
+#else
+  const ShadingMaterial m = material(0.1f, 0.5f, 0.5f, 10.f);
+  const vec3 n(0, 0, 1), l = dirAt(45 * kDeg);
+  EXPECT_EQ(directTerm(m, n, n, vec3(0.f)), m.ka * m.color);  // zero l: allowed, no direction
+  EXPECT_DEATH(directTerm(m, 2.f * n, n, l), "");
+  EXPECT_DEATH(directTerm(m, n, 0.5f * n, l), "");
+  EXPECT_DEATH(directTerm(m, n, n, 3.f * l), "");
+#endif
+}
+
 TEST(Shading, GlossyUsesTheMirrorDirectionOfL) {
   const ShadingMaterial m = material(0.f, 0.f, 0.5f, 10.f);
   const vec3 n(0, 0, 1), l = dirAt(45 * kDeg);
@@ -232,7 +247,10 @@ TEST(Shading, NoNaNOrInfOverRandomAndExtremeInputs) {
         << i << " type " << sl.type << " l " << s.l.x << "," << s.l.y << "," << s.l.z << " d "
         << s.distance << " S " << s.radiance.x << " p " << p.x << "," << p.y << "," << p.z
         << " light " << sl.position.x << "," << sl.position.y << "," << sl.position.z;
-    const vec3 L = lightContribution(m, n, v, s, U(rng) * 2.f) + emittedAndAmbient(m, vec3(0.1f));
+    // lightContribution takes unit n, v (directTerm's precondition); refractLecture below gets
+    // the raw ones.
+    const vec3 L = lightContribution(m, safeNormalize(n), safeNormalize(v), s, U(rng) * 2.f) +
+                   emittedAndAmbient(m, vec3(0.1f));
     ASSERT_TRUE(finite(L)) << i;
     ASSERT_GE(std::min(L.x, std::min(L.y, L.z)), 0.f) << i;
     const Refraction r = refractLecture(v, n, std::abs(specials[pick(rng)]) + U(rng));

@@ -76,8 +76,10 @@ struct Case {
   // The C++ evaluation, in the shader's output order.
   std::array<float, kOutStride> evaluate() const {
     const LightSample s = sampleLight(light, p);
-    const vec3 direct = directTerm(material, n, v, s.l);
-    const vec3 contribution = lightContribution(material, n, v, s, visibility);
+    // directTerm's precondition: unit n, v (normalised as the shader does).
+    const vec3 un = safeNormalize(n), uv = safeNormalize(v);
+    const vec3 direct = directTerm(material, un, uv, s.l);
+    const vec3 contribution = lightContribution(material, un, uv, s, visibility);
     const Refraction t = refractLecture(d, n, eta);
     const vec3 r = reflectAbout(d, n);
     const float f = fresnelSchlick(cosTheta, n1, n2);

@@ -30,8 +30,10 @@ void main() {
   float visibility = at(47), eta = at(48), cosTheta = at(49), n1 = at(50), n2 = at(54);
 
   LightSample s = sampleLight(light, p);
-  vec3 direct = directTerm(m, n, v, s.l);
-  vec3 contribution = lightContribution(m, n, v, s, visibility);
+  // directTerm takes unit n, v (its precondition): the raw vectors are normalised here, as in
+  // the C++ evaluation, so extreme inputs still reach it through safeNormalize.
+  vec3 direct = directTerm(m, safeNormalize(n), safeNormalize(v), s.l);
+  vec3 contribution = lightContribution(m, safeNormalize(n), safeNormalize(v), s, visibility);
   Refraction t = refractLecture(d, n, eta);
   vec3 r = reflectAbout(d, n);
   float f = fresnelSchlick(cosTheta, n1, n2);
