@@ -64,6 +64,7 @@ const int SHADING_MODEL_LECTURE = 0;
 const int SHADING_MODEL_GLTF = 1;
 
 const float SHADING_FLT_MAX = 3.402823466e+38f;
+const float SHADING_FLT_MIN = 1.175494351e-38f;  // 2^-126, the smallest normal float
 const float SHADING_PI = 3.14159265358979f;
 
 // A material with every texture already resolved at the point.
@@ -197,10 +198,12 @@ SHADING_FN float safePow(float base, float e) {
       if ((k & 1) != 0) r = r * p;
       k = k >> 1;
       if (k == 0) break;
-      if (p < 1.0e-19f) return 0.0f;  // p^2 < FLT_MIN, and p^2 is a factor still to come
+      if (p < 1.08420217e-19f) return 0.0f;  // p < 2^-63: p^2 < FLT_MIN, a factor still to come
       p = min(p * p, SHADING_FLT_MAX);
     }
-    return min(r, SHADING_FLT_MAX);
+    // r * p can fall below FLT_MIN with both factors normal: GPUs flush that to 0, C++ would
+    // keep a subnormal, so it is 0 on both sides.
+    return r < SHADING_FLT_MIN ? 0.0f : min(r, SHADING_FLT_MAX);
   }
   return min(pow(b, x), SHADING_FLT_MAX);
 }

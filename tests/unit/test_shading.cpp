@@ -2,6 +2,7 @@
 // refraction truths (Snell, critical angle, slab shift), and finiteness on any input.
 #include <gtest/gtest.h>
 
+#include <cfloat>
 #include <cmath>
 #include <random>
 
@@ -75,6 +76,27 @@ TEST(Shading, DirectTermChecksUnitInputsInDebugBuilds) {
   EXPECT_DEATH(directTerm(m, n, 0.5f * n, l), "");
   EXPECT_DEATH(directTerm(m, n, n, 3.f * l), "");
 #endif
+}
+
+// safePow's integer path (repeated squaring): within (e - 1) 2^-24 of the exact power, results
+// below the smallest normal float are 0 (as a GPU's flush to zero gives), and the edge cases.
+TEST(Shading, SafePowIntegerExponentsAreExactPowersWithinTheirRoundingBound) {
+  for (const float e : {1.f, 2.f, 3.f, 10.f, 64.f, 255.f, 1000.f, 1024.f}) {
+    for (const float b : {0.3f, 0.5f, 0.9f, 0.999f, 1.f, 1.001f, 1.5f}) {
+      const double exact = std::pow(double(b), double(e));
+      if (exact < double(FLT_MIN) || exact > double(FLT_MAX)) continue;
+      EXPECT_NEAR(safePow(b, e) / exact, 1.0, double(e) * 0x1p-24) << b << "^" << e;
+    }
+  }
+  EXPECT_EQ(safePow(0.f, 0.f), 1.f);         // 0^0 := 1
+  EXPECT_EQ(safePow(0.f, 10.f), 0.f);        // base 0
+  EXPECT_EQ(safePow(-0.5f, 3.f), 0.f);       // negative bases count as 0
+  EXPECT_EQ(safePow(0.5f, -2.f), 1.f);       // negative exponents count as 0
+  EXPECT_EQ(safePow(1e-4f, 10.f), 0.f);      // 1e-40: below FLT_MIN, 0 (not a subnormal)
+  EXPECT_EQ(safePow(0.01f, 20.f), 0.f);      // likewise, via a factor p in [2^-63, 1.084e-19]
+  EXPECT_EQ(safePow(2.f, 1000.f), FLT_MAX);  // clamped, not inf
+  // 1025 is past the integer path: pow, the same value within a float's rounding.
+  EXPECT_NEAR(safePow(0.999f, 1025.f) / std::pow(double(0.999f), 1025.0), 1.0, 1e-5);
 }
 
 TEST(Shading, GlossyUsesTheMirrorDirectionOfL) {
