@@ -56,10 +56,10 @@ void RtShadowsPass::execute(PassContext& c) {
     column.resize(std::size_t(w));
     visibility.resize(std::size_t(w) * lightCount);
     std::size_t n = 0;
+    const SurfaceHit* hit = exact.row(y);
     for (int x = 0; x < w; ++x) {
-      const auto hit = exact.at(x, y);
-      if (!hit) continue;
-      receivers[n] = shadowReceiver(world.geometry(), *hit);
+      if (hit[x].instance < 0) continue;
+      receivers[n] = shadowReceiver(world.geometry(), hit[x]);
       seeds[n] = std::uint32_t(y * w + x);
       column[n++] = x;
     }
