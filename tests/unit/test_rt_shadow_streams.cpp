@@ -1,7 +1,8 @@
 // traceShadowRays generates its rays straight into per-thread stream tiles (engine/rt/
 // shadow_rays.cpp); it must give exactly what the single-ray lightVisibility gives for the same
 // receivers and seeds, whatever the tiling (one ray per receiver, or many area samples that
-// straddle tile boundaries).
+// straddle tile boundaries); traceShadowTile, rt_shadows' per-row streams, must give exactly
+// what traceShadowRays gives.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,33 +82,15 @@ TEST(ShadowStreams, TileEqualsBatchForAnyRunOfReceivers) {
 }
 
 TEST(ShadowStreams, BatchEqualsSingleRayVisibilityForPointAreaAndNonCastingLights) {
-  const Scene scene = testgeo::sceneOf(
-      {testgeo::uvSphere(vec3(0.f, 2.f, 0.f), 1.f, 48, 24), testgeo::groundPlane(10.f)});
-  const WorldGeometry world = flattenScene(scene);
-  RtDevice device;
-  const RtScene rt(device, world);
-
-  Light point;
-  point.position = vec3(0.3f, 6.f, 0.2f);
-  Light quad;
-  quad.type = LightType::QuadArea;
-  quad.position = vec3(0.f, 6.f, 0.f);
-  quad.direction = vec3(0.f, -1.f, 0.f);
-  quad.edgeU = vec3(2.f, 0.f, 0.f);
-  quad.edgeV = vec3(0.f, 0.f, 2.f);
-  Light off = point;
-  off.castsShadows = false;
-  const std::vector<Light> lights{point, quad, off};
-
   // Receivers on the ground, some in the umbra, some in the penumbra, some lit; a few facing
   // down (their rays leave from the other side), seeds unlike their indices.
-  std::vector<ShadowReceiver> receivers;
-  std::vector<std::uint32_t> seeds;
-  for (int i = 0; i < 997; ++i) {
-    const float x = -3.f + 6.f * float(i % 37) / 36.f, z = -3.f + 6.f * float(i / 37) / 26.f;
-    receivers.push_back({vec3(x, 0.f, z), vec3(0.f, i % 11 == 0 ? -1.f : 1.f, 0.f), vec3(10.f)});
-    seeds.push_back(std::uint32_t(i * 7919 + 3));
-  }
+  const ShadowCase k = shadowCase();
+  const WorldGeometry world = flattenScene(k.scene);
+  RtDevice device;
+  const RtScene rt(device, world);
+  const std::vector<Light>& lights = k.lights;
+  const std::vector<ShadowReceiver>& receivers = k.receivers;
+  const std::vector<std::uint32_t>& seeds = k.seeds;
   for (const int samples : {1, 16, 100}) {  // 100: a receiver's rays straddle 256-ray tiles
     const std::vector<float> batch = traceShadowRays(rt, lights, receivers, samples, seeds);
     ASSERT_EQ(batch.size(), lights.size() * receivers.size());
