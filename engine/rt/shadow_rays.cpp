@@ -192,4 +192,51 @@ std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lig
   return visibility;
 }
 
+void traceShadowTile(const RtScene& rt, std::span<const Light> lights,
+                     std::span<const ShadowReceiver> receivers, int areaSamples,
+                     std::span<const std::uint32_t> seeds, std::span<float> visibility) {
+  const std::size_t n = receivers.size(), lightCount = lights.size();
+  if (visibility.size() < n * lightCount)
+    throw Error("traceShadowTile: visibility holds " + std::to_string(visibility.size()) +
+                " values, not " + std::to_string(n * lightCount));
+  // Counts first (exact in float far beyond any ray count here), fractions at the end: the
+  // same float(visible) / float(count) as traceShadowRays.
+  std::fill_n(visibility.begin(), n * lightCount, 0.f);
+  RTCRay tile[kTileRays];
+  std::uint32_t owner[kTileRays];  // index into visibility of each ray's receiver and light
+  bool active[kTileRays];
+  std::size_t filled = 0;
+  const auto flush = [&] {
+    rt.occludedTile({tile, filled}, true);
+    for (std::size_t i = 0; i < filled; ++i)
+      visibility[owner[i]] += active[i] && tile[i].tfar < 0.f ? 0.f : 1.f;
+    filled = 0;
+  };
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::uint32_t seed = seeds.empty() ? std::uint32_t(p) : seeds[p];
+    for (std::size_t l = 0; l < lightCount; ++l) {
+      const Light& light = lights[l];
+      const std::size_t slot = p * lightCount + l;
+      if (!light.castsShadows) {  // every ray inactive: visible
+        visibility[slot] = 1.f;
+        continue;
+      }
+      const int count = shadowRaysPerReceiver(light, areaSamples);
+      ReceiverRays rays(light, receivers[p]);
+      for (int s = 0; s < count; ++s) {
+        const OcclusionRay ray = rays.sample(s, count, seed);
+        tile[filled] = toEmbreeRay(ray);
+        owner[filled] = std::uint32_t(slot);
+        active[filled] = ray.tnear <= ray.tfar;
+        if (++filled == kTileRays) flush();
+      }
+    }
+  }
+  if (filled > 0) flush();
+  for (std::size_t p = 0; p < n; ++p)
+    for (std::size_t l = 0; l < lightCount; ++l)
+      if (lights[l].castsShadows)
+        visibility[p * lightCount + l] /= float(shadowRaysPerReceiver(lights[l], areaSamples));
+}
+
 }  // namespace diptych

@@ -70,4 +70,15 @@ std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lig
                                    std::span<const ShadowReceiver> receivers, int areaSamples = 1,
                                    std::span<const std::uint32_t> seeds = {});
 
+// traceShadowRays for a run of receivers on the calling thread, every light at once:
+// visibility[p * lights.size() + l] for receiver p and light l (receiver-major, as a pass
+// writes a pixel's lights together). The rays are generated straight into a stack tile in
+// receiver, light, sample order and traced as coherent Embree streams (rtcOccluded1M) of up to
+// 256, as WhittedTracer::radianceTile traces a tile's shadow rays: no per-frame ray, receiver or
+// result arrays. The same rays and fractions as traceShadowRays for the same seeds (seeds[p],
+// the receiver index when empty).
+void traceShadowTile(const RtScene& rt, std::span<const Light> lights,
+                     std::span<const ShadowReceiver> receivers, int areaSamples,
+                     std::span<const std::uint32_t> seeds, std::span<float> visibility);
+
 }  // namespace diptych

@@ -37,6 +37,9 @@ class ExactHitBuffer {
     const SurfaceHit& h = hits_[std::size_t(y) * std::size_t(width_) + std::size_t(x)];
     return h.instance < 0 ? std::nullopt : std::optional<SurfaceHit>(h);
   }
+  // Row y's hits (width() of them; instance -1: background), for per-pixel loops that would
+  // otherwise copy each hit into an optional.
+  const SurfaceHit* row(int y) const { return hits_.data() + std::size_t(y) * std::size_t(width_); }
   int width() const { return width_; }
   int height() const { return height_; }
   // How many times this buffer was (re)built: once per frame and hits resource, or per distinct

@@ -58,6 +58,8 @@ void RtSecondaryPass::execute(PassContext& c) {
   DIPTYCH_CHECK(
       out.channels() == 4 && out.desc.width == frame.width && out.desc.height == frame.height,
       "rt_secondary: the signal is not RGBA32F of the frame's size");
+  DIPTYCH_CHECK(exact.width() == frame.width && exact.height() == frame.height,
+                "rt_secondary: the hits are not of the frame's size");
   tbb::parallel_for(0, frame.height, [&](int y) {
     // The row's address once (per-texel setF recomputes the stride and the index).
     std::uint32_t* row = out.row(y);
@@ -82,13 +84,13 @@ void RtSecondaryPass::execute(PassContext& c) {
       for (std::size_t i = 0; i < filled; ++i) store(pixel[i], radiance[i]);
       filled = 0;
     };
+    const SurfaceHit* hit = exact.row(y);
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
       beginSdfPixel();
-      const auto hit = exact.at(x, y);
-      if (hit && candidate[std::size_t(hit->instance)]) {
+      if (hit[x].instance >= 0 && candidate[std::size_t(hit[x].instance)]) {
         const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
-        const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), *hit, eye.direction);
+        const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction);
         // Per point, as Whitted decides (a texture may make this texel rough or not metal).
         if (reflection ? shading::hasReflection(p.resolved, false)
                        : shading::hasTransmission(p.resolved)) {

@@ -1,9 +1,11 @@
 #include "passes/rt/rt_shadows.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <atomic>
 #include <bit>
+#include <vector>
 
 #include "engine/core/check.h"
 #include "engine/graph/render_world.h"
@@ -31,46 +33,49 @@ void RtShadowsPass::execute(PassContext& c) {
   const auto& lights = world.scene().lights;
   const RtScene& rt = world.rtScene();
 
-  // Receivers for covered pixels only, built in parallel per row, then compacted in order.
-  rowCount_.assign(std::size_t(h) + 1, 0);
-  tbb::parallel_for(0, h, [&](int y) {
-    const std::uint32_t* row = hits.row(y);
-    const std::size_t stride = std::size_t(hits.channels());
-    int count = 0;
-    for (int x = 0; x < w; ++x) count += row[std::size_t(x) * stride] != 0u ? 1 : 0;
-    rowCount_[std::size_t(y) + 1] = count;
-  });
-  for (int y = 0; y < h; ++y) rowCount_[y + 1] += rowCount_[y];
-  const std::size_t n = std::size_t(rowCount_[h]);
-  pixelOf_.resize(n);  // pixel index: also the area-light sample seed
-  receivers_.resize(n);
-  const ExactHitBuffer& exact = exactHits(c, io_.hits);
-  tbb::parallel_for(0, h, [&](int y) {
-    std::size_t i = std::size_t(rowCount_[y]);
-    for (int x = 0; x < w; ++x) {
-      const auto hit = exact.at(x, y);
-      if (!hit) continue;
-      receivers_[i] = shadowReceiver(world.geometry(), *hit);
-      pixelOf_[i++] = std::uint32_t(y * w + x);
-    }
-  });
-  const std::vector<float> visibility =
-      traceShadowRays(rt, lights, receivers_, areaSamples_, pixelOf_);
-  out.fill(vec4(1.f));
   // The row-pointer writes below assume one float per texel, the frame's size, a layer a light.
   DIPTYCH_CHECK(out.channels() == 1 && out.desc.width == w && out.desc.height == h &&
                     out.desc.layers >= int(lights.size()),
                 "rt_shadows: visibility is not R32F of the frame's size with a layer per light");
-  for (std::size_t l = 0; l < lights.size(); ++l) {
-    // Layer l is R32F: pixel p's texel is word p of the layer.
-    std::uint32_t* layer = out.row(0, int(l));
-    const float* v = visibility.data() + l * n;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i < r.end(); ++i)
-                          layer[pixelOf_[i]] = std::bit_cast<std::uint32_t>(v[i]);
-                      });
-  }
+  const ExactHitBuffer& exact = exactHits(c, io_.hits);
+  const std::size_t lightCount = lights.size();
+  std::atomic<std::size_t> covered{0};
+  // One pass over the frame, row by row: each covered pixel's receiver built in place, its
+  // shadow rays traced in coherent streams with its row's (traceShadowTile, as the Whitted
+  // reference traces a tile's), the row's texels written once. Before, a counting pass, a
+  // frame-sized receiver array, a stream per light over it, a fill of every layer and a scatter
+  // per light: four more passes over the frame's memory.
+  tbb::parallel_for(0, h, [&](int y) {
+    // Per thread, reused row after row (the width's worth: no allocation per row).
+    thread_local std::vector<ShadowReceiver> receivers;
+    thread_local std::vector<std::uint32_t> seeds;  // pixel index, as the Whitted tracer's
+    thread_local std::vector<int> column;
+    thread_local std::vector<float> visibility;
+    receivers.resize(std::size_t(w));
+    seeds.resize(std::size_t(w));
+    column.resize(std::size_t(w));
+    visibility.resize(std::size_t(w) * lightCount);
+    std::size_t n = 0;
+    const SurfaceHit* hit = exact.row(y);
+    for (int x = 0; x < w; ++x) {
+      if (hit[x].instance < 0) continue;
+      receivers[n] = shadowReceiver(world.geometry(), hit[x]);
+      seeds[n] = std::uint32_t(y * w + x);
+      column[n++] = x;
+    }
+    traceShadowTile(rt, lights, {receivers.data(), n}, areaSamples_, {seeds.data(), n}, visibility);
+    for (std::size_t l = 0; l < lightCount; ++l) {
+      // Layer l is R32F: pixel x's texel is word x of the row; uncovered pixels are visible.
+      std::uint32_t* row = out.row(y, int(l));
+      std::fill_n(row, w, std::bit_cast<std::uint32_t>(1.f));
+      for (std::size_t i = 0; i < n; ++i)
+        row[column[i]] = std::bit_cast<std::uint32_t>(visibility[i * lightCount + l]);
+    }
+    for (int l = int(lightCount); l < out.desc.layers; ++l)  // layers beyond the lights: visible
+      std::fill_n(out.row(y, l), w, std::bit_cast<std::uint32_t>(1.f));
+    covered.fetch_add(n, std::memory_order_relaxed);
+  });
+  const std::size_t n = covered.load();
   std::size_t active = 0;
   for (const Light& light : lights)
     active += light.castsShadows ? n * std::size_t(shadowRaysPerReceiver(light, areaSamples_)) : 0;
