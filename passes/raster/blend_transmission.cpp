@@ -26,7 +26,6 @@ struct BlendCache {
   // Compiled for the world's scene on first use; [1] reads the G-buffer's stored surface.
   std::optional<FullscreenResolve> firstSurface[2];
   std::optional<FullscreenResolve> mask;
-  std::vector<Aabb> bounds;  // world bounds per mesh (screen_rect.h meshBounds)
   void ensure(int width, int height) {
     if (depth && depth.width() == width && depth.height() == height) return;
     depth = gl::Texture::create2D(gl::TextureFormat::D32F, width, height);
@@ -102,7 +101,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   const mat4 viewProj = view.projection * view.view;
   std::vector<PixelRect> rects;
   const PixelRect covered = unionRect(
-      meshBounds(cache.bounds, geometry), viewProj, out.width(), out.height(),
+      meshBounds(world), viewProj, out.width(), out.height(),
       [&](int m) {
         return shading::materialHasTransmission(
             scene.material(geometry.meshes[std::size_t(m)].material));

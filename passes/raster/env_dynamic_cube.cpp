@@ -21,7 +21,6 @@ struct CubeCache {
   gl::Texture cube, depth;
   // Built on first use, with the scene's defines; [1] reads the G-buffer's stored surface.
   std::optional<FullscreenResolve> resolve[2];
-  std::vector<Aabb> bounds;  // world bounds per mesh (screen_rect.h meshBounds)
   void ensure(int size) {
     if (cube && cube.width() == size) return;
     cube = gl::Texture::createCube(gl::TextureFormat::RGBA32F, size);
@@ -65,19 +64,24 @@ void EnvDynamicCubePass::execute(PassContext& c) {
   const Camera& camera = c.frame().camera;
   const mat4 viewProj =
       reversedZProjection(camera, float(out.width()) / float(out.height())) * viewMatrix(camera);
-  const std::vector<Aabb>& boxes = meshBounds(cache.bounds, world.geometry());
+  const std::vector<Aabb>& boxes = meshBounds(world);
+  int faceRenders = 0;  // counter for tests: off-screen meshes render none
   for (std::size_t m = 0; m < boxes.size(); ++m) {
     const WorldMesh& mesh = world.geometry().meshes[m];
     if (mesh.indices.empty() || !shading::materialHasReflection(scene.material(mesh.material)))
       continue;
     const Aabb& box = boxes[m];
-    // Only pixels inside the mesh's window rectangle can show it: the resolve runs there.
+    // Only pixels inside the mesh's window rectangle can show it: the resolve runs there, and a
+    // mesh whose rectangle is empty (wholly off screen) shows in no pixel, so its six face
+    // renders are skipped (the image is the same: the resolve would write nothing).
     const PixelRect rect = windowRect(box, viewProj, out.width(), out.height());
+    if (rect.empty()) continue;
     gl::ForwardOptions options;
     options.excludeInstance = mesh.instance;
     for (int face = 0; face < 6; ++face) {
       renderer.render(world.forwardScene(), gl::cubeFaceView(box.center(), face, znear), cache.cube,
                       cache.depth, options, face);
+      ++faceRenders;
     }
     gl::glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     gl::glBindTextureUnit(0, hits.id());
@@ -85,8 +89,9 @@ void EnvDynamicCubePass::execute(PassContext& c) {
     bindSurface(c, surface_);
     resolve->program().set("uInstance", mesh.instance);
     resolve->program().set("uEye", c.frame().camera.position);
-    if (!rect.empty()) resolve->draw(world, out, /*multiply=*/false, rect.scissor());
+    resolve->draw(world, out, /*multiply=*/false, rect.scissor());
   }
+  c.count("cube_face_renders", double(faceRenders));
 }
 
 }  // namespace diptych

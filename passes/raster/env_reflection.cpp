@@ -54,8 +54,6 @@ struct EnvReflectionGl {
         .first->second;
   }
 
-  std::vector<Aabb> bounds;  // world bounds per mesh (screen_rect.h meshBounds)
-
   // env_sphere's view-independent levels per sphere-map side (sphereWorldLevels).
   std::map<int, envmap::PrefilteredCube> sphereLevels;
 
@@ -186,7 +184,7 @@ void EnvReflectionPass::execute(PassContext& c) {
       reversedZProjection(camera, float(out.width()) / float(out.height())) * viewMatrix(camera);
   std::vector<PixelRect> rects;
   const PixelRect covered = unionRect(
-      meshBounds(state.bounds, geometry), viewProj, out.width(), out.height(),
+      meshBounds(world), viewProj, out.width(), out.height(),
       [&](int m) {
         return shading::materialHasReflection(
             scene.material(geometry.meshes[std::size_t(m)].material), lobe);

@@ -11,6 +11,8 @@
 
 namespace diptych {
 
+class RenderWorld;
+
 // Window rectangle [lo, hi) (pixels, GL window coordinates, origin bottom left).
 struct PixelRect {
   ivec2 lo{0}, hi{0};
@@ -25,8 +27,9 @@ PixelRect windowRect(const Aabb& box, const mat4& viewProj, int width, int heigh
 
 bool overlap(const PixelRect& a, const PixelRect& b);
 
-// World bounds of each mesh of `geometry` (fixed for a RenderWorld), computed on first use.
-const std::vector<Aabb>& meshBounds(std::vector<Aabb>& cache, const WorldGeometry& geometry);
+// World bounds of each mesh of world.geometry(), computed once per world and shared by every
+// producer (the geometry of a RenderWorld is fixed).
+const std::vector<Aabb>& meshBounds(RenderWorld& world);
 
 // The union of the window rectangles of the meshes for which `select(mesh index)` holds
 // (empty when none is visible); `rects` receives every mesh's own rectangle.

@@ -52,7 +52,6 @@ class ShadowMapGl {
               const gl::Texture& visibility);
 
  private:
-  const std::vector<Aabb>& meshBounds(const WorldGeometry& geometry);
   void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);
   // The lookup program for one (light kind, bias, filter, kernel, interior-only variant, stored
   // surface), compiled on first use.
@@ -78,7 +77,6 @@ class ShadowMapGl {
   };
   std::map<std::array<int, 2>, Maps> maps_;
   std::vector<vec2> poisson_;
-  std::vector<Aabb> meshBounds_;  // world bounds of each GlSceneBuffers mesh
 };
 
 // True when no point of `box` can pass the clip volume of `viewProj` (reversed-Z, ZERO_TO_ONE):

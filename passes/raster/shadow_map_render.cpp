@@ -9,6 +9,7 @@
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
+#include "passes/raster/screen_rect.h"
 #include "passes/raster/shadow_map_gl.h"
 
 namespace diptych::shadowmap {
@@ -92,16 +93,6 @@ bool boxOutsideFrustum(const Aabb& box, const mat4& viewProj) {
   return std::find(outside.begin(), outside.end(), 8) != outside.end();
 }
 
-const std::vector<Aabb>& ShadowMapGl::meshBounds(const WorldGeometry& geometry) {
-  // World geometry is fixed for the RenderWorld this object is cached in: computed once.
-  if (meshBounds_.size() != geometry.meshes.size()) {
-    meshBounds_.assign(geometry.meshes.size(), Aabb{});
-    for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
-      for (const vec3& p : geometry.meshes[m].positions) meshBounds_[m].extend(p);
-  }
-  return meshBounds_;
-}
-
 int ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>& frusta,
                             const Settings& settings, const gl::Texture& maps) {
   gl::ScopedGlLabel label("shadow_map.render");
@@ -136,7 +127,7 @@ int ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>&
     shading.bindStorage();
   }
   scene.vertexArray.bind();
-  const std::vector<Aabb>& bounds = meshBounds(world.geometry());
+  const std::vector<Aabb>& bounds = meshBounds(world);  // screen_rect.h: one per world
   const GLfloat zero = 0.f;
   int draws = 0;
   for (const LightFrustum& f : frusta) {
