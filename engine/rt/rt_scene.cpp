@@ -4,8 +4,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
+#include "engine/core/check.h"
 #include "engine/core/error.h"
 #include "engine/core/log.h"
 #include "engine/rt/analytic_geometry.h"
@@ -197,15 +199,30 @@ bool RtScene::intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool 
   return hitOf(rh, hit, wantNormal);
 }
 
-void RtScene::intersectTile(std::span<RTCRayHit> rays, bool coherent) const {
+void RtScene::intersectRays(std::span<const Ray> rays, std::span<Hit> hits,
+                            std::span<const Hit*> found, bool wantNormal) const {
+  DIPTYCH_CHECK(hits.size() >= rays.size() && found.size() >= rays.size(),
+                "RtScene::intersectRays: output smaller than the rays");
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  context.flags =
-      coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-  std::uint64_t active = 0;
-  for (const RTCRayHit& r : rays) active += r.ray.tnear <= r.ray.tfar ? 1 : 0;
-  rtcIntersect1M(scene_, &context, rays.data(), unsigned(rays.size()), sizeof(RTCRayHit));
-  raysTraced_.add(active);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  for (std::size_t begin = 0; begin < rays.size(); begin += kStreamRays) {
+    const std::size_t n = std::min(kStreamRays, rays.size() - begin);
+    RTCRayHit tile[kStreamRays];  // RTC_ALIGN(16), as rtcIntersect1M requires
+    for (std::size_t i = 0; i < n; ++i) {
+      const Ray& r = rays[begin + i];
+      setEmbreeRay(tile[i].ray, r.origin, r.direction, 0.f, std::numeric_limits<float>::infinity());
+      // Embree writes the hit only where it finds one: a miss must read as one.
+      tile[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      tile[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect1M(scene_, &context, tile, unsigned(n), sizeof(RTCRayHit));
+    raysTraced_.add(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      Hit& h = hits[begin + i];
+      found[begin + i] = hitOf(tile[i], h, wantNormal) ? &h : nullptr;
+    }
+  }
 }
 
 bool RtScene::hitOf(const RTCRayHit& rh, Hit& hit, bool wantNormal) const {

@@ -104,14 +104,16 @@ class RtScene {
   // The same into `hit` (untouched on a miss); false on a miss. For the per-ray loops: no
   // std::optional<Hit> copied through the stack.
   bool intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool wantNormal) const;
-  // One tile of closest-hit queries, built by the caller (setEmbreeRay, hit.geomID and
-  // hit.instID[0] = RTC_INVALID_GEOMETRY_ID), traced as a stream (rtcIntersect1M) on the calling
-  // thread; `coherent` as for occludedTile. Embree groups coherent rays into packets, so a row of
-  // pixel rays pays one traversal setup per packet instead of one per ray. Read each result
-  // with hitOf.
-  void intersectTile(std::span<RTCRayHit> rays, bool coherent) const;
-  // The Hit of a traced RTCRayHit (intersect's conversion); false on a miss.
-  bool hitOf(const RTCRayHit& rh, Hit& hit, bool wantNormal) const;
+  // Closest hits of many rays (t in [0, inf)), traced as coherent Embree streams
+  // (rtcIntersect1M with RTC_INTERSECT_CONTEXT_FLAG_COHERENT) of kStreamRays on the calling
+  // thread: Embree groups neighbouring rays into packets, so a row of pixel rays pays one
+  // traversal setup per packet instead of one per ray. found[i] = &hits[i] on a hit, null on a
+  // miss (hits[i] then untouched). The packet kernels may round differently from intersect's
+  // single-ray ones (a ray through an edge shared by two triangles can get the other one, or
+  // t, u, v can differ in the last bits: docs/ray-tracing.md).
+  static constexpr std::size_t kStreamRays = 64;
+  void intersectRays(std::span<const Ray> rays, std::span<Hit> hits, std::span<const Hit*> found,
+                     bool wantNormal) const;
   // Any hit in [tnear, tfar].
   bool occluded(const vec3& origin, const vec3& direction, float tnear, float tfar) const;
 
@@ -177,6 +179,8 @@ class RtScene {
  private:
   RtScene(const RtDevice& device, const WorldGeometry& world, const Scene* scene,
           RtSceneOptions options);
+  // The Hit of a traced RTCRayHit (intersect's conversion); false on a miss.
+  bool hitOf(const RTCRayHit& rh, Hit& hit, bool wantNormal) const;
   const RtDevice& device_;
   std::vector<GeometryData> geometry_;  // one per WorldMesh; sized once, addresses are stable
   int alphaMasked_ = 0;

@@ -60,22 +60,32 @@ SurfacePoint WhittedTracer::surfaceAt(const Ray& ray, const Hit& h, const RayCon
   return p;
 }
 
+bool WhittedTracer::lightTerm(std::size_t i, const SurfacePoint& p, const vec3& v,
+                              shading::LightSample& s, vec3& response, int& shadowRays) const {
+  s = shading::sampleLight(lights_[i], p.position);
+  if (s.radiance == vec3(0.f)) return false;  // no contribution: skip its shadow rays
+  // The response first, the shadow rays only where it is not zero (pbrt-v4's
+  // PathIntegrator::SampleLd tests f before Unoccluded): V_i S_i 0 is 0 whatever V_i is, so the
+  // image is the same bit for bit. This skips most shadow rays of mirror and glass hits: the
+  // light behind the surface (n.l <= 0, no k_a), or a glossy lobe pow(r.v, e) underflowing to
+  // 0 away from the highlight when k_d is 0.
+  response = shading::directResponse(p.resolved, p.shadingNormal, v, s.l);
+  if (response == vec3(0.f)) return false;
+  shadowRays = shadowRaysPerReceiver(scene_.lights[i], settings_.areaSamples);
+  rays_.add(std::uint64_t(shadowRays));
+  return true;
+}
+
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
   vec3 sum(0.f);
   const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
   for (std::size_t i = 0; i < lights_.size(); ++i) {
-    const Light& light = scene_.lights[i];
-    const shading::LightSample s = shading::sampleLight(lights_[i], p.position);
-    if (s.radiance == vec3(0.f)) continue;  // no contribution: skip its shadow rays
-    // The response first, the shadow rays only where it is not zero (pbrt-v4's
-    // PathIntegrator::SampleLd tests f before Unoccluded): V_i S_i 0 is 0 whatever V_i is, so the
-    // image is the same bit for bit. This skips most shadow rays of mirror and glass hits: the
-    // light behind the surface (n.l <= 0, no k_a), or a glossy lobe pow(r.v, e) underflowing to
-    // 0 away from the highlight when k_d is 0.
-    const vec3 response = shading::directResponse(p.resolved, p.shadingNormal, v, s.l);
-    if (response == vec3(0.f)) continue;
-    const float visibility = lightVisibility(rt_, light, receiver, settings_.areaSamples, seed);
-    rays_.add(std::uint64_t(shadowRaysPerReceiver(light, settings_.areaSamples)));
+    shading::LightSample s;
+    vec3 response;
+    int shadowRays = 0;
+    if (!lightTerm(i, p, v, s, response, shadowRays)) continue;
+    const float visibility =
+        lightVisibility(rt_, scene_.lights[i], receiver, settings_.areaSamples, seed);
     sum += shading::lightContributionOf(response, s, visibility);
   }
   return sum;

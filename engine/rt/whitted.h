@@ -44,7 +44,7 @@ class WhittedTracer {
                 WhittedSettings settings);
 
   // The ray that reflected() (reflection true) or transmitted() traces from point, for callers
-  // that trace many at once (RtScene::intersectTile, then radianceTile at `depth` with `seed`
+  // that trace many at once (RtScene::intersectRays, then radianceTile at `depth` with `seed`
   // and the cone, then attenuated()); false when depth >= maxDepth (the radiance is 0).
   struct SecondaryRay {
     Ray ray;
@@ -69,7 +69,7 @@ class WhittedTracer {
   vec3 radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone = nullptr,
                 float* hitDistance = nullptr) const;
   // The rest of RAYTRACING(o, u, depth) once the ray's closest hit is known (hit: null on a
-  // miss), for callers that trace many rays at once (RtScene::intersectTile); depth <= maxDepth.
+  // miss), for callers that trace many rays at once (RtScene::intersectRays); depth <= maxDepth.
   // radiance() is trace + this.
   vec3 radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
                   const RayCone* cone = nullptr, float* hitDistance = nullptr) const;
@@ -80,13 +80,14 @@ class WhittedTracer {
   // points traced as one coherent Embree stream (neighbouring pixels aimed at the same lights)
   // instead of one rtcOccluded1 each (engine/rt/whitted_tile.cpp): the same arithmetic, up to
   // the rounding of Embree's packet kernels (see there). Their reflected and transmitted rays
-  // are traced ray by ray, as radiance() does.
+  // are traced ray by ray, as radiance() does. depth: 1..maxDepth (else an Error), as for
+  // radianceAt: radiance() traces nothing beyond maxDepth.
   static constexpr std::size_t kMaxTile = 64;
   void radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                     std::span<const std::uint32_t> seeds, int depth,
                     std::span<const RayCone* const> cones, std::span<vec3> out) const;
   // traced() of each ray (all of one depth, any number): their closest hits found by Embree
-  // streams (RtScene::intersectTile) of kMaxTile rays, then radianceTile and attenuated().
+  // streams (RtScene::intersectRays) of kMaxTile rays, then radianceTile and attenuated().
   void tracedTile(std::span<const SecondaryRay> rays, std::span<vec3> out) const;
   // EVALUAMILREC at a known surface point seen from direction v (unit, toward the viewer); cone:
   // the cone's width at the point and its spread.
@@ -109,6 +110,12 @@ class WhittedTracer {
 
  private:
   vec3 direct(const SurfacePoint& point, const vec3& v, std::uint32_t seed) const;
+  // DIRECTA's light i at point seen from v, up to its visibility V_i: false when it adds
+  // nothing (no radiance there, or a zero response: its shadow rays are skipped); else its
+  // sample, response and shadow-ray count (counted in raysTraced). direct() and radianceTile
+  // share it, so both test and count alike.
+  bool lightTerm(std::size_t i, const SurfacePoint& point, const vec3& v, shading::LightSample& s,
+                 vec3& response, int& shadowRays) const;
   // radianceAt's steps: count the ray (and show it to the observer); the hit's surface point,
   // with its texture LOD from the ray's cone where asked (coned: then `at` is the cone at the
   // point); EVALUAMILREC given the direct light's sum.

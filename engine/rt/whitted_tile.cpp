@@ -9,6 +9,7 @@
 // by two triangles can get the other triangle, or t, u, v can differ in the last bits, and the
 // recursion below can amplify that (docs/ray-tracing.md: 3 pixels of 76,800 on techniques.json's
 // hybrid frame, FLIP mean 8.6e-5; whitted.json is byte-identical).
+#include <cstddef>
 #include <limits>
 #include <new>
 #include <type_traits>
@@ -44,12 +45,22 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
   DIPTYCH_CHECK(n <= kMaxTile && hits.size() == n && seeds.size() == n && out.size() >= n &&
                     (cone.empty() || cone.size() == n),
                 "WhittedTracer::radianceTile: tile sizes disagree");
-  // Per thread, reused tile after tile: no allocation per ray. The recursion below this level
-  // is per ray (radiance()), so a thread is in at most one radianceTile at a time.
+  // radianceAt's contract: the hits were traced at a depth the recursion reaches (radiance()
+  // returns 0 beyond maxDepth without tracing, so a caller past it traced rays for nothing).
+  DIPTYCH_CHECK(depth >= 1 && depth <= settings_.maxDepth,
+                "WhittedTracer::radianceTile: depth outside 1..maxDepth");
+  // Per thread, reused tile after tile: no allocation per ray. Read only until each point's
+  // direct light is summed into directSum[], before any recursion below: a nested radianceTile on
+  // this thread (a TBB worker stealing another row while it waits) may then reuse it.
   thread_local std::vector<PendingLight> pending;
   pending.assign(n * lights, PendingLight{});
-  static_assert(std::is_trivially_destructible_v<SurfacePoint>);  // constructed in place below
-  SurfacePoint points[kMaxTile];
+  // Raw storage, each point constructed in place below: an array of SurfacePoint would run
+  // its member initialisers over ~16 KB per tile first.
+  static_assert(std::is_trivially_destructible_v<SurfacePoint>);
+  alignas(SurfacePoint) std::byte pointStorage[kMaxTile * sizeof(SurfacePoint)];
+  const auto point = [&](std::size_t i) {
+    return std::launder(reinterpret_cast<SurfacePoint*>(pointStorage) + i);
+  };
   RayCone cones[kMaxTile];
   bool shaded[kMaxTile] = {};
   bool coned[kMaxTile] = {};  // shade with cones[i] (texture LOD)
@@ -75,26 +86,18 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
     }
     const RayCone* c = cone.empty() ? nullptr : cone[i];
     // In place (guaranteed copy elision): an assignment would copy the ~250-byte point.
-    ::new (static_cast<void*>(&points[i]))
-        SurfacePoint(surfaceAt(ray, *hits[i], c, cones[i], coned[i]));
+    const SurfacePoint& p = *::new (static_cast<void*>(point(i)))
+                                SurfacePoint(surfaceAt(ray, *hits[i], c, cones[i], coned[i]));
     shaded[i] = true;
-    const SurfacePoint& p = points[i];
-    const vec3 v = -ray.direction;
-    // direct()'s tests, in its order; the shadow rays go to the stream instead of rtcOccluded1.
+    // direct()'s tests (lightTerm); the shadow rays go to the stream instead of rtcOccluded1.
     const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
     for (std::size_t l = 0; l < lights; ++l) {
-      const Light& light = scene_.lights[l];
-      const shading::LightSample s = shading::sampleLight(lights_[l], p.position);
-      if (s.radiance == vec3(0.f)) continue;
-      const vec3 response = shading::directResponse(p.resolved, p.shadingNormal, v, s.l);
-      if (response == vec3(0.f)) continue;
       PendingLight& q = pending[i * lights + l];
-      q.response = response;
+      shading::LightSample s;
+      if (!lightTerm(l, p, -ray.direction, s, q.response, q.count)) continue;
       q.radiance = s.radiance;
-      q.count = shadowRaysPerReceiver(light, settings_.areaSamples);
-      rays_.add(std::uint64_t(q.count));
       for (int k = 0; k < q.count; ++k) {
-        const OcclusionRay r = makeShadowSample(light, receiver, k, q.count, seeds[i]);
+        const OcclusionRay r = makeShadowSample(scene_.lights[l], receiver, k, q.count, seeds[i]);
         stream[filled] = toEmbreeRay(r);
         owner[filled] = std::uint32_t(i * lights + l);
         active[filled] = r.tnear <= r.tfar;
@@ -104,6 +107,8 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
   }
   if (filled > 0) flush();
 
+  // Every point's direct light, in direct()'s order, before any recursion (see pending).
+  vec3 directSum[kMaxTile];
   for (std::size_t i = 0; i < n; ++i) {
     if (!shaded[i]) continue;
     vec3 sum(0.f);
@@ -113,11 +118,15 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
       const float visibility = float(q.visible) / float(q.count);
       sum += shading::lightContributionOf(q.response, {vec3(0.f), 0.f, q.radiance}, visibility);
     }
+    directSum[i] = sum;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!shaded[i]) continue;
     // The reflected and transmitted rays ray by ray below this level: traced as streams level by
     // level they were slower (the tiles of the deeper levels hold a few rays each: 127.4 against
     // 120.8 CPU ms for the Whitted reference, docs/ray-tracing.md).
-    out[i] = shadeGiven(points[i], -rays[i].direction, depth, seeds[i],
-                        coned[i] ? &cones[i] : nullptr, sum);
+    out[i] = shadeGiven(*point(i), -rays[i].direction, depth, seeds[i],
+                        coned[i] ? &cones[i] : nullptr, directSum[i]);
   }
 }
 
@@ -126,24 +135,16 @@ void WhittedTracer::tracedTile(std::span<const SecondaryRay> rays, std::span<vec
   for (std::size_t begin = 0; begin < rays.size(); begin += kMaxTile) {
     const std::size_t n = std::min(kMaxTile, rays.size() - begin);
     const SecondaryRay* s = rays.data() + begin;
-    RTCRayHit tile[kMaxTile];  // RTC_ALIGN(16), as rtcIntersect1M requires
-    for (std::size_t i = 0; i < n; ++i) {
-      setEmbreeRay(tile[i].ray, s[i].ray.origin, s[i].ray.direction, 0.f,
-                   std::numeric_limits<float>::infinity());
-      tile[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      tile[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    }
-    rt_.intersectTile({tile, n}, true);
     Ray traced[kMaxTile];
     Hit hits[kMaxTile];
     const Hit* found[kMaxTile];
+    for (std::size_t i = 0; i < n; ++i) traced[i] = s[i].ray;
+    rt_.intersectRays({traced, n}, {hits, n}, {found, n}, wantsHitNormal());
     std::uint32_t seeds[kMaxTile];
     const RayCone* cones[kMaxTile];
     vec3 radiance[kMaxTile];
     for (std::size_t i = 0; i < n; ++i) {
       DIPTYCH_CHECK(s[i].depth == s[0].depth, "WhittedTracer::tracedTile: rays of two depths");
-      traced[i] = s[i].ray;
-      found[i] = rt_.hitOf(tile[i], hits[i], wantsHitNormal()) ? &hits[i] : nullptr;
       seeds[i] = s[i].seed;
       cones[i] = s[i].hasCone ? &s[i].cone : nullptr;
     }

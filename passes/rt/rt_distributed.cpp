@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numeric>
 #include <span>
 #include <vector>
@@ -18,8 +17,8 @@
 namespace diptych {
 namespace {
 
-// Primary rays per Embree stream call: a row is traced in tiles of this many pixels (80 bytes
-// each on the stack), the most WhittedTracer::radianceTile shades at once.
+// Primary rays per Embree stream call (RtScene::intersectRays): a row's samples are traced in
+// tiles of this many, the most WhittedTracer::radianceTile shades at once.
 constexpr std::size_t kPrimaryTile = WhittedTracer::kMaxTile;
 
 // A per-pixel random permutation of 0..n-1 (Fisher-Yates driven by pcgHash). Pairing pixel
@@ -98,27 +97,17 @@ void RtDistributedPass::execute(PassContext& c) {
     tbb::parallel_for(0, frame.height, [&](int y) {
       std::vector<int> lensStratum(std::size_t(spp_), 0);
       std::vector<vec3> sum(std::size_t(frame.width), vec3(0.f));
-      RTCRayHit tile[kPrimaryTile];  // RTC_ALIGN(16), as rtcIntersect1M requires
       Ray rays[kPrimaryTile];
       std::uint32_t seeds[kPrimaryTile];
       int pixelOf[kPrimaryTile];
       std::size_t filled = 0;
       const auto flush = [&] {
-        for (std::size_t i = 0; i < filled; ++i) {
-          setEmbreeRay(tile[i].ray, rays[i].origin, rays[i].direction, 0.f,
-                       std::numeric_limits<float>::infinity());
-          tile[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
-          tile[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        }
-        rt.intersectTile({tile, filled}, true);
         Hit hits[kPrimaryTile];
         const Hit* found[kPrimaryTile];
+        rt.intersectRays({rays, filled}, {hits, filled}, {found, filled}, tracer.wantsHitNormal());
         const RayCone* cones[kPrimaryTile];
         vec3 colors[kPrimaryTile];
-        for (std::size_t i = 0; i < filled; ++i) {
-          found[i] = rt.hitOf(tile[i], hits[i], tracer.wantsHitNormal()) ? &hits[i] : nullptr;
-          cones[i] = cone;
-        }
+        std::fill_n(cones, filled, cone);
         tracer.radianceTile({rays, filled}, {found, filled}, {seeds, filled}, 1,
                             {cones, cone ? filled : 0}, {colors, filled});
         for (std::size_t i = 0; i < filled; ++i) sum[std::size_t(pixelOf[i])] += colors[i];
