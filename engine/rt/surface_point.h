@@ -3,6 +3,7 @@
 // uv, and the material with its textures and checker resolved at the point.
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "engine/scene/camera_math.h"
 #include "engine/scene/world_geometry.h"
@@ -35,6 +36,10 @@ struct SurfacePoint {
   int material = -1;                    // index into Scene::materials (-1: default)
   shading::ShadingMaterial resolved{};  // C with texture/checker, M_E with its texture
 };
+
+// Hot loops construct points in place in raw or reused storage (placement new, never destroyed:
+// passes/cpu/shade.cpp, engine/rt/whitted_tile.cpp), which is valid only while this holds.
+static_assert(std::is_trivially_destructible_v<SurfacePoint>);
 
 // incoming: direction of the ray that found the hit (from the eye toward the surface); only its
 // sign relative to the face matters. A zero vector counts as arriving on the front.

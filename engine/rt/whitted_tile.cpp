@@ -56,7 +56,6 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
   pending.assign(n * lights, PendingLight{});
   // Raw storage, each point constructed in place below: an array of SurfacePoint would run
   // its member initialisers over ~16 KB per tile first.
-  static_assert(std::is_trivially_destructible_v<SurfacePoint>);
   alignas(SurfacePoint) std::byte pointStorage[kMaxTile * sizeof(SurfacePoint)];
   const auto point = [&](std::size_t i) {
     return std::launder(reinterpret_cast<SurfacePoint*>(pointStorage) + i);

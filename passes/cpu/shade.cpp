@@ -3,7 +3,6 @@
 #include <tbb/parallel_for.h>
 
 #include <new>
-#include <type_traits>
 
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
@@ -16,8 +15,6 @@
 
 namespace diptych {
 namespace {
-
-static_assert(std::is_trivially_destructible_v<SurfacePoint>);  // placement new in the row loop
 
 // The texture_filtering slot's C and coverage replace shade's own level-0 lookup (a = -1: none
 // there). Not for materials whose metallic-roughness texture re-maps C per texel: the signal is
