@@ -47,8 +47,9 @@ TEST(EnvMapOneTime, CubeMapIsBuiltOnceAndAFrameThatBuildsItIsMeasuredAgain) {
   const GraphExecutor::MeasuredRun second = again.runMeasured(0, 2);
   EXPECT_FALSE(second.repeatedAFrame);
   EXPECT_TRUE(second.oneTimeMs.empty());
-  for (std::size_t n = 0; n < graph.nodes.size(); ++n)
+  for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
     if (graph.nodes[n].name == "env") EXPECT_EQ(again.timings()[n].counters.at("map_builds"), 0.0);
+  }
 }
 
 TEST(EnvMapOneTime, SphereMapFollowsTheViewAndIsNotAOneTimeCost) {
