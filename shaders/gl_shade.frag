@@ -37,6 +37,18 @@ uniform vec2 uViewportSize;
 
 layout(location = 0) out vec4 outColor;
 
+// Which pixels this program shades (gl_shade.cpp): 0 every pixel; with the G-buffer's depth
+// attached and tested, 1 the background (depth 0, the cleared far end of reversed-Z) and 2 the
+// surfaces. Split, each program runs only on its own pixels behind an early depth test, and
+// llvmpipe, which runs both sides of a branch under a lane mask, no longer evaluates the
+// environment lookup for surface pixels nor the surface rebuild and lights for the sky.
+#define SHADE_PART_ALL 0
+#define SHADE_PART_BACKGROUND 1
+#define SHADE_PART_SURFACES 2
+#if SHADE_PART != SHADE_PART_ALL
+layout(early_fragment_tests) in;
+#endif
+
 float lightVisibility(ivec2 p, int i) {
   if (i >= kVisibilityCount) return 1.0;
   if (kVisibilityCount == 1) return imageLoad(uVisibility, p).r;
@@ -48,11 +60,16 @@ void main() {
   vec2 ndc = 2.0 * gl_FragCoord.xy / uViewportSize - 1.0;
   vec3 eye = normalize(uForward + (ndc.x * uAspect * uTanHalfFov) * uRight +
                        (ndc.y * uTanHalfFov) * uUp);
+#if SHADE_PART == SHADE_PART_BACKGROUND
+  outColor = vec4(sceneEnvironment(eye), 1.0);
+#else
   SceneSurface s = gbufferSurface(p, imageLoad(uHits, p));
+#if SHADE_PART == SHADE_PART_ALL
   if (!s.hit) {
     outColor = vec4(sceneEnvironment(eye), 1.0);
     return;
   }
+#endif
   ShadingMaterial m = sceneMaterial(s.material, s.uv);
   if (kHasAlbedo) {
     // The texture-filtering slot's signal replaces the resolved base colour and coverage, as
@@ -78,4 +95,5 @@ void main() {
   vec3 transmitted = kHasTransmission ? imageLoad(uTransmission, p).rgb : vec3(0.0);
   radiance += secondaryTermsOf(m, n, v, reflected.rgb, reflected.a, transmitted);
   outColor = vec4(radiance, 1.0);
+#endif
 }

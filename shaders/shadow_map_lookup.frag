@@ -235,8 +235,8 @@ float visibility() {
 }
 
 // Cube maps are looked up in two passes (shadow_map_lookup.cpp): DIPTYCH_INTERIOR, without the
-// cube-edge path, for pixels whose every tap stays on their own face, marking them with depth 0;
-// then the full shader, depth-tested, for the rest. llvmpipe runs a branch's code for every
+// cube-edge path, for pixels whose every tap stays on their own face, marking the rest with
+// depth 1; then the full shader, depth-tested, only for those (background pixels are neither). llvmpipe runs a branch's code for every
 // lane, so the edge path (two re-projections) cost every tap of every pixel. Largest tap offset
 // in texels per filter: the interior test is conservative for each of them.
 float maxTapOffset() {
@@ -248,7 +248,9 @@ float maxTapOffset() {
 
 void main() {
 #ifdef DIPTYCH_INTERIOR
-  gl_FragDepth = 0.0;  // done here; discarded pixels keep the cleared 1 for the second pass
+  // Done here; the depth is cleared to 0 too, so discarded (background) pixels keep it and the
+  // cleared lit colour, and the second pass skips them. Pixels left to it are marked with 1.
+  gl_FragDepth = 0.0;
 #endif
   if (uLight < 0) {
     outVisibility = 1.0;
@@ -311,7 +313,11 @@ void main() {
   float reach = maxTapOffset();
   ivec2 lo = ivec2(floor(gSc0.xy * float(uResolution) - reach));
   ivec2 hi = ivec2(floor(gSc0.xy * float(uResolution) + reach));
-  if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, ivec2(uResolution)))) discard;
+  if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, ivec2(uResolution)))) {
+    gl_FragDepth = 1.0;  // a tap leaves the face: the full shader writes this pixel
+    outVisibility = 0.0;
+    return;
+  }
 #endif
   outVisibility = saturate01(visibility());
 }

@@ -4,6 +4,7 @@
 
 #include <new>
 
+#include "engine/graph/companion.h"
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
@@ -41,6 +42,8 @@ void ShadePass::setup(PassBuilder& b) {
   const int w = b.frame().width, h = b.frame().height;
   hits_ = b.read(kHits, Format::RGBA32UI);
   surface_ = readSurface(b, hits_);  // GL only: dropped when placed on the CPU
+  // GL only too: the G-buffer's depth splits GL shade into background and surfaces (gl_shade.h).
+  depth_ = readCompanion(b, hits_, "depth", Format::D32F, true);
   lightVisibility_ = b.readOptional("light_visibility", Format::R32F);
   reflection_ = b.readOptional("reflection", Format::RGBA32F);
   transmission_ = b.readOptional("transmission", Format::RGBA32F);
@@ -50,8 +53,8 @@ void ShadePass::setup(PassBuilder& b) {
 
 void ShadePass::execute(PassContext& c) {
   if (domain_ == Domain::Gl)
-    return shadeOnGl(
-        c, {hits_, lightVisibility_, reflection_, transmission_, albedo_, color_, surface_});
+    return shadeOnGl(c, {hits_, lightVisibility_, reflection_, transmission_, albedo_, color_,
+                         surface_, depth_});
   RenderWorld& world = c.world();
   const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();

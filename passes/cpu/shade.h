@@ -31,7 +31,7 @@ class ShadePass : public PlaceablePass {
   bool auto_ = false;
   ResourceId hits_ = kNoResource, surface_ = kNoResource, lightVisibility_ = kNoResource;
   ResourceId reflection_ = kNoResource, transmission_ = kNoResource, color_ = kNoResource;
-  ResourceId albedo_ = kNoResource;
+  ResourceId albedo_ = kNoResource, depth_ = kNoResource;  // depth_: the G-buffer's, GL only
 };
 
 }  // namespace diptych

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
@@ -19,7 +20,13 @@ namespace {
 struct GlShadeState {
   std::map<std::string, FullscreenResolve> programs;
   std::unique_ptr<GlEnvironment> environment;  // uploaded on the first frame
+  // The split draw's target: the colour output with the G-buffer's depth (never written).
+  gl::Framebuffer split = gl::Framebuffer::create();
+  gl::VertexArray empty = gl::VertexArray::create();  // core profile: a VAO for the triangle
 };
+
+// SHADE_PART of gl_shade.frag: every pixel, the background only, the surfaces only.
+enum class Part { All = 0, Background = 1, Surfaces = 2 };
 
 // The permutation of gl_shade.frag for these inputs: the scene's features
 // (gl/scene_features.glsl), its light count and environment kind, and which optional inputs are
@@ -27,7 +34,7 @@ struct GlShadeState {
 // with uniforms every pixel paid for both material models, every texture path, every light
 // type and every environment kind (docs/benchmarks.md has the before/after).
 FullscreenResolve& shadeProgram(GlShadeState& state, RenderWorld& world, int visibilityLayers,
-                                const ShadeIo& io) {
+                                const ShadeIo& io, Part part) {
   const gl::GlShadingBuffers& shading = world.glShading();
   std::vector<gl::ShaderDefine> own = {
       {"SHADE_LIGHTS", std::to_string(shading.lightCount)},
@@ -35,7 +42,8 @@ FullscreenResolve& shadeProgram(GlShadeState& state, RenderWorld& world, int vis
       {"SHADE_REFLECTION", io.reflection != kNoResource ? "1" : "0"},
       {"SHADE_TRANSMISSION", io.transmission != kNoResource ? "1" : "0"},
       {"SHADE_ALBEDO", io.albedo != kNoResource ? "1" : "0"},
-      {"SCENE_ENVIRONMENT_TYPE", std::to_string(state.environment->type())}};
+      {"SCENE_ENVIRONMENT_TYPE", std::to_string(state.environment->type())},
+      {"SHADE_PART", std::to_string(int(part))}};
   own = gl::withDefines(own, surfaceDefines(io.surface));
   std::string key;
   for (const gl::ShaderDefine& d : own) key += d.name + "=" + d.value + ",";
@@ -54,6 +62,47 @@ void bindImage(GLuint unit, const gl::Texture& texture, GLenum format, bool laye
                          format);
 }
 
+// Draws the background, then the surfaces, each program behind an early depth test against the
+// G-buffer's depth: the full-screen triangle lies at depth 0 (fullscreen.vert), the value the
+// G-buffer clears to and keeps where no surface is (reversed-Z, every surface > 0), so GL_GEQUAL
+// passes only there and GL_LESS only on surfaces. The depth function and mask are left as they
+// were found and the depth test off, as the one-program draw (FullscreenResolve) leaves them.
+void drawSplit(GlShadeState& state, RenderWorld& world, const gl::Program& background,
+               const gl::Program& surfaces, const gl::Texture& target, const gl::Texture& depth) {
+  GLint depthFunc = GL_LESS, depthMask = GL_TRUE;
+  gl::glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+  gl::glGetIntegerv(GL_DEPTH_WRITEMASK, &depthMask);
+  world.glScene().bindStorage();
+  world.glShading().bindStorage();
+  state.split.attachColor(0, target);
+  state.split.attachDepth(depth);
+  state.split.checkComplete("gl shade");
+  state.split.bind();
+  gl::glViewport(0, 0, target.width(), target.height());
+  gl::glDisable(GL_BLEND);
+  gl::glDisable(GL_CULL_FACE);
+  gl::glDisable(GL_SCISSOR_TEST);
+  gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  gl::glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // the G-buffer's convention: depth 0 far
+  gl::glEnable(GL_DEPTH_TEST);
+  gl::glDepthMask(GL_FALSE);
+  state.empty.bind();
+  const vec2 size(float(target.width()), float(target.height()));
+  const std::pair<const gl::Program*, GLenum> draws[] = {{&background, GL_GEQUAL},
+                                                         {&surfaces, GL_LESS}};
+  for (const auto& [program, func] : draws) {
+    program->set("uViewportSize", size);
+    program->use();
+    gl::glDepthFunc(func);
+    gl::glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  gl::glBindVertexArray(0);
+  gl::glDepthFunc(GLenum(depthFunc));
+  gl::glDepthMask(GLboolean(depthMask));
+  gl::glDisable(GL_DEPTH_TEST);
+  gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 }  // namespace
 
 void shadeOnGl(PassContext& c, const ShadeIo& io) {
@@ -63,22 +112,29 @@ void shadeOnGl(PassContext& c, const ShadeIo& io) {
     state.environment = std::make_unique<GlEnvironment>(world.scene().environment);
   const int visibilityLayers =
       io.lightVisibility != kNoResource ? c.desc(io.lightVisibility).layers : 0;
-  FullscreenResolve& resolve = shadeProgram(state, world, visibilityLayers, io);
-  const gl::Program& program = resolve.program();
+  const bool split = io.depth != kNoResource && world.glCached<GlShadeOptions>().split;
+  FullscreenResolve& first =
+      shadeProgram(state, world, visibilityLayers, io, split ? Part::Background : Part::All);
+  FullscreenResolve* second =
+      split ? &shadeProgram(state, world, visibilityLayers, io, Part::Surfaces) : nullptr;
   const Camera& camera = c.frame().camera;
   const FrameSettings& frame = c.frame();
 
   // The ray frame of primaryRay() (engine/scene/camera_math.cpp), as the G-buffer builds it.
   const vec3 forward = glm::normalize(camera.target - camera.position);
   const vec3 right = glm::normalize(glm::cross(forward, camera.up));
-  program.set("uCameraPosition", camera.position);
-  program.set("uForward", forward);
-  program.set("uRight", right);
-  program.set("uUp", glm::cross(right, forward));
-  program.set("uAspect", float(frame.width) / float(frame.height));
-  program.set("uTanHalfFov", std::tan(0.5f * camera.verticalFov));
-  program.set("uAmbient", world.scene().ambient);
-  state.environment->bind(program);
+  for (const FullscreenResolve* resolve : {&first, second}) {
+    if (!resolve) continue;
+    const gl::Program& program = resolve->program();
+    program.set("uCameraPosition", camera.position);
+    program.set("uForward", forward);
+    program.set("uRight", right);
+    program.set("uUp", glm::cross(right, forward));
+    program.set("uAspect", float(frame.width) / float(frame.height));
+    program.set("uTanHalfFov", std::tan(0.5f * camera.verticalFov));
+    program.set("uAmbient", world.scene().ambient);
+    state.environment->bind(program);
+  }
 
   bindImage(0, c.glTexture(io.hits), GL_RGBA32UI, false);
   bindSurface(c, io.surface);
@@ -94,7 +150,11 @@ void shadeOnGl(PassContext& c, const ShadeIo& io) {
   // Producers that wrote their signal with imageStore made it visible to image loads only
   // after this barrier (GL 4.5, section 7.12.2).
   gl::glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  resolve.draw(world, c.glTexture(io.color));
+  if (split)
+    drawSplit(state, world, first.program(), second->program(), c.glTexture(io.color),
+              c.glTexture(io.depth));
+  else
+    first.draw(world, c.glTexture(io.color));
 }
 
 }  // namespace diptych

@@ -17,6 +17,15 @@ struct ShadeIo {
   ResourceId hits = kNoResource, lightVisibility = kNoResource, reflection = kNoResource;
   ResourceId transmission = kNoResource, albedo = kNoResource, color = kNoResource;
   ResourceId surface = kNoResource;  // gbuffer.surface (passes/raster/gbuffer_surface.h)
+  // gbuffer.depth (reversed-Z, 0 where no surface): when connected, the background and the
+  // surfaces are drawn by two programs, each behind an early depth test against it.
+  ResourceId depth = kNoResource;
+};
+
+// Per world (RenderWorld::glCached<GlShadeOptions>()): `split` false draws every pixel with the
+// one program of a frame without the G-buffer's depth, so that tests compare the two draws.
+struct GlShadeOptions {
+  bool split = true;
 };
 
 void shadeOnGl(PassContext& context, const ShadeIo& io);

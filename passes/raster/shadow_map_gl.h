@@ -28,6 +28,10 @@ class ShadowMapGl {
   // (false): the same visibility, bit for bit (test ShadowLookup.GatheredPcfEqualsNineFetches);
   // the gathers cost less on llvmpipe (docs/shadow-maps.md).
   bool gatherPcf = true;
+  // Cube maps looked up in two passes, an interior one without the cube-edge path and the full
+  // shader behind a depth test where it left pixels (true), or the full shader everywhere
+  // (false): the same visibility, bit for bit (test ShadowLookup.SplitCubeEqualsOnePass).
+  bool splitCube = true;
   // What mapsFor did this frame, for the pass's counters and the world's one-time costs.
   struct Built {
     int draws = 0;          // caster draws issued (0 when the cached maps were used)
@@ -59,7 +63,7 @@ class ShadowMapGl {
                                    bool interior, bool surface);
   gl::Program depth_;
   std::map<std::array<int, 7>, gl::Program> lookups_;
-  gl::Texture lookupDepth_;  // marks pixels the interior cube pass has written
+  gl::Texture lookupDepth_;  // marks pixels the interior cube pass left to the full one
   gl::Program alphaDepth_;   // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
   gl::Framebuffer depthFbo_, lookupFbo_;
   gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle

@@ -164,22 +164,24 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
     };
     // Receiver-plane bias keeps one pass: its depth gradient comes from screen derivatives,
     // and with the split its visibility moved (MSE 2e-5 on whitted), so it is left exact.
-    if (kind != ViewKind::Cube || s.bias == Bias::ReceiverPlane) {
+    if (kind != ViewKind::Cube || s.bias == Bias::ReceiverPlane || !splitCube) {
       gl::glDisable(GL_DEPTH_TEST);
       draw(lookupProgram(world, kind, s, false, surface != nullptr));
       continue;
     }
     // Cube maps: the interior variant (no cube-edge path) writes every pixel whose taps all
-    // stay on its own face and marks it with depth 0; the full shader then runs, behind an
-    // early depth test, only where depth is still the cleared 1 (shadow_map_lookup.frag).
-    const GLfloat one = 1.f;
-    gl::glClearNamedFramebufferfv(lookupFbo_.id(), GL_DEPTH, 0, &one);
+    // stay on its own face and marks the others with depth 1; the full shader then runs,
+    // behind an early depth test, only there (shadow_map_lookup.frag). The depth is cleared to
+    // 0 ("done") so that background pixels, which the interior pass discards, keep the cleared
+    // lit colour and are skipped by the second pass too.
+    const GLfloat done = 0.f;
+    gl::glClearNamedFramebufferfv(lookupFbo_.id(), GL_DEPTH, 0, &done);
     gl::glEnable(GL_DEPTH_TEST);
     gl::glDepthMask(GL_TRUE);
     gl::glDepthFunc(GL_ALWAYS);
     draw(lookupProgram(world, kind, s, true, surface != nullptr));
     gl::glDepthMask(GL_FALSE);
-    gl::glDepthFunc(GL_LESS);  // the full-screen triangle is at depth 0
+    gl::glDepthFunc(GL_LESS);  // the full-screen triangle is at depth 0: passes where 1
     draw(lookupProgram(world, kind, s, false, surface != nullptr));
     gl::glDepthMask(GL_TRUE);
     gl::glDisable(GL_DEPTH_TEST);
