@@ -154,7 +154,7 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
   if (o.clear) {
     const GLfloat zero[4] = {0.f, 0.f, 0.f, 0.f};
     glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, zero);
-    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);
+    if (o.clearDepth) glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, zero);
     if (!backgroundLast) {
       glDisable(GL_DEPTH_TEST);
       drawBackground();

@@ -54,6 +54,9 @@ struct ForwardOptions {
   std::optional<vec4> clipPlane;
   // Clear colour and depth, then draw the environment background.
   bool clear = true;
+  // With clear: false keeps the depth the caller pre-filled (the blend producers' early-rejected
+  // pixels, passes/raster/blend_transmission.cpp); colour is still cleared.
+  bool clearDepth = true;
   bool depthWrite = true;
   // Composite each fragment with the lecture's I = I_m + k_t M_T I (dual-source blending,
   // src = ONE, dst = SRC1_COLOR): I_m is the fragment's shaded colour.

@@ -44,7 +44,8 @@ vec3 meshCentre(const WorldMesh& mesh) {
 }  // namespace
 
 void renderBlendFirst(RenderWorld& world, const gl::Texture& hits, const gl::Texture* surface,
-                      const vec3& eye, const gl::Texture& first, const glm::ivec4& scissor) {
+                      const vec3& eye, const gl::Texture& first, const glm::ivec4& scissor,
+                      const gl::Texture* depth) {
   auto& cache = world.glCached<BlendCache>();
   std::optional<FullscreenResolve>& program = cache.firstSurface[surface ? 1 : 0];
   if (!program) {
@@ -56,7 +57,7 @@ void renderBlendFirst(RenderWorld& world, const gl::Texture& hits, const gl::Tex
   gl::glBindTextureUnit(0, hits.id());
   if (surface) gl::glBindTextureUnit(gl::UNIT_GBUFFER_SURFACE, surface->id());
   program->program().set("uEye", eye);
-  program->draw(world, first, /*multiply=*/false, scissor);
+  program->draw(world, first, /*multiply=*/false, scissor, depth);
 }
 
 std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry& world,
@@ -76,7 +77,15 @@ std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry&
   return order;
 }
 
+ParamSchema BlendTransmissionPass::schema() {
+  return {ParamSpec::boolean(
+      "depth_prefill", true,
+      "write the forward passes' depth from the first-surface step so that pixels the mask zeroes "
+      "are rejected by the early depth test, not shaded and discarded; same image")};
+}
+
 void BlendTransmissionPass::setup(PassBuilder& b) {
+  depthPrefill_ = b.params().boolean("depth_prefill");
   io_ = slotIo(b, "transmission");
   surface_ = readSurface(b, io_.hits);
 }
@@ -118,8 +127,12 @@ void BlendTransmissionPass::execute(PassContext& c) {
 
   // The first visible surface of each pixel, rebuilt once here (the mask factor and the distance
   // the forward passes' "strictly behind" test needs) rather than in every forward fragment.
+  // With depth_prefill it also writes the forward passes' depth: 1 (reversed-Z near) where the
+  // first surface does not transmit, so llvmpipe's early depth test drops those fragments of
+  // both passes per 4x4 block before the shader runs (forward.frag would discard them after two
+  // texel fetches); the pixels the mask keeps see the cleared depth 0 as before.
   renderBlendFirst(world, hits, surface_ != kNoResource ? &c.glTexture(surface_) : nullptr,
-                   view.eye, cache.first, scissor);
+                   view.eye, cache.first, scissor, depthPrefill_ ? &cache.depth : nullptr);
 
   // Lines 1-3 of the lecture's algorithm: opaque polygons with depth (and the background).
   gl::ForwardOptions opaque;
@@ -127,6 +140,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   opaque.behindVisibility = &hits;
   opaque.transmissiveFirst = &cache.first;
   opaque.scissor = scissor;
+  opaque.clearDepth = !depthPrefill_;
   opaque.explicitOrder = true;
   for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
     if (!shading::materialHasTransmission(scene.material(geometry.meshes[m].material)) &&

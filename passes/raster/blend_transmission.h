@@ -19,12 +19,14 @@ namespace diptych {
 class BlendTransmissionPass : public Pass {
  public:
   explicit BlendTransmissionPass(bool sorted) : sorted_(sorted) {}
+  static ParamSchema schema();
   Domain domain() const override { return Domain::Gl; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
 
  private:
   bool sorted_;
+  bool depthPrefill_ = true;
   SlotIo io_;
   ResourceId surface_ = kNoResource;
 };
@@ -34,8 +36,12 @@ class BlendTransmissionPass : public Pass {
 // surface transmits: rgb = the mask's factor, a = that surface's distance from `eye`; elsewhere (0,
 // 0, 0, -1). Reads the G-buffer's stored surface when `surface` is given. The forward passes read
 // it (gl::ForwardOptions::transmissiveFirst) instead of rebuilding the surface per fragment.
+// With `depth` (D32F): 1 there where the first surface does not transmit, 0 elsewhere (the
+// forward passes' reversed-Z depth, pre-filled so that their early depth test rejects those
+// pixels).
 void renderBlendFirst(RenderWorld& world, const gl::Texture& hits, const gl::Texture* surface,
-                      const vec3& eye, const gl::Texture& first, const glm::ivec4& scissor);
+                      const vec3& eye, const gl::Texture& first, const glm::ivec4& scissor,
+                      const gl::Texture* depth = nullptr);
 
 // Mesh indices of the transparent objects (material k_t > 0), farthest first by the view
 // depth (-z_view) of each object's bounds centre; ties keep scene order.

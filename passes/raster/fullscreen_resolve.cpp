@@ -12,14 +12,24 @@ FullscreenResolve::FullscreenResolve(gl::Program program)
       empty_(gl::VertexArray::create()) {}
 
 void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target, bool multiply,
-                             const std::optional<glm::ivec4>& scissor) {
+                             const std::optional<glm::ivec4>& scissor, const gl::Texture* depth) {
   world.glScene().bindStorage();
   world.glShading().bindStorage();
   framebuffer_.attachColor(0, target);
+  if (depth)
+    framebuffer_.attachDepth(*depth);
+  else
+    gl::glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, 0, 0);
   framebuffer_.checkComplete("fullscreen resolve");
   framebuffer_.bind();
   gl::glViewport(0, 0, target.width(), target.height());
-  gl::glDisable(GL_DEPTH_TEST);
+  if (depth) {
+    gl::glEnable(GL_DEPTH_TEST);
+    gl::glDepthFunc(GL_ALWAYS);
+    gl::glDepthMask(GL_TRUE);
+  } else {
+    gl::glDisable(GL_DEPTH_TEST);
+  }
   if (multiply) {
     gl::glEnable(GL_BLEND);
     gl::glBlendFunc(GL_ZERO, GL_SRC_COLOR);
@@ -39,6 +49,7 @@ void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target, bool
   gl::glDrawArrays(GL_TRIANGLES, 0, 3);
   gl::glBindVertexArray(0);
   gl::glDisable(GL_SCISSOR_TEST);
+  gl::glDisable(GL_DEPTH_TEST);
   if (multiply) {
     gl::glDisable(GL_BLEND);
     gl::glBlendFunc(GL_ONE, GL_ZERO);

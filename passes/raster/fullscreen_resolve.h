@@ -17,8 +17,11 @@ class FullscreenResolve {
   const gl::Program& program() const { return program_; }
   // Draws over all of `target` (no depth, no blending, or with `multiply` dst * src), or over
   // the `scissor` rectangle (x, y, width, height) only; the caller set uniforms and textures.
+  // With `depth` (D32F, the target's size) the program's gl_FragDepth is written there too
+  // (depth test GL_ALWAYS).
   void draw(RenderWorld& world, const gl::Texture& target, bool multiply = false,
-            const std::optional<glm::ivec4>& scissor = std::nullopt);
+            const std::optional<glm::ivec4>& scissor = std::nullopt,
+            const gl::Texture* depth = nullptr);
 
  private:
   gl::Program program_;
