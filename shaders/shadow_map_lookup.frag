@@ -236,9 +236,10 @@ float visibility() {
 
 // Cube maps are looked up in two passes (shadow_map_lookup.cpp): DIPTYCH_INTERIOR, without the
 // cube-edge path, for pixels whose every tap stays on their own face, marking the rest with
-// depth 1; then the full shader, depth-tested, only for those (background pixels are neither). llvmpipe runs a branch's code for every
-// lane, so the edge path (two re-projections) cost every tap of every pixel. Largest tap offset
-// in texels per filter: the interior test is conservative for each of them.
+// depth 1; then the full shader, depth-tested, only for those (background pixels are neither).
+// llvmpipe runs a branch's code for every lane, so the edge path (two re-projections) cost every
+// tap of every pixel. Largest tap offset in texels per filter: the interior test is conservative
+// for each of them.
 float maxTapOffset() {
   if (uFilter == FILTER_PCF) return float(uKernel / 2);
   if (uFilter == FILTER_POISSON) return uRadius;
