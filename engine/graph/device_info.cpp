@@ -37,6 +37,13 @@ std::string widestIsa(const std::string& flags) {
 
 }  // namespace
 
+nlohmann::json loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  double one = 0, five = 0, fifteen = 0;
+  if (!(in >> one >> five >> fifteen)) return nullptr;
+  return {one, five, fifteen};
+}
+
 nlohmann::json describeDevices(const gl::GlContext* context) {
   nlohmann::json out;
   if (context) {
@@ -51,7 +58,8 @@ nlohmann::json describeDevices(const gl::GlContext* context) {
   const auto [model, flags] = cpuModelAndFlags();
   out["cpu"] = {{"model", model.empty() ? "unknown" : model},
                 {"threads", std::thread::hardware_concurrency()},
-                {"isa", widestIsa(flags)}};
+                {"isa", widestIsa(flags)},
+                {"load_average", loadAverage()}};
   RtDevice device;
   auto property = [&](RTCDeviceProperty p) { return rtcGetDeviceProperty(device.handle(), p); };
   nlohmann::json packets = nlohmann::json::array();
@@ -70,9 +78,14 @@ std::string deviceSummary(const nlohmann::json& d) {
   if (!d["gl"].is_null())
     gl = fmt::format("{} ({}) via {}", d["gl"]["renderer"].get<std::string>(),
                      d["gl"]["version"].get<std::string>(), d["gl"]["context"].get<std::string>());
-  return fmt::format("GL: {} | CPU: {}, {} threads, {} | Embree {}", gl,
+  // The 1-minute load when measured: other work on the cores stretches every timing.
+  const nlohmann::json load = d["cpu"].value("load_average", nlohmann::json());
+  const std::string loadText =
+      load.is_array() && !load.empty() ? fmt::format(", load {:.2f}", load[0].get<double>()) : "";
+  return fmt::format("GL: {} | CPU: {}, {} threads, {}{} | Embree {}", gl,
                      d["cpu"]["model"].get<std::string>(), d["cpu"]["threads"].get<unsigned>(),
-                     d["cpu"]["isa"].get<std::string>(), d["embree"]["version"].get<std::string>());
+                     d["cpu"]["isa"].get<std::string>(), loadText,
+                     d["embree"]["version"].get<std::string>());
 }
 
 }  // namespace diptych

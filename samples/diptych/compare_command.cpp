@@ -39,8 +39,34 @@ namespace {
 struct CompareOptions {
   std::string scene, variants, reference = "whitted", out = "out", size = "640x480",
                                metric = "flip_mean", context = "auto", shading;
-  int frames = 3, warmup = 1;
+  int frames = 3, warmup = 1, rounds = 1;
 };
+
+// The median over timing rounds of a variant's frame and of each pass, and its speed-up paired
+// with the reference of the same round: a change of machine load between rounds moves both
+// sides of each ratio (docs/compare.md, "Timing rounds").
+struct RoundTimes {
+  std::vector<double> totalMs;
+  std::vector<nlohmann::json> passMs;
+};
+
+nlohmann::json medianPassMs(const std::vector<nlohmann::json>& rounds) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [pass, _] : rounds.front().items()) {
+    std::vector<double> ms;
+    for (const nlohmann::json& r : rounds)
+      if (r.contains(pass)) ms.push_back(r[pass].get<double>());
+    out[pass] = summarize(ms).median;
+  }
+  return out;
+}
+
+double pairedSpeedup(const std::vector<double>& referenceMs, const std::vector<double>& totalMs) {
+  std::vector<double> ratios;
+  for (std::size_t r = 0; r < totalMs.size() && r < referenceMs.size(); ++r)
+    if (totalMs[r] > 0) ratios.push_back(referenceMs[r] / totalMs[r]);
+  return ratios.empty() ? 0.0 : summarize(ratios).median;
+}
 
 // Pixels whose material has the coefficient `pick` > 0 (k_ps for reflection, k_t for transmission).
 std::vector<std::uint8_t> materialMask(const Scene& scene, const CpuImage& gbuffer,
@@ -124,6 +150,7 @@ void runCompare(const CompareOptions& o) {
       o.scene.empty() ? std::string(DIPTYCH_SAMPLES_DIR) + "/scenes/whitted.json" : o.scene;
   if (o.frames < 1) throw InputError("--frames", "", "need at least one measured frame");
   if (o.warmup < 0) throw InputError("--warmup", "", "must not be negative");
+  if (o.rounds < 1) throw InputError("--rounds", "", "need at least one timing round");
   const auto [width, height] = parseSize(o.size, 8192);
   const PassRegistry& registry = builtinPasses();
   const ReferenceSpec reference = parseReference(o.reference, registry);
@@ -174,7 +201,7 @@ void runCompare(const CompareOptions& o) {
   std::fprintf(stderr, "compare: %s\n", deviceSummary(devices).c_str());
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir / "cache");
-  const int steps = int(variants.size()) + 2;
+  const int steps = int(variants.size()) + 2 + (o.rounds - 1) * (int(variants.size()) + 1);
   int step = 0;
 
   // The reference, cached by scene contents + settings.
@@ -183,6 +210,22 @@ void runCompare(const CompareOptions& o) {
   const auto cached = dir / "cache" / ("reference-" + cacheKey(scene, reference, frame) + ".exr");
   Image referenceImage;
   double referenceMs = 0;
+  std::vector<double> referenceRounds;  // this run's reference timings, one per round
+  const Recipe referenceRecipe = reference.recipe();
+  std::unique_ptr<Scene> displaced;
+  std::unique_ptr<RenderWorld> displacedWorld;
+  const auto referenceWorld = [&]() -> RenderWorld& {
+    if (bumped && !displacedWorld) {
+      clock.restart();
+      displaced = std::make_unique<Scene>(withSurfaceDetail(scene, SurfaceDetail::Displaced));
+      displacedWorld = std::make_unique<RenderWorld>(*displaced, context.get());
+      displacedWorld->rtScene();
+      oneTime["displaced_reference_build_ms"] = clock.milliseconds();
+      log().info("reference traces the bump-mapped surfaces displaced ({} triangles)",
+                 displacedWorld->geometry().triangleCount());
+    }
+    return displacedWorld ? *displacedWorld : world;
+  };
   // Per-pixel sphere-tracing steps (passes/rt/sdf_steps.h), cached beside the reference.
   const bool sdfSteps = sceneHasSdf(scene) && reference.passType != "rt_path";
   bool referenceCached = std::filesystem::exists(cached) &&
@@ -192,25 +235,19 @@ void runCompare(const CompareOptions& o) {
     referenceImage = readImage(cached);
     referenceMs =
         nlohmann::json::parse(std::ifstream(cached.string() + ".json"))["ms"].get<double>();
+    // Paired speed-ups need this run's reference time in every round: the image stays cached.
+    if (o.rounds > 1)
+      referenceRounds.push_back(runGraph(referenceRecipe, referenceWorld(), frame,
+                                         referenceRecipe.outputs, o.warmup, o.frames)
+                                    .totalMs);
   } else {
-    const Recipe recipe = reference.recipe();
-    std::unique_ptr<Scene> displaced;
-    std::unique_ptr<RenderWorld> displacedWorld;
-    if (bumped) {
-      clock.restart();
-      displaced = std::make_unique<Scene>(withSurfaceDetail(scene, SurfaceDetail::Displaced));
-      displacedWorld = std::make_unique<RenderWorld>(*displaced, context.get());
-      displacedWorld->rtScene();
-      oneTime["displaced_reference_build_ms"] = clock.milliseconds();
-      log().info("reference traces the bump-mapped surfaces displaced ({} triangles)",
-                 displacedWorld->geometry().triangleCount());
-    }
+    const Recipe& recipe = referenceRecipe;
     std::vector<std::string> outputs = recipe.outputs;
     if (sdfSteps) outputs.push_back("reference.sdf_steps");
-    const GraphRun ref = runGraph(recipe, displacedWorld ? *displacedWorld : world, frame, outputs,
-                                  o.warmup, o.frames);
+    const GraphRun ref = runGraph(recipe, referenceWorld(), frame, outputs, o.warmup, o.frames);
     referenceImage = ref.outputs.at("reference.color").toImage();
     referenceMs = ref.totalMs;
+    referenceRounds.push_back(ref.totalMs);
     oneTime["reference_first_frame_ms"] = ref.firstFrameMs;
     writeImage(cached, referenceImage);
     if (ref.outputs.count("reference.variance"))  // path tracing: the per-pixel variance too
@@ -241,6 +278,12 @@ void runCompare(const CompareOptions& o) {
   progress("compare", ++step, steps, "variants");
 
   std::vector<ReportVariant> results;
+  std::vector<RoundTimes> rounds(variants.size());
+  // Per variant: its own world where it has one (kept for the later timing rounds) and the
+  // outputs its graph was compiled with (the same graph in every round).
+  std::vector<std::unique_ptr<Scene>> variantScenes(variants.size());
+  std::vector<std::unique_ptr<RenderWorld>> variantWorlds(variants.size());
+  std::vector<std::vector<std::string>> variantOutputs(variants.size());
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const Variant& v = variants[i];
     const Recipe& recipe = recipes[i];
@@ -253,15 +296,15 @@ void runCompare(const CompareOptions& o) {
                                         [](const RecipePass& p) { return p.type == "gbuffer"; });
     if (!hasGbuffer) outs = {recipe.outputs.front()};
     // A geometry variant runs on its own world: the scene with the quadrics tessellated.
-    std::unique_ptr<Scene> tessellated;
-    std::unique_ptr<RenderWorld> tessellatedWorld;
     if (auto own = variantScene(scene, v)) {
-      tessellated = std::make_unique<Scene>(std::move(*own));
-      for (std::size_t w = scene.warnings.size(); w < tessellated->warnings.size(); ++w)
-        log().warn("{}: {}", v.name, tessellated->warnings[w]);
-      tessellatedWorld = std::make_unique<RenderWorld>(*tessellated, context.get());
+      variantScenes[i] = std::make_unique<Scene>(std::move(*own));
+      const Scene& tessellated = *variantScenes[i];
+      for (std::size_t w = scene.warnings.size(); w < tessellated.warnings.size(); ++w)
+        log().warn("{}: {}", v.name, tessellated.warnings[w]);
+      variantWorlds[i] = std::make_unique<RenderWorld>(tessellated, context.get());
     }
-    RenderWorld& variantWorld = tessellatedWorld ? *tessellatedWorld : world;
+    RenderWorld& variantWorld = variantWorlds[i] ? *variantWorlds[i] : world;
+    variantOutputs[i] = outs;
     // The geometry the ray tracers hold (Embree's input, without its BVH): 12 bytes per vertex
     // and per triangle; an analytic or SDF instance is its AnalyticInstance.
     std::size_t tracedTriangles = 0, tracedBytes = 0;
@@ -274,6 +317,8 @@ void runCompare(const CompareOptions& o) {
       tracedBytes += 12 * (m.positions.size() + m.indices.size() / 3);
     }
     const GraphRun run = runGraph(recipe, variantWorld, frame, outs, o.warmup, o.frames);
+    rounds[i].totalMs.push_back(run.totalMs);
+    rounds[i].passMs.push_back(run.passMs);
     // Work this variant did once for the world (a static shadow map, a prefiltered environment),
     // outside its frame medians. Variants share the world: what an earlier one built is reused.
     const nlohmann::json variantOneTime = run.oneTimeMs;
@@ -309,6 +354,34 @@ void runCompare(const CompareOptions& o) {
     progress("compare", ++step, steps, v.name);
   }
 
+  // Timing rounds 2..R: the reference and every variant again, in the same order, so that a
+  // change of load between the first variant and the last reaches every figure alike. Images and
+  // metrics are the first round's (the frames are deterministic).
+  for (int r = 1; r < o.rounds; ++r) {
+    const std::string round = fmt::format("round {}/{}: ", r + 1, o.rounds);
+    progress("compare", ++step, steps, round + "reference");
+    referenceRounds.push_back(runGraph(referenceRecipe, referenceWorld(), frame,
+                                       referenceRecipe.outputs, o.warmup, o.frames)
+                                  .totalMs);
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+      const GraphRun run = runGraph(recipes[i], variantWorlds[i] ? *variantWorlds[i] : world, frame,
+                                    variantOutputs[i], o.warmup, o.frames);
+      rounds[i].totalMs.push_back(run.totalMs);
+      rounds[i].passMs.push_back(run.passMs);
+      progress("compare", ++step, steps, round + variants[i].name);
+    }
+  }
+  if (o.rounds > 1) {
+    referenceMs = summarize(referenceRounds).median;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      nlohmann::json& v = results[i].result;
+      v["total_ms"] = summarize(rounds[i].totalMs).median;
+      v["total_ms_rounds"] = rounds[i].totalMs;
+      v["pass_ms"] = medianPassMs(rounds[i].passMs);
+      v["speedup_vs_reference"] = pairedSpeedup(referenceRounds, rounds[i].totalMs);
+    }
+  }
+
   // Pareto front in (time, error): no other variant is at least as fast and as accurate, and
   // strictly better in one.
   for (ReportVariant& a : results) {
@@ -326,19 +399,29 @@ void runCompare(const CompareOptions& o) {
       {"reference",
        {{"spec", reference.text},
         {"ms", referenceMs},
+        {"ms_rounds", referenceRounds},
         {"cached", referenceCached},
+        // The time too, from the run that cached the image; with rounds it is this run's.
+        {"ms_cached", referenceCached && o.rounds == 1},
         {"surfaces", bumped ? "displaced" : "as authored"}}},
       {"frames", o.frames},
       {"warmup", o.warmup},
+      {"rounds", o.rounds},
+      {"load_average_end", loadAverage()},
       {"pareto_metric", o.metric},
       {"devices", devices},
       {"one_time_ms", oneTime},
       {"method",
        fmt::format(
            "reference and variants alike: per pass, median of {} frames after {} warm-up frames "
-           "(steady_clock); total = sum of per-pass medians. One-time costs (context, BVH build, "
-           "scene upload; each recipe's first frame) are reported apart, never inside a frame",
-           o.frames, o.warmup)}};
+           "(steady_clock); total = sum of per-pass medians{}. One-time costs (context, BVH "
+           "build, scene upload; each recipe's first frame) are reported apart, never inside a "
+           "frame",
+           o.frames, o.warmup,
+           o.rounds > 1 ? fmt::format("; {} timing rounds (reference, then every variant, in "
+                                      "turn): medians over rounds, speed-ups paired per round",
+                                      o.rounds)
+                        : std::string())}};
   std::vector<std::string> stepFiles;
   if (sdfSteps)
     header["sdf_steps"] =
@@ -356,7 +439,10 @@ void runCompare(const CompareOptions& o) {
                 r.result["pareto"].get<bool>() ? "*" : "");
   }
   std::printf("reference %s: %.2f ms%s; %s\nwrote %zu files to %s (open %s)\n",
-              reference.text.c_str(), referenceMs, referenceCached ? " (cached)" : "",
+              reference.text.c_str(), referenceMs,
+              !referenceCached ? ""
+              : o.rounds == 1  ? " (cached)"
+                               : " (image cached; timed in this run)",
               header["method"].get<std::string>().c_str(), written.size(), dir.string().c_str(),
               (dir / "report.html").string().c_str());
 }
@@ -378,6 +464,10 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--frames", o->frames, "Measured frames per variant (median)")
       ->capture_default_str();
   cmd->add_option("--warmup", o->warmup, "Warm-up frames per variant")->capture_default_str();
+  cmd->add_option("--rounds", o->rounds,
+                  "Timing rounds: the reference and every variant timed R times in turn; medians "
+                  "over rounds, speed-ups paired per round (R > 1 re-times a cached reference)")
+      ->capture_default_str();
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--out", o->out, "Output folder")->capture_default_str();
   cmd->add_option("--pareto-metric", o->metric, "Error metric of the plot and Pareto front")

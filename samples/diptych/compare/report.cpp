@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 
@@ -177,7 +178,9 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       htmlEscape(header["scene"].get<std::string>()),
       htmlEscape(header["reference"]["spec"].get<std::string>()),
       header["reference"]["ms"].get<double>(),
-      header["reference"]["cached"].get<bool>() ? ", cached" : "",
+      header["reference"].value("ms_cached", false) ? ", time from the cached run"
+      : header["reference"]["cached"].get<bool>()   ? ", image cached"
+                                                    : "",
       header["size"]["width"].get<int>(), header["size"]["height"].get<int>(),
       htmlEscape(header["method"].get<std::string>()));
   page +=
@@ -210,11 +213,18 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
     // Work the variant did once for the world (static shadow maps, prefiltered environments):
     // outside its frame time, listed in the cell's tooltip.
     const OneTimeCosts oneTime = oneTimeCosts(v.value("one_time_ms", nlohmann::json::object()));
+    // With timing rounds, the range of the round totals beside their median.
+    std::string spread;
+    if (const auto r = v.value("total_ms_rounds", nlohmann::json::array()); r.size() > 1) {
+      const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+      spread = fmt::format(" <span class=\"caption\">({:.1f}&ndash;{:.1f})</span>",
+                           lo->get<double>(), hi->get<double>());
+    }
     page += fmt::format(
-        "<tr class=\"{}\"><td>{}</td><td>{:.2f}</td><td>{:.2f}x</td><td title=\"{}\">{:.1f}</td>"
-        "<td>{:.0f}</td>",
+        "<tr class=\"{}\"><td>{}</td><td>{:.2f}{}</td><td>{:.2f}x</td><td title=\"{}\">{:.1f}"
+        "</td><td>{:.0f}</td>",
         v["pareto"].get<bool>() ? "pareto" : "", htmlEscape(v["name"].get<std::string>()),
-        v["total_ms"].get<double>(), v["speedup_vs_reference"].get<double>(),
+        v["total_ms"].get<double>(), spread, v["speedup_vs_reference"].get<double>(),
         htmlEscape(oneTime.parts), oneTime.totalMs, v["rays"].get<double>());
     for (const auto& m : shown)
       page += "<td>" + number(v["metrics"].value(m, nlohmann::json())) + "</td>";
