@@ -228,6 +228,9 @@ void runCompare(const CompareOptions& o) {
   };
   // Per-pixel sphere-tracing steps (passes/rt/sdf_steps.h), cached beside the reference.
   const bool sdfSteps = sceneHasSdf(scene) && reference.passType != "rt_path";
+  // The same graph in every round (the steps image is an output of it where there are SDFs).
+  std::vector<std::string> referenceOutputs = referenceRecipe.outputs;
+  if (sdfSteps) referenceOutputs.push_back("reference.sdf_steps");
   bool referenceCached = std::filesystem::exists(cached) &&
                          std::filesystem::exists(cached.string() + ".json") &&
                          (!sdfSteps || std::filesystem::exists(cached.string() + ".sdf_steps.exr"));
@@ -237,14 +240,12 @@ void runCompare(const CompareOptions& o) {
         nlohmann::json::parse(std::ifstream(cached.string() + ".json"))["ms"].get<double>();
     // Paired speed-ups need this run's reference time in every round: the image stays cached.
     if (o.rounds > 1)
-      referenceRounds.push_back(runGraph(referenceRecipe, referenceWorld(), frame,
-                                         referenceRecipe.outputs, o.warmup, o.frames)
-                                    .totalMs);
+      referenceRounds.push_back(
+          runGraph(referenceRecipe, referenceWorld(), frame, referenceOutputs, o.warmup, o.frames)
+              .totalMs);
   } else {
-    const Recipe& recipe = referenceRecipe;
-    std::vector<std::string> outputs = recipe.outputs;
-    if (sdfSteps) outputs.push_back("reference.sdf_steps");
-    const GraphRun ref = runGraph(recipe, referenceWorld(), frame, outputs, o.warmup, o.frames);
+    const GraphRun ref =
+        runGraph(referenceRecipe, referenceWorld(), frame, referenceOutputs, o.warmup, o.frames);
     referenceImage = ref.outputs.at("reference.color").toImage();
     referenceMs = ref.totalMs;
     referenceRounds.push_back(ref.totalMs);
@@ -360,9 +361,9 @@ void runCompare(const CompareOptions& o) {
   for (int r = 1; r < o.rounds; ++r) {
     const std::string round = fmt::format("round {}/{}: ", r + 1, o.rounds);
     progress("compare", ++step, steps, round + "reference");
-    referenceRounds.push_back(runGraph(referenceRecipe, referenceWorld(), frame,
-                                       referenceRecipe.outputs, o.warmup, o.frames)
-                                  .totalMs);
+    referenceRounds.push_back(
+        runGraph(referenceRecipe, referenceWorld(), frame, referenceOutputs, o.warmup, o.frames)
+            .totalMs);
     for (std::size_t i = 0; i < variants.size(); ++i) {
       const GraphRun run = runGraph(recipes[i], variantWorlds[i] ? *variantWorlds[i] : world, frame,
                                     variantOutputs[i], o.warmup, o.frames);

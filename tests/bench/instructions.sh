@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Instructions executed per frame, for recipes on one scene: a measure of work that does not
+# move with the machine's load (docs/benchmarks.md, "Instructions per frame"). On a shared
+# 2-core VM the same frame's time moves by up to 2x with what the other core runs, so a
+# difference of a few percent between two recipes cannot be told from timings; instruction
+# counts are exact and repeatable (to a few 0.1% from thread scheduling).
+#
+# Method: valgrind --tool=callgrind on `diptych render` (all threads: Diptych's, TBB's and
+# llvmpipe's JIT-compiled shader code), once with 1 measured frame and once with 2 (each after 1
+# warm-up frame); the difference of the two totals is one steady-state frame without the
+# process start, the scene load, the BVH build, shader compilation or the warm-up. Caveats:
+# valgrind emulates no AVX-512, so Embree runs its AVX2 kernels (8-wide, not 16-wide), and an
+# instruction is not a cycle (a division or a cache miss costs more than an add): compare
+# recipes that do similar work, and read timings beside it (tests/bench/cpu_ms.py).
+# Usage (from the repository root; needs valgrind):
+#   tests/bench/instructions.sh DIPTYCH SCENE SIZE RECIPE [RECIPE...]
+set -euo pipefail
+[ $# -ge 4 ] || { sed -n '2,16p' "$0"; exit 2; }
+command -v valgrind >/dev/null || { echo "instructions.sh: needs valgrind (apt-get install valgrind)" >&2; exit 2; }
+diptych=$1 scene=$2 size=$3
+shift 3
+out=$(mktemp -d)
+echo "scene $scene, $size; instructions per frame (callgrind, all threads)"
+for recipe in "$@"; do
+  name=$(basename "$recipe" .json)
+  for frames in 1 2; do
+    valgrind --tool=callgrind --callgrind-out-file="$out/$name-$frames.out" "$diptych" render \
+      "$scene" --recipe "$recipe" --size "$size" --frames "$frames" --warmup 1 \
+      --out "$out/$name.exr" >/dev/null 2>&1 &
+  done
+  wait
+  total() { grep -m1 '^totals:' "$1" | awk '{print $2}'; }
+  one=$(total "$out/$name-1.out") two=$(total "$out/$name-2.out")
+  awk -v n="$name" -v a="$one" -v b="$two" 'BEGIN { printf "%-12s %8.1f M instructions per frame\n", n, (b - a) / 1e6 }'
+done
+rm -rf "$out"
