@@ -3,7 +3,8 @@
 // for the per-pixel steps of the forward producers (mask, resolve) and GL shade. The scene and
 // shading SSBOs are bound so that the fragment shader can rebuild G-buffer points
 // (shaders/gl/scene_shading.glsl, surfaceFromHits). The triangle lies at depth 0
-// (shaders/fullscreen.vert), the far end of the engine's reversed-Z (camera_math.h).
+// (shaders/fullscreen.vert), the far end of the engine's reversed-Z (camera_math.h). Every draw
+// of a world goes through that world's one framebuffer (fullscreen_resolve.cpp says why).
 //
 // State contract: after every draw, whatever the options, the framebuffer and vertex array 0
 // are bound; the depth test is off, the depth mask on and the depth function GL_LESS (GL's
@@ -50,8 +51,6 @@ class FullscreenResolve {
 
  private:
   gl::Program program_;
-  gl::Framebuffer framebuffer_;
-  gl::VertexArray empty_;
 };
 
 // Clears a float colour texture to zero (the slots' "0 elsewhere").
