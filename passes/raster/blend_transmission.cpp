@@ -57,7 +57,7 @@ void renderBlendFirst(RenderWorld& world, const gl::Texture& hits, const gl::Tex
   gl::glBindTextureUnit(0, hits.id());
   if (surface) gl::glBindTextureUnit(gl::UNIT_GBUFFER_SURFACE, surface->id());
   program->program().set("uEye", eye);
-  program->draw(world, first, /*multiply=*/false, scissor, depth);
+  program->draw(world, first, {.scissor = scissor, .depth = depth});
 }
 
 std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry& world,
@@ -174,7 +174,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   gl::glBindTextureUnit(gl::UNIT_BLEND_FIRST, cache.first.id());
   if (!cache.mask)
     cache.mask.emplace(gl::loadProgram({"fullscreen.vert", "blend_transmission.frag"}));
-  cache.mask->draw(world, out, /*multiply=*/true, scissor);
+  cache.mask->draw(world, out, {.multiply = true, .scissor = scissor});
 }
 
 }  // namespace diptych

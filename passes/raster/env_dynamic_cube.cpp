@@ -89,7 +89,7 @@ void EnvDynamicCubePass::execute(PassContext& c) {
     bindSurface(c, surface_);
     resolve->program().set("uInstance", mesh.instance);
     resolve->program().set("uEye", c.frame().camera.position);
-    resolve->draw(world, out, /*multiply=*/false, rect.scissor());
+    resolve->draw(world, out, {.scissor = rect.scissor()});
   }
   c.count("cube_face_renders", double(faceRenders));
 }

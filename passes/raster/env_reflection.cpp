@@ -193,7 +193,7 @@ void EnvReflectionPass::execute(PassContext& c) {
   c.count("env_scissor_pixels", covered.empty() ? 0.0
                                                 : double(covered.hi.x - covered.lo.x) *
                                                       double(covered.hi.y - covered.lo.y));
-  if (!covered.empty()) pass.draw(world, out, /*multiply=*/false, covered.scissor());
+  if (!covered.empty()) pass.draw(world, out, {.scissor = covered.scissor()});
 }
 
 }  // namespace diptych

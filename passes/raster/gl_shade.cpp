@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string>
-#include <utility>
 
 #include "engine/gl/shader.h"
 #include "engine/gl/shading_buffers.h"
@@ -20,9 +20,6 @@ namespace {
 struct GlShadeState {
   std::map<std::string, FullscreenResolve> programs;
   std::unique_ptr<GlEnvironment> environment;  // uploaded on the first frame
-  // The split draw's target: the colour output with the G-buffer's depth (never written).
-  gl::Framebuffer split = gl::Framebuffer::create();
-  gl::VertexArray empty = gl::VertexArray::create();  // core profile: a VAO for the triangle
 };
 
 // SHADE_PART of gl_shade.frag: every pixel, the background only, the surfaces only.
@@ -60,47 +57,6 @@ FullscreenResolve& shadeProgram(GlShadeState& state, RenderWorld& world, int vis
 void bindImage(GLuint unit, const gl::Texture& texture, GLenum format, bool layered) {
   gl::glBindImageTexture(unit, texture.id(), 0, layered ? GL_TRUE : GL_FALSE, 0, GL_READ_ONLY,
                          format);
-}
-
-// Draws the background, then the surfaces, each program behind an early depth test against the
-// G-buffer's depth: the full-screen triangle lies at depth 0 (fullscreen.vert), the value the
-// G-buffer clears to and keeps where no surface is (reversed-Z, every surface > 0), so GL_GEQUAL
-// passes only there and GL_LESS only on surfaces. The depth function and mask are left as they
-// were found and the depth test off, as the one-program draw (FullscreenResolve) leaves them.
-void drawSplit(GlShadeState& state, RenderWorld& world, const gl::Program& background,
-               const gl::Program& surfaces, const gl::Texture& target, const gl::Texture& depth) {
-  GLint depthFunc = GL_LESS, depthMask = GL_TRUE;
-  gl::glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
-  gl::glGetIntegerv(GL_DEPTH_WRITEMASK, &depthMask);
-  world.glScene().bindStorage();
-  world.glShading().bindStorage();
-  state.split.attachColor(0, target);
-  state.split.attachDepth(depth);
-  state.split.checkComplete("gl shade");
-  state.split.bind();
-  gl::glViewport(0, 0, target.width(), target.height());
-  gl::glDisable(GL_BLEND);
-  gl::glDisable(GL_CULL_FACE);
-  gl::glDisable(GL_SCISSOR_TEST);
-  gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  gl::glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // the G-buffer's convention: depth 0 far
-  gl::glEnable(GL_DEPTH_TEST);
-  gl::glDepthMask(GL_FALSE);
-  state.empty.bind();
-  const vec2 size(float(target.width()), float(target.height()));
-  const std::pair<const gl::Program*, GLenum> draws[] = {{&background, GL_GEQUAL},
-                                                         {&surfaces, GL_LESS}};
-  for (const auto& [program, func] : draws) {
-    program->set("uViewportSize", size);
-    program->use();
-    gl::glDepthFunc(func);
-    gl::glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
-  gl::glBindVertexArray(0);
-  gl::glDepthFunc(GLenum(depthFunc));
-  gl::glDepthMask(GLboolean(depthMask));
-  gl::glDisable(GL_DEPTH_TEST);
-  gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 }  // namespace
@@ -150,11 +106,20 @@ void shadeOnGl(PassContext& c, const ShadeIo& io) {
   // Producers that wrote their signal with imageStore made it visible to image loads only
   // after this barrier (GL 4.5, section 7.12.2).
   gl::glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  if (split)
-    drawSplit(state, world, first.program(), second->program(), c.glTexture(io.color),
-              c.glTexture(io.depth));
-  else
-    first.draw(world, c.glTexture(io.color));
+  const gl::Texture& color = c.glTexture(io.color);
+  if (!split) {
+    first.draw(world, color);
+    return;
+  }
+  // The background, then the surfaces, each behind an early depth test against the G-buffer's
+  // depth (never written): the full-screen triangle lies at depth 0, the value the G-buffer
+  // clears to and keeps where no surface is (reversed-Z, every surface > 0), so GL_GEQUAL
+  // passes only there and GL_LESS only on surfaces.
+  const gl::Texture& depth = c.glTexture(io.depth);
+  first.draw(world, color,
+             {.depth = &depth, .depthMode = FullscreenDepth::Test, .depthFunc = GL_GEQUAL});
+  second->draw(world, color,
+               {.depth = &depth, .depthMode = FullscreenDepth::Test, .depthFunc = GL_LESS});
 }
 
 }  // namespace diptych

@@ -1,7 +1,8 @@
-// GL shade split by the G-buffer's depth (passes/raster/gl_shade.cpp, drawSplit): the background
-// program and the surface program, each behind an early depth test, give the one-program draw's
-// image bit for bit on a frame with sky and surfaces, and leave the depth state as that draw
-// leaves it (a depth mask left off would stop the next frame's G-buffer from clearing its depth).
+// GL shade split by the G-buffer's depth (passes/raster/gl_shade.cpp: two Test-mode draws of
+// passes/raster/fullscreen_resolve.h): the background program and the surface program, each
+// behind an early depth test, give the one-program draw's image bit for bit on a frame with sky
+// and surfaces, and leave the depth state as that draw leaves it (a depth mask left off would
+// stop the next frame's G-buffer from clearing its depth).
 #include <gtest/gtest.h>
 
 #include <filesystem>
