@@ -25,7 +25,7 @@ void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target,
   world.glScene().bindStorage();
   world.glShading().bindStorage();
   auto& [framebuffer, empty] = world.glCached<FullscreenTarget>();
-  framebuffer.attachColor(0, target);
+  framebuffer.attachColor(0, target, 0, o.layer);
   if (o.depth)
     framebuffer.attachDepth(*o.depth);
   else
@@ -35,6 +35,13 @@ void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target,
   gl::glViewport(0, 0, target.width(), target.height());
   // The G-buffer's convention, under which the triangle's depth 0 is the cleared "far".
   gl::glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  // Clears obey the scissor and the write masks.
+  gl::glDisable(GL_SCISSOR_TEST);
+  gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  gl::glDepthMask(GL_TRUE);
+  if (o.clearColor) gl::glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, &o.clearColor->x);
+  if (o.clearDepth && o.depth)
+    gl::glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &*o.clearDepth);
   if (o.depth) {
     const bool write = o.depthMode == FullscreenDepth::Write;
     gl::glEnable(GL_DEPTH_TEST);
@@ -50,12 +57,10 @@ void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target,
     gl::glDisable(GL_BLEND);
   }
   gl::glDisable(GL_CULL_FACE);
-  gl::glDisable(GL_SCISSOR_TEST);
   if (o.scissor) {
     gl::glEnable(GL_SCISSOR_TEST);
     gl::glScissor(o.scissor->x, o.scissor->y, o.scissor->z, o.scissor->w);
   }
-  gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   program_.set("uViewportSize", vec2(float(target.width()), float(target.height())));
   program_.use();
   empty.bind();

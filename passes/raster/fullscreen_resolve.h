@@ -39,6 +39,11 @@ struct FullscreenOptions {
   const gl::Texture* depth = nullptr;  // D32F, the target's size; no depth test without
   FullscreenDepth depthMode = FullscreenDepth::Write;
   GLenum depthFunc = GL_LESS;  // FullscreenDepth::Test only
+  int layer = -1;              // the layer of a 2D-array target; -1 for a 2D one
+  // Cleared on the framebuffer before the draw (all of the target, whatever the scissor): a
+  // framebuffer clear stays in llvmpipe's scene, binned like the draw.
+  std::optional<vec4> clearColor;
+  std::optional<float> clearDepth;  // needs `depth`
 };
 
 class FullscreenResolve {

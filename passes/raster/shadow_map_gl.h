@@ -12,6 +12,7 @@
 #include "engine/gl/objects.h"
 #include "engine/gl/scene_buffers.h"
 #include "engine/scene/world_geometry.h"
+#include "passes/raster/fullscreen_resolve.h"
 #include "passes/raster/shadow_map_frusta.h"
 #include "passes/raster/shadow_map_settings.h"
 
@@ -57,16 +58,15 @@ class ShadowMapGl {
 
  private:
   void uploadFrusta(const std::vector<LightFrustum>& frusta, const Settings& settings);
-  // The lookup program for one (light kind, bias, filter, kernel, interior-only variant, stored
-  // surface), compiled on first use.
-  const gl::Program& lookupProgram(RenderWorld& world, ViewKind kind, const Settings& settings,
-                                   bool interior, bool surface);
+  // The lookup's full-screen draw for one (light kind, bias, filter, kernel, interior-only
+  // variant, stored surface, gathered PCF), its program compiled on first use.
+  FullscreenResolve& lookupDraw(RenderWorld& world, ViewKind kind, const Settings& settings,
+                                bool interior, bool surface);
   gl::Program depth_;
-  std::map<std::array<int, 7>, gl::Program> lookups_;
+  std::map<std::array<int, 7>, FullscreenResolve> lookups_;
   gl::Texture lookupDepth_;  // marks pixels the interior cube pass left to the full one
   gl::Program alphaDepth_;   // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
-  gl::Framebuffer depthFbo_, lookupFbo_;
-  gl::VertexArray emptyVao_;  // core profile needs a bound VAO for the full-screen triangle
+  gl::Framebuffer depthFbo_;
   gl::Buffer layers_, lights_;
   // The bytes last uploaded to layers_ and lights_: a static light's frusta are uploaded once,
   // not every frame (an upload into a buffer that queued draws read makes llvmpipe wait for them).

@@ -80,12 +80,13 @@ void ShadowMapGl::uploadFrusta(const std::vector<LightFrustum>& frusta, const Se
   uploadArray(lights_, lights, uploadedLights_);
 }
 
-const gl::Program& ShadowMapGl::lookupProgram(RenderWorld& world, ViewKind kind, const Settings& s,
-                                              bool interior, bool surface) {
+FullscreenResolve& ShadowMapGl::lookupDraw(RenderWorld& world, ViewKind kind, const Settings& s,
+                                           bool interior, bool surface) {
   const int kernel = s.filter == Filter::Pcf ? s.kernel : 1;  // only PCF reads the kernel
-  gl::Program& program = lookups_[{int(kind), int(s.bias), int(s.filter), kernel, int(interior),
-                                   int(surface), int(gatherPcf)}];
-  if (!program) {
+  const std::array<int, 7> key = {int(kind),     int(s.bias),  int(s.filter), kernel,
+                                  int(interior), int(surface), int(gatherPcf)};
+  auto found = lookups_.find(key);
+  if (found == lookups_.end()) {
     std::vector<gl::ShaderDefine> defines = {{"DIPTYCH_KIND", std::to_string(int(kind))},
                                              {"DIPTYCH_BIAS", std::to_string(int(s.bias))},
                                              {"DIPTYCH_FILTER", std::to_string(int(s.filter))},
@@ -93,10 +94,13 @@ const gl::Program& ShadowMapGl::lookupProgram(RenderWorld& world, ViewKind kind,
     if (interior) defines.push_back({"DIPTYCH_INTERIOR", ""});
     if (surface) defines.push_back({"DIPTYCH_GBUFFER_SURFACE", "1"});
     if (gatherPcf) defines.push_back({"DIPTYCH_PCF_GATHER", ""});
-    program = gl::loadProgram({"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"},
-                              gl::withDefines(world.glShading().defines, defines));
+    found = lookups_
+                .emplace(key, FullscreenResolve(gl::loadProgram(
+                                  {"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"},
+                                  gl::withDefines(world.glShading().defines, defines))))
+                .first;
   }
-  return program;
+  return found->second;
 }
 
 void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& frusta,
@@ -104,9 +108,7 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
                          const gl::Texture* surface, const gl::Texture& visibility) {
   gl::ScopedGlLabel label("shadow_map.lookup");
   uploadFrusta(frusta, s);
-  world.glScene().bindStorage();
   const gl::GlShadingBuffers& shading = world.glShading();
-  shading.bindStorage();
   layers_.bindBase(GL_SHADER_STORAGE_BUFFER, gl::BINDING_SHADOW_LAYERS);
   lights_.bindBase(GL_SHADER_STORAGE_BUFFER, gl::BINDING_SHADOW_LIGHTS);
   gl::glBindTextureUnit(0, gbuffer.id());
@@ -131,13 +133,6 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
         p.set(("uPoisson[" + std::to_string(i) + "]").c_str(), poisson_[std::size_t(i)]);
   };
 
-  gl::glDisable(GL_DEPTH_TEST);
-  gl::glDisable(GL_BLEND);
-  gl::glDisable(GL_CULL_FACE);
-  gl::glDisable(GL_SCISSOR_TEST);
-  gl::glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  gl::glViewport(0, 0, visibility.width(), visibility.height());
-  emptyVao_.bind();
   if (!lookupDepth_ || lookupDepth_.width() != visibility.width() ||
       lookupDepth_.height() != visibility.height()) {
     lookupDepth_ =
@@ -146,48 +141,34 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
   }
   const bool layered = visibility.kind() == gl::TextureKind::Tex2DArray;
   for (int light = 0; light < visibility.layers(); ++light) {
-    lookupFbo_.attachColor(0, visibility, 0, layered ? light : -1);
-    lookupFbo_.attachDepth(lookupDepth_);
-    lookupFbo_.checkComplete("shadow_map.lookup");
-    lookupFbo_.bind();
-    // Lit (1) where the lookup discards: background pixels (shadow_map_lookup.frag).
-    const GLfloat lit[4] = {1.f, 1.f, 1.f, 1.f};
-    gl::glClearNamedFramebufferfv(lookupFbo_.id(), GL_COLOR, 0, lit);
     // A layer without a light (a scene with no lights still has one) reads as lit.
     const bool hasLight = light < int(frusta.size());
     const ViewKind kind = hasLight ? frusta[std::size_t(light)].kind : ViewKind::Unshadowed;
-    const auto draw = [&](const gl::Program& program) {
-      setUniforms(program);
-      program.set("uLight", hasLight ? light : -1);
-      program.use();
-      gl::glDrawArrays(GL_TRIANGLES, 0, 3);
+    const auto draw = [&](FullscreenResolve& resolve, FullscreenOptions options) {
+      setUniforms(resolve.program());
+      resolve.program().set("uLight", hasLight ? light : -1);
+      options.layer = layered ? light : -1;
+      resolve.draw(world, visibility, options);
     };
+    // Lit (1) where the lookup discards: background pixels (shadow_map_lookup.frag).
+    const vec4 lit(1.f);
     // Receiver-plane bias keeps one pass: its depth gradient comes from screen derivatives,
     // and with the split its visibility moved (MSE 2e-5 on whitted), so it is left exact.
     if (kind != ViewKind::Cube || s.bias == Bias::ReceiverPlane || !splitCube) {
-      gl::glDisable(GL_DEPTH_TEST);
-      draw(lookupProgram(world, kind, s, false, surface != nullptr));
+      draw(lookupDraw(world, kind, s, false, surface != nullptr), {.clearColor = lit});
       continue;
     }
     // Cube maps: the interior variant (no cube-edge path) writes every pixel whose taps all
-    // stay on its own face and marks the others with depth 1; the full shader then runs,
-    // behind an early depth test, only there (shadow_map_lookup.frag). The depth is cleared to
-    // 0 ("done") so that background pixels, which the interior pass discards, keep the cleared
-    // lit colour and are skipped by the second pass too.
-    const GLfloat done = 0.f;
-    gl::glClearNamedFramebufferfv(lookupFbo_.id(), GL_DEPTH, 0, &done);
-    gl::glEnable(GL_DEPTH_TEST);
-    gl::glDepthMask(GL_TRUE);
-    gl::glDepthFunc(GL_ALWAYS);
-    draw(lookupProgram(world, kind, s, true, surface != nullptr));
-    gl::glDepthMask(GL_FALSE);
-    gl::glDepthFunc(GL_LESS);  // the full-screen triangle is at depth 0: passes where 1
-    draw(lookupProgram(world, kind, s, false, surface != nullptr));
-    gl::glDepthMask(GL_TRUE);
-    gl::glDisable(GL_DEPTH_TEST);
+    // stay on its own face and marks the others with depth 1 (Write mode stores its
+    // gl_FragDepth); the full shader then runs, behind an early depth test, only there (Test
+    // mode, GL_LESS: the triangle's depth 0 passes where 1; shadow_map_lookup.frag). The depth
+    // is cleared to 0 ("done") so that background pixels, which the interior pass discards,
+    // keep the cleared lit colour and are skipped by the second pass too.
+    draw(lookupDraw(world, kind, s, true, surface != nullptr),
+         {.depth = &lookupDepth_, .clearColor = lit, .clearDepth = 0.f});
+    draw(lookupDraw(world, kind, s, false, surface != nullptr),
+         {.depth = &lookupDepth_, .depthMode = FullscreenDepth::Test, .depthFunc = GL_LESS});
   }
-  gl::glBindVertexArray(0);
-  gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 }  // namespace diptych::shadowmap

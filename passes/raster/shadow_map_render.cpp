@@ -17,8 +17,6 @@ namespace diptych::shadowmap {
 ShadowMapGl::ShadowMapGl()
     : depth_(gl::loadProgram({"shadow_map_depth.vert", "shadow_map_depth.frag"})),
       depthFbo_(gl::Framebuffer::create()),
-      lookupFbo_(gl::Framebuffer::create()),
-      emptyVao_(gl::VertexArray::create()),
       poisson_(poissonDisk(64)) {}
 
 namespace {
