@@ -71,6 +71,34 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
   return m;
 }
 
+vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv) {
+  // resolveMaterial's colour rule, step for step: C = color x texel (a checker replaces it),
+  // alpha x texel.a; a metallic-roughness texture re-maps C to gltfPbrToLecture's diffuse colour
+  // base (1 - metallic) (glTF spec appendix B), inlined here: its other coefficients (a pow per
+  // hit) are not read. The colour texel is sampled once; resolveMaterial's second lookup of it
+  // returns the same value.
+  const auto texture = [&](int index) -> const Texture* {
+    return index >= 0 && index < int(scene.textures.size()) ? &scene.textures[index] : nullptr;
+  };
+  vec3 color = material.color;
+  float alpha = material.alpha;
+  const Texture* colour = material.checker ? nullptr : texture(material.colorTexture);
+  vec4 c(1.f);
+  if (material.checker) {
+    color = checkerColor(*material.checker, uv);
+  } else if (colour) {
+    c = sampleTexture(*colour, uv);
+    color *= vec3(c.x, c.y, c.z);
+    alpha *= c.w;
+  }
+  if (const Texture* t = texture(material.metallicRoughnessTexture)) {
+    const vec4 mr = sampleTexture(*t, uv);
+    const vec3 base = vec3(material.baseColorFactor) * (colour ? vec3(c) : vec3(1.f));
+    color = base * (1.f - std::clamp(material.metallicFactor * mr.z, 0.f, 1.f));
+  }
+  return vec4(color, alpha);
+}
+
 vec3 normalMapped(const Texture& map, float scale, const vec3& n, const vec4& tangent, vec2 uv) {
   const vec3 nn = glm::length(n) > 0.f ? glm::normalize(n) : n;
   // Gram-Schmidt: interpolated t and n are no longer orthogonal inside a triangle.
@@ -206,6 +234,31 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, co
       scene, hit, position,
       vertexMagnitude(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]),
       faceNormal, n, front, uv, mesh.material, material);
+}
+
+vec4 resolvedColorAt(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit) {
+  // makeSurfacePoint's checks and its uv and material, per kind of hit.
+  if (hit.instance < 0 || hit.instance >= int(world.meshes.size()))
+    throw Error("resolvedColorAt: instance " + std::to_string(hit.instance) + " out of range");
+  const WorldMesh& mesh = world.meshes[hit.instance];
+  const Material& material = scene.material(mesh.material);
+  if (hit.analytic) {
+    const AnalyticInstance* a = mesh.analytic ? &*mesh.analytic : nullptr;
+    if (a && a->sdf) return resolvedColorAlpha(scene, material, vec2(0.f));
+    if (!a || int(hit.primitive) >= partCount(a->shape))
+      throw Error("resolvedColorAt: instance " + std::to_string(hit.instance) +
+                  " has no analytic part " + std::to_string(hit.primitive));
+    const vec2 uv = materialReadsUv(material)
+                        ? analyticHitUv(*a, int(hit.primitive), vec2(hit.u, hit.v))
+                        : vec2(0.f);
+    return resolvedColorAlpha(scene, material, uv);
+  }
+  if (std::size_t(hit.primitive) >= mesh.indices.size() / 3)
+    throw Error("resolvedColorAt: primitive " + std::to_string(hit.primitive) +
+                " out of range in instance " + std::to_string(hit.instance));
+  if (!std::isfinite(hit.u) || !std::isfinite(hit.v))
+    throw Error("resolvedColorAt: (u, v) not finite in instance " + std::to_string(hit.instance));
+  return resolvedColorAlpha(scene, material, interpolateUv(mesh, hit.primitive, hit.u, hit.v));
 }
 
 Ray spawnRay(const SurfacePoint& p, const vec3& direction) {

@@ -47,6 +47,12 @@ static_assert(std::is_trivially_destructible_v<SurfacePoint>);
 SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit,
                               const vec3& incoming);
 
+// C and alpha of makeSurfacePoint(scene, world, hit, ...).resolved, bit for bit (tested), and
+// nothing else: no position, normals, normal or bump map, emission or occlusion texture. The
+// texture_filtering slot's exact producer reads only these (passes/rt/texture_supersample.cpp).
+// Throws Error as makeSurfacePoint does.
+vec4 resolvedColorAt(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit);
+
 // A raster (G-buffer) hit on the tessellation of an analytic instance, moved onto the exact
 // surface: the closest hit of `primary` (the pixel's ray, the one the G-buffer intersected)
 // with that instance's shape, computed by the very function Embree's callback calls, so the
@@ -68,6 +74,10 @@ Ray spawnRay(const SurfacePoint& p, const vec3& direction);
 // reads level 0 with each texture's magnification filter.
 shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv,
                                          float uvLod = -std::numeric_limits<float>::infinity());
+
+// resolveMaterial(scene, material, uv).color and .alpha at level 0 (uvLod -infinity), by the
+// same texel lookups and float operations, without the other coefficients.
+vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv);
 
 // A tangent-space normal map applied at uv: n' = normalize(T x + B y + N z) with (x, y, z) =
 // (2 texel - 1) * (scale, scale, 1), T Gram-Schmidt-orthogonalised against n and

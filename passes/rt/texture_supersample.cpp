@@ -5,10 +5,20 @@
 #include <limits>
 
 #include "engine/graph/render_world.h"
+#include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
 #include "passes/common/hits_texel.h"
 
 namespace diptych {
+namespace {
+
+// Sub-pixel coordinate of stratum i of n along an axis of pixel x: stratum centres are
+// deterministic, so N = 1 is exactly the pixel centre.
+float stratum(int x, int i, int n) {
+  return float(x) + (float(i) + 0.5f) / float(n);
+}
+
+}  // namespace
 
 ParamSchema TextureSupersamplePass::schema() {
   return {ParamSpec::integer("samples", 4, 1, 64,
@@ -22,43 +32,93 @@ void TextureSupersamplePass::setup(PassBuilder& b) {
 
 void TextureSupersamplePass::execute(PassContext& c) {
   RenderWorld& world = c.world();
-  const Scene& scene = world.scene();
   const FrameSettings& frame = c.frame();
   const CpuImage& hits = c.cpuRead(io_.hits);
   CpuImage& out = c.cpuWrite(io_.signal);
-  const int n = samples_;
   // Fetched once, outside the loop (the first call builds the BVH).
   const RtScene& rt = world.rtScene();
   // The camera frames once per image (PinholeFrame::ray == primaryRay bit for bit).
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
   tbb::parallel_for(0, frame.height, [&](int y) {
-    for (int x = 0; x < frame.width; ++x) {
-      vec4 albedo(-1.f);
-      // Coverage only: lifting a texel onto its analytic shape never changes whether it is one.
-      if (hits.u(x, y, 0) != 0u) {
-        vec4 sum(0.f);
-        int count = 0;
-        for (int j = 0; j < n; ++j) {
-          for (int i = 0; i < n; ++i) {
-            // Stratum centres: deterministic, so N = 1 is exactly the pixel centre.
-            const float sx = float(x) + (float(i) + 0.5f) / float(n);
-            const float sy = float(y) + (float(j) + 0.5f) / float(n);
-            const Ray ray = pinhole.ray(sx, sy);
-            const auto hit = rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), false);
-            if (!hit) continue;
-            const SurfacePoint p = makeSurfacePoint(
-                scene, world.geometry(),
-                {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic}, ray.direction);
-            sum += vec4(p.resolved.color, p.resolved.alpha);
-            ++count;
-          }
-        }
-        if (count > 0) albedo = sum / float(count);
-      }
-      for (int ch = 0; ch < 4; ++ch) out.setF(x, y, ch, albedo[ch]);
-    }
+    supersampleRow(world.scene(), world.geometry(), rt, pinhole, hits, samples_, y, out);
   });
-  c.count("rays", double(frame.width) * frame.height * n * n);
+  c.count("rays", double(frame.width) * frame.height * samples_ * samples_);
+}
+
+void TextureSupersamplePass::supersampleRow(const Scene& scene, const WorldGeometry& geometry,
+                                            const RtScene& rt, const PinholeFrame& pinhole,
+                                            const CpuImage& hits, int n, int y, CpuImage& out) {
+  // The row's sub-pixel rays, pixel by pixel in stratum order, go to Embree in coherent streams
+  // of kStreamRays (RtScene::intersectRays, as rt_distributed's primary rays): one traversal
+  // setup per packet of neighbouring rays instead of one rtcIntersect1 per ray. Each pixel sums
+  // its hits in stratum order, so the signal is singleRayPixel's up to the rounding of Embree's
+  // packet kernels (docs/ray-tracing.md, "Coherent rays as Embree streams"). Scratch lives on this
+  // stack frame: nothing is allocated per pixel or per ray.
+  constexpr std::size_t kTile = RtScene::kStreamRays;
+  Ray rays[kTile];
+  int pixelOf[kTile];
+  Hit tileHits[kTile];
+  const Hit* found[kTile];
+  std::size_t filled = 0;
+  // The pixel whose rays are being summed; its rays may straddle two streams.
+  int pixel = -1, count = 0;
+  vec4 sum(0.f);
+  const auto finish = [&] {
+    if (pixel < 0) return;
+    const vec4 albedo = count > 0 ? sum / float(count) : vec4(-1.f);
+    for (int ch = 0; ch < 4; ++ch) out.setF(pixel, y, ch, albedo[ch]);
+  };
+  const auto flush = [&] {
+    rt.intersectRays({rays, filled}, {tileHits, filled}, {found, filled}, false);
+    for (std::size_t i = 0; i < filled; ++i) {
+      if (pixelOf[i] != pixel) {
+        finish();
+        pixel = pixelOf[i];
+        count = 0;
+        sum = vec4(0.f);
+      }
+      if (const Hit* h = found[i]) {
+        sum +=
+            resolvedColorAt(scene, geometry, {h->instance, h->primitive, h->u, h->v, h->analytic});
+        ++count;
+      }
+    }
+    filled = 0;
+  };
+  for (int x = 0; x < out.desc.width; ++x) {
+    // Coverage only: lifting a texel onto its analytic shape never changes whether it is one.
+    if (hits.u(x, y, 0) == 0u) {
+      for (int ch = 0; ch < 4; ++ch) out.setF(x, y, ch, -1.f);
+      continue;
+    }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        rays[filled] = pinhole.ray(stratum(x, i, n), stratum(y, j, n));
+        pixelOf[filled] = x;
+        if (++filled == kTile) flush();
+      }
+  }
+  if (filled > 0) flush();
+  finish();
+}
+
+vec4 TextureSupersamplePass::singleRayPixel(const Scene& scene, const WorldGeometry& geometry,
+                                            const RtScene& rt, const PinholeFrame& pinhole, int n,
+                                            int x, int y) {
+  vec4 sum(0.f);
+  int count = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Ray ray = pinhole.ray(stratum(x, i, n), stratum(y, j, n));
+      const auto hit = rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), false);
+      if (!hit) continue;
+      const SurfacePoint p = makeSurfacePoint(
+          scene, geometry, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
+          ray.direction);
+      sum += vec4(p.resolved.color, p.resolved.alpha);
+      ++count;
+    }
+  return count > 0 ? sum / float(count) : vec4(-1.f);
 }
 
 }  // namespace diptych

@@ -1,12 +1,15 @@
 #pragma once
 // The exact producer of the texture_filtering slot (docs/textures.md): the mean base colour C
 // and coverage over each pixel's footprint, from N x N stratified sub-pixel primary rays traced
-// with Embree, each reading level 0 of the colour texture (its magnification filter) at the
-// point it hits. Sub-rays that miss the scene are left out of the mean; a pixel whose centre
-// misses (no G-buffer hit) gets -1, and shade then uses its own lookup. N = 1 traces the pixel
-// centre only: the reference's own lookup (the built-in hybrid recipe uses it so that the
-// all-exact hybrid stays equal to the Whitted reference).
+// with Embree (a row's rays as coherent streams), each reading level 0 of the colour texture
+// (its magnification filter) at the point it hits (resolvedColorAt: colour and alpha only).
+// Sub-rays that miss the scene are left out of the mean; a pixel whose centre misses (no G-buffer
+// hit) gets -1, and shade then uses its own lookup. N = 1 traces the pixel centre only: the
+// reference's own lookup (the built-in hybrid recipe uses it so that the all-exact hybrid stays
+// equal to the Whitted reference).
 #include "engine/graph/pass.h"
+#include "engine/rt/rt_scene.h"
+#include "engine/scene/camera_math.h"
 #include "passes/slots.h"
 
 namespace diptych {
@@ -18,7 +21,16 @@ class TextureSupersamplePass : public Pass {
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
 
+  // One pixel's signal traced ray by ray (RtScene::intersect, makeSurfacePoint): the producer
+  // before its streams, kept as the reference its test compares with. n: N; (x, y): the pixel.
+  static vec4 singleRayPixel(const Scene& scene, const WorldGeometry& geometry, const RtScene& rt,
+                             const PinholeFrame& pinhole, int n, int x, int y);
+
  private:
+  // Row y of the signal from N x N sub-pixel rays per pixel covered in `hits`, traced as streams.
+  static void supersampleRow(const Scene& scene, const WorldGeometry& geometry, const RtScene& rt,
+                             const PinholeFrame& pinhole, const CpuImage& hits, int n, int y,
+                             CpuImage& out);
   int samples_ = 4;  // N
   SlotIo io_;
 };
