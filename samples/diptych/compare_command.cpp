@@ -231,6 +231,9 @@ void runCompare(const CompareOptions& o) {
   // The same graph in every round (the steps image is an output of it where there are SDFs).
   std::vector<std::string> referenceOutputs = referenceRecipe.outputs;
   if (sdfSteps) referenceOutputs.push_back("reference.sdf_steps");
+  const auto timeReference = [&] {
+    return runGraph(referenceRecipe, referenceWorld(), frame, referenceOutputs, o.warmup, o.frames);
+  };
   bool referenceCached = std::filesystem::exists(cached) &&
                          std::filesystem::exists(cached.string() + ".json") &&
                          (!sdfSteps || std::filesystem::exists(cached.string() + ".sdf_steps.exr"));
@@ -239,13 +242,9 @@ void runCompare(const CompareOptions& o) {
     referenceMs =
         nlohmann::json::parse(std::ifstream(cached.string() + ".json"))["ms"].get<double>();
     // Paired speed-ups need this run's reference time in every round: the image stays cached.
-    if (o.rounds > 1)
-      referenceRounds.push_back(
-          runGraph(referenceRecipe, referenceWorld(), frame, referenceOutputs, o.warmup, o.frames)
-              .totalMs);
+    if (o.rounds > 1) referenceRounds.push_back(timeReference().totalMs);
   } else {
-    const GraphRun ref =
-        runGraph(referenceRecipe, referenceWorld(), frame, referenceOutputs, o.warmup, o.frames);
+    const GraphRun ref = timeReference();
     referenceImage = ref.outputs.at("reference.color").toImage();
     referenceMs = ref.totalMs;
     referenceRounds.push_back(ref.totalMs);
@@ -285,6 +284,9 @@ void runCompare(const CompareOptions& o) {
   std::vector<std::unique_ptr<Scene>> variantScenes(variants.size());
   std::vector<std::unique_ptr<RenderWorld>> variantWorlds(variants.size());
   std::vector<std::vector<std::string>> variantOutputs(variants.size());
+  const auto variantWorld = [&](std::size_t i) -> RenderWorld& {
+    return variantWorlds[i] ? *variantWorlds[i] : world;
+  };
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const Variant& v = variants[i];
     const Recipe& recipe = recipes[i];
@@ -304,12 +306,11 @@ void runCompare(const CompareOptions& o) {
         log().warn("{}: {}", v.name, tessellated.warnings[w]);
       variantWorlds[i] = std::make_unique<RenderWorld>(tessellated, context.get());
     }
-    RenderWorld& variantWorld = variantWorlds[i] ? *variantWorlds[i] : world;
     variantOutputs[i] = outs;
     // The geometry the ray tracers hold (Embree's input, without its BVH): 12 bytes per vertex
     // and per triangle; an analytic or SDF instance is its AnalyticInstance.
     std::size_t tracedTriangles = 0, tracedBytes = 0;
-    for (const WorldMesh& m : variantWorld.geometry().meshes) {
+    for (const WorldMesh& m : variantWorld(i).geometry().meshes) {
       if (m.analytic) {
         tracedBytes += sizeof(AnalyticInstance);
         continue;
@@ -317,7 +318,7 @@ void runCompare(const CompareOptions& o) {
       tracedTriangles += m.indices.size() / 3;
       tracedBytes += 12 * (m.positions.size() + m.indices.size() / 3);
     }
-    const GraphRun run = runGraph(recipe, variantWorld, frame, outs, o.warmup, o.frames);
+    const GraphRun run = runGraph(recipe, variantWorld(i), frame, outs, o.warmup, o.frames);
     rounds[i].totalMs.push_back(run.totalMs);
     rounds[i].passMs.push_back(run.passMs);
     // Work this variant did once for the world (a static shadow map, a prefiltered environment),
@@ -361,12 +362,10 @@ void runCompare(const CompareOptions& o) {
   for (int r = 1; r < o.rounds; ++r) {
     const std::string round = fmt::format("round {}/{}: ", r + 1, o.rounds);
     progress("compare", ++step, steps, round + "reference");
-    referenceRounds.push_back(
-        runGraph(referenceRecipe, referenceWorld(), frame, referenceOutputs, o.warmup, o.frames)
-            .totalMs);
+    referenceRounds.push_back(timeReference().totalMs);
     for (std::size_t i = 0; i < variants.size(); ++i) {
-      const GraphRun run = runGraph(recipes[i], variantWorlds[i] ? *variantWorlds[i] : world, frame,
-                                    variantOutputs[i], o.warmup, o.frames);
+      const GraphRun run =
+          runGraph(recipes[i], variantWorld(i), frame, variantOutputs[i], o.warmup, o.frames);
       rounds[i].totalMs.push_back(run.totalMs);
       rounds[i].passMs.push_back(run.passMs);
       progress("compare", ++step, steps, round + variants[i].name);
