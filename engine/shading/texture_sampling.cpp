@@ -2,17 +2,49 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace diptych {
 namespace {
 
-vec4 texel(const Image& image, int x, int y) {
+// The texel at p of an image with `channels` channels (Image::at's layout). Textures are RGBA
+// (Texture::image), so that case is one load; a grey image (a height map) repeats its channel.
+inline vec4 texelAt(const float* p, int channels) {
+  if (channels >= 4) return vec4(p[0], p[1], p[2], p[3]);
+  if (channels == 1) return vec4(p[0], p[0], p[0], 1.f);
   vec4 c(0.f, 0.f, 0.f, 1.f);
-  const int n = image.channels < 4 ? image.channels : 4;
-  for (int k = 0; k < n; ++k) c[k] = image.at(x, y, k);
-  if (image.channels == 1) c = vec4(c.x, c.x, c.x, 1.f);  // grey
+  for (int k = 0; k < channels; ++k) c[k] = p[k];
   return c;
+}
+
+// An image's texels as one lookup reads them: the row stride and channel count are fetched once
+// per lookup, each texel is then an offset into a row (issue 14's profile of
+// texture_supersample: the per-texel Image::at index and channel loop were its hottest code).
+struct Texels {
+  const float* data;
+  std::size_t rowStride;  // floats per row
+  int channels;
+  explicit Texels(const Image& image)
+      : data(image.pixels.data()),
+        rowStride(std::size_t(image.width) * std::size_t(image.channels)),
+        channels(image.channels) {}
+  const float* row(int y) const { return data + std::size_t(y) * rowStride; }
+  vec4 at(const float* row, int x) const {
+    return texelAt(row + std::size_t(x) * std::size_t(channels), channels);
+  }
+};
+
+// Texel indices x0 and x0 + 1 after the wrap mode. Inside [0, size) every mode is the identity,
+// so only a pair at the image's edge (or beyond it) takes wrapTexel's switch and divisions.
+inline void wrapPair(int x0, int size, WrapMode mode, int& a, int& b) {
+  if (x0 >= 0 && x0 < size - 1) {
+    a = x0;
+    b = x0 + 1;
+  } else {
+    a = wrapTexel(x0, size, mode);
+    b = wrapTexel(x0 + 1, size, mode);
+  }
 }
 
 // Reduces a texture coordinate to a small range before it is scaled and converted to int, so
@@ -60,9 +92,12 @@ int wrapTexel(int i, int size, WrapMode mode) {
 vec4 sampleNearest(const Image& image, vec2 uv, WrapMode wrapS, WrapMode wrapT) {
   if (image.empty()) return vec4(1.f);
   const float u = reduceCoordinate(uv.x, wrapS), v = reduceCoordinate(uv.y, wrapT);
-  const int x = wrapTexel(int(std::floor(u * float(image.width))), image.width, wrapS);
-  const int y = wrapTexel(int(std::floor(v * float(image.height))), image.height, wrapT);
-  return texel(image, x, y);
+  int x = int(std::floor(u * float(image.width))), y = int(std::floor(v * float(image.height)));
+  // As wrapPair: the identity inside the image.
+  if (x < 0 || x >= image.width) x = wrapTexel(x, image.width, wrapS);
+  if (y < 0 || y >= image.height) y = wrapTexel(y, image.height, wrapT);
+  const Texels texels(image);
+  return texels.at(texels.row(y), x);
 }
 
 vec4 sampleBilinear(const Image& image, vec2 uv, WrapMode wrapS, WrapMode wrapT) {
@@ -73,10 +108,13 @@ vec4 sampleBilinear(const Image& image, vec2 uv, WrapMode wrapS, WrapMode wrapT)
   const float x0f = std::floor(x), y0f = std::floor(y);
   const float fx = x - x0f, fy = y - y0f;
   const int x0 = int(x0f), y0 = int(y0f);
-  const int xa = wrapTexel(x0, image.width, wrapS), xb = wrapTexel(x0 + 1, image.width, wrapS);
-  const int ya = wrapTexel(y0, image.height, wrapT), yb = wrapTexel(y0 + 1, image.height, wrapT);
-  const vec4 top = glm::mix(texel(image, xa, ya), texel(image, xb, ya), fx);
-  const vec4 bottom = glm::mix(texel(image, xa, yb), texel(image, xb, yb), fx);
+  int xa, xb, ya, yb;
+  wrapPair(x0, image.width, wrapS, xa, xb);
+  wrapPair(y0, image.height, wrapT, ya, yb);
+  const Texels texels(image);
+  const float *rowA = texels.row(ya), *rowB = texels.row(yb);
+  const vec4 top = glm::mix(texels.at(rowA, xa), texels.at(rowA, xb), fx);
+  const vec4 bottom = glm::mix(texels.at(rowB, xa), texels.at(rowB, xb), fx);
   return glm::mix(top, bottom, fy);
 }
 
