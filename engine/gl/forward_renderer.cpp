@@ -201,6 +201,10 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
     glDepthMask(GL_FALSE);
     drawBackground();
   }
+  // The state FullscreenResolve leaves (passes/raster/fullscreen_resolve.h), so that no caller
+  // inherits the reversed-Z depth test: set once per render, not per draw.
+  glDisable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   // Mesa rejects draws into several colour buffers while a dual-source factor is set, even with

@@ -86,6 +86,10 @@ class ForwardRenderer {
  public:
   ForwardRenderer();
   // Renders into colour (RGBA32F 2D, or a cube face with `layer`) and depth (D32F, same size).
+  // Leaves the state the passes' full-screen draws leave (passes/raster/fullscreen_resolve.h):
+  // depth test off with GL_LESS and the mask on, blending off with (GL_ONE, GL_ZERO), scissor,
+  // culling and clip distance 0 off, all colour channels written, clip control (GL_LOWER_LEFT,
+  // GL_ZERO_TO_ONE), framebuffer and vertex array 0.
   void render(const ForwardScene& input, const ForwardView& view, const Texture& color,
               const Texture& depth, const ForwardOptions& options, int layer = -1);
 

@@ -16,42 +16,74 @@
 
 namespace diptych {
 
+namespace {
+
+const Texture* textureAt(const Scene& scene, int index) {
+  return index >= 0 && index < int(scene.textures.size()) ? &scene.textures[index] : nullptr;
+}
+
+// A material's colour and alpha at a point, and the texel they came from.
+struct ColourAlpha {
+  vec3 color{1.f};  // C
+  float alpha = 1.f;
+  vec3 texel{1.f};     // the colour texture's rgb, or the checker's colour; 1 without either
+  vec3 gltfBase{1.f};  // the glTF base colour, baseColorFactor x the colour texture's rgb
+};
+
+// The colour/alpha rule, written once for resolveMaterial and resolvedColorAlpha: C = colour x
+// texel (a checker's colour replaces it, and the colour texture with it), alpha x texel.a; where
+// a metallic-roughness texel `mr` is given, C becomes the glTF diffuse colour of the base colour
+// at this texel (gltfDiffuseColor, the loader's mapping: engine/scene/gltf_pbr.h).
+// sample(texture) reads a texture at the point, at the caller's level. Inline: it runs per hit.
+template <class Sample>
+inline ColourAlpha colourAlpha(const Scene& scene, const Material& material, vec2 uv,
+                               const vec4* mr, const Sample& sample) {
+  ColourAlpha c{.color = material.color, .alpha = material.alpha};
+  vec3 textured(1.f);  // the colour texture's rgb; 1 under a checker, as the glTF base colour
+  if (material.checker) {
+    c.color = c.texel = checkerColor(*material.checker, uv);
+  } else if (const Texture* t = textureAt(scene, material.colorTexture)) {
+    const vec4 texel = sample(*t);
+    textured = c.texel = vec3(texel.x, texel.y, texel.z);
+    c.color *= c.texel;
+    c.alpha *= texel.w;
+  }
+  if (mr) {
+    c.gltfBase = vec3(material.baseColorFactor) * textured;
+    c.color = gltfDiffuseColor(c.gltfBase, material.metallicFactor * mr->z);
+  }
+  return c;
+}
+
+}  // namespace
+
 shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv,
                                          float uvLod) {
   shading::ShadingMaterial m = shading::toShadingMaterial(material);
   // Level 0 by the texture's magnification filter unless a footprint is given (ray cones):
   // then lambda = uvLod + 0.5 log2(w h) (RTG ch. 20, eq. 20.23's texture size term).
-  const auto sampleTexture = [&](const Texture& t, vec2 at) {
-    if (!std::isfinite(uvLod)) return diptych::sampleTexture(t, at);
+  const auto sampleTexture = [&](const Texture& t) {
+    if (!std::isfinite(uvLod)) return diptych::sampleTexture(t, uv);
     const float size = float(t.image.width) * float(t.image.height);
-    return sampleTextureLod(t, at, uvLod + 0.5f * std::log2(std::max(size, 1.f)));
+    return sampleTextureLod(t, uv, uvLod + 0.5f * std::log2(std::max(size, 1.f)));
   };
-  const auto texture = [&](int index) -> const Texture* {
-    return index >= 0 && index < int(scene.textures.size()) ? &scene.textures[index] : nullptr;
-  };
-  if (material.checker) {
-    m.color = checkerColor(*material.checker, uv);
-    m.baseColor = m.color;
-  } else if (const Texture* t = texture(material.colorTexture)) {
-    const vec4 c = sampleTexture(*t, uv);
-    m.color *= vec3(c.x, c.y, c.z);
-    m.baseColor *= vec3(c.x, c.y, c.z);
-    m.alpha *= c.w;
-  }
-  if (const Texture* t = texture(material.emissionTexture)) {
-    const vec4 e = sampleTexture(*t, uv);
+  const Texture* metallicRoughness = textureAt(scene, material.metallicRoughnessTexture);
+  const vec4 mr = metallicRoughness ? sampleTexture(*metallicRoughness) : vec4(1.f);
+  const ColourAlpha c =
+      colourAlpha(scene, material, uv, metallicRoughness ? &mr : nullptr, sampleTexture);
+  m.color = c.color;
+  m.alpha = c.alpha;
+  m.baseColor = material.checker ? c.texel : m.baseColor * c.texel;
+  if (const Texture* t = textureAt(scene, material.emissionTexture)) {
+    const vec4 e = sampleTexture(*t);
     m.emission *= vec3(e.x, e.y, e.z);
   }
-  if (const Texture* t = texture(material.metallicRoughnessTexture)) {
+  if (metallicRoughness) {
     // Sampled, not averaged: the glTF inputs at this texel through the same mapping the loader
-    // used for the constants (engine/scene/gltf_pbr.h). C keeps the base-colour texture.
-    const vec4 mr = sampleTexture(*t, uv);
-    const Texture* colour = material.checker ? nullptr : texture(material.colorTexture);
-    const vec3 base = colour ? vec3(sampleTexture(*colour, uv)) : vec3(1.f);
+    // used for the constants (engine/scene/gltf_pbr.h); C is colourAlpha's, the same value.
     const LectureCoefficients k =
-        gltfPbrToLecture(vec3(material.baseColorFactor) * base, material.metallicFactor * mr.z,
+        gltfPbrToLecture(c.gltfBase, material.metallicFactor * mr.z,
                          material.roughnessFactor * mr.y, material.transmissionFactor, m.ior);
-    m.color = k.color;
     m.kd = k.kd;
     m.ks = k.ks;
     m.exponent = k.exponent;
@@ -63,40 +95,22 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
     m.metallic = glm::clamp(material.metallicFactor * mr.z, 0.f, 1.f);  // the glTF model's inputs
     m.roughness = glm::clamp(material.roughnessFactor * mr.y, 0.f, 1.f);
   }
-  if (const Texture* t = texture(material.occlusionTexture)) {
+  if (const Texture* t = textureAt(scene, material.occlusionTexture)) {
     // glTF: occlusion darkens indirect light only; the lecture's ambient k_a is that term.
-    const float ao = sampleTexture(*t, uv).x;
+    const float ao = sampleTexture(*t).x;
     m.ka *= 1.f + material.occlusionStrength * (ao - 1.f);
   }
   return m;
 }
 
 vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv) {
-  // resolveMaterial's colour rule, step for step: C = color x texel (a checker replaces it),
-  // alpha x texel.a; a metallic-roughness texture re-maps C to gltfPbrToLecture's diffuse colour
-  // base (1 - metallic) (glTF spec appendix B), inlined here: its other coefficients (a pow per
-  // hit) are not read. The colour texel is sampled once; resolveMaterial's second lookup of it
-  // returns the same value.
-  const auto texture = [&](int index) -> const Texture* {
-    return index >= 0 && index < int(scene.textures.size()) ? &scene.textures[index] : nullptr;
-  };
-  vec3 color = material.color;
-  float alpha = material.alpha;
-  const Texture* colour = material.checker ? nullptr : texture(material.colorTexture);
-  vec4 c(1.f);
-  if (material.checker) {
-    color = checkerColor(*material.checker, uv);
-  } else if (colour) {
-    c = sampleTexture(*colour, uv);
-    color *= vec3(c.x, c.y, c.z);
-    alpha *= c.w;
-  }
-  if (const Texture* t = texture(material.metallicRoughnessTexture)) {
-    const vec4 mr = sampleTexture(*t, uv);
-    const vec3 base = vec3(material.baseColorFactor) * (colour ? vec3(c) : vec3(1.f));
-    color = base * (1.f - std::clamp(material.metallicFactor * mr.z, 0.f, 1.f));
-  }
-  return vec4(color, alpha);
+  // resolveMaterial's colour rule at level 0, without its other coefficients (gltfPbrToLecture's
+  // pow per hit).
+  const Texture* metallicRoughness = textureAt(scene, material.metallicRoughnessTexture);
+  const vec4 mr = metallicRoughness ? sampleTexture(*metallicRoughness, uv) : vec4(1.f);
+  const ColourAlpha c = colourAlpha(scene, material, uv, metallicRoughness ? &mr : nullptr,
+                                    [&](const Texture& t) { return sampleTexture(t, uv); });
+  return vec4(c.color, c.alpha);
 }
 
 vec3 normalMapped(const Texture& map, float scale, const vec3& n, const vec4& tangent, vec2 uv) {

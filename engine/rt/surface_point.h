@@ -76,7 +76,7 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
                                          float uvLod = -std::numeric_limits<float>::infinity());
 
 // resolveMaterial(scene, material, uv).color and .alpha at level 0 (uvLod -infinity), by the
-// same texel lookups and float operations, without the other coefficients.
+// same colour/alpha rule (one function for both), without the other coefficients.
 vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv);
 
 // A tangent-space normal map applied at uv: n' = normalize(T x + B y + N z) with (x, y, z) =

@@ -23,7 +23,7 @@ LectureCoefficients gltfPbrToLecture(vec3 base, float metallic, float roughness,
   const vec3 f0 = glm::mix(vec3(dielectricF0), base, metallic);
   // Diffuse: metals have none, and transmission replaces diffuse (the glTF dielectric BRDF is
   // mix(diffuse, transmission, transmissionFactor)).
-  m.color = base * (1.f - metallic);
+  m.color = gltfDiffuseColor(base, metallic);
   m.kd = 1.f - transmission;
   m.ks = luminance(f0);
   m.specularColor = m.ks > 0.f ? f0 / m.ks : vec3(1.f);

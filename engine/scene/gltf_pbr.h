@@ -3,6 +3,7 @@
 // "glTF material mapping"; docs/materials.md). One function, used by the glTF loader for the
 // material's constants and by the CPU surface code per hit when a metallicRoughnessTexture is
 // sampled, so both give the same coefficients for the same inputs.
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -20,6 +21,13 @@ struct LectureCoefficients {
   float kt = 0.f;
   vec3 transmitColor{1.f};
 };
+
+// The diffuse colour C = base (1 - metallic), metallic clamped to [0, 1]: metals have no diffuse
+// term (glTF spec appendix B). gltfPbrToLecture's C, and the one the CPU surface code re-maps a
+// textured C to (engine/rt/surface_point.cpp). Inline: it runs per hit there.
+inline vec3 gltfDiffuseColor(vec3 base, float metallic) {
+  return base * (1.f - std::clamp(metallic, 0.f, 1.f));
+}
 
 // base: linear base colour (alpha ignored); metallic, roughness, transmission in [0, 1] (clamped
 // here); ior of the dielectric.

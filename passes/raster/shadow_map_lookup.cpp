@@ -94,9 +94,10 @@ FullscreenResolve& ShadowMapGl::lookupDraw(RenderWorld& world, ViewKind kind, co
     if (interior) defines.push_back({"DIPTYCH_INTERIOR", ""});
     if (surface) defines.push_back({"DIPTYCH_GBUFFER_SURFACE", "1"});
     if (gatherPcf) defines.push_back({"DIPTYCH_PCF_GATHER", ""});
+    // The engine's one full-screen triangle (shaders/fullscreen.vert): one lookup per pixel.
     found = lookups_
                 .emplace(key, FullscreenResolve(gl::loadProgram(
-                                  {"shadow_map_fullscreen.vert", "shadow_map_lookup.frag"},
+                                  {"fullscreen.vert", "shadow_map_lookup.frag"},
                                   gl::withDefines(world.glShading().defines, defines))))
                 .first;
   }

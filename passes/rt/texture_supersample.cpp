@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <atomic>
+#include <cstdint>
 #include <limits>
 
 #include "engine/graph/render_world.h"
@@ -39,15 +41,19 @@ void TextureSupersamplePass::execute(PassContext& c) {
   const RtScene& rt = world.rtScene();
   // The camera frames once per image (PinholeFrame::ray == primaryRay bit for bit).
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
+  std::atomic<std::int64_t> rays = 0;
   tbb::parallel_for(0, frame.height, [&](int y) {
-    supersampleRow(world.scene(), world.geometry(), rt, pinhole, hits, samples_, y, out);
+    rays += supersampleRow(world.scene(), world.geometry(), rt, pinhole, hits, samples_, y, out);
   });
-  c.count("rays", double(frame.width) * frame.height * samples_ * samples_);
+  // The rays traced: N^2 per covered pixel; the uncovered ones trace none.
+  c.count("rays", double(rays));
 }
 
-void TextureSupersamplePass::supersampleRow(const Scene& scene, const WorldGeometry& geometry,
-                                            const RtScene& rt, const PinholeFrame& pinhole,
-                                            const CpuImage& hits, int n, int y, CpuImage& out) {
+std::int64_t TextureSupersamplePass::supersampleRow(const Scene& scene,
+                                                    const WorldGeometry& geometry,
+                                                    const RtScene& rt, const PinholeFrame& pinhole,
+                                                    const CpuImage& hits, int n, int y,
+                                                    CpuImage& out) {
   // The row's sub-pixel rays, pixel by pixel in stratum order, go to Embree in coherent streams
   // of kStreamRays (RtScene::intersectRays, as rt_distributed's primary rays): one traversal
   // setup per packet of neighbouring rays instead of one rtcIntersect1 per ray. Each pixel sums
@@ -60,6 +66,7 @@ void TextureSupersamplePass::supersampleRow(const Scene& scene, const WorldGeome
   Hit tileHits[kTile];
   const Hit* found[kTile];
   std::size_t filled = 0;
+  std::int64_t traced = 0;
   // The pixel whose rays are being summed; its rays may straddle two streams.
   int pixel = -1, count = 0;
   vec4 sum(0.f);
@@ -70,6 +77,7 @@ void TextureSupersamplePass::supersampleRow(const Scene& scene, const WorldGeome
   };
   const auto flush = [&] {
     rt.intersectRays({rays, filled}, {tileHits, filled}, {found, filled}, false);
+    traced += std::int64_t(filled);
     for (std::size_t i = 0; i < filled; ++i) {
       if (pixelOf[i] != pixel) {
         finish();
@@ -100,6 +108,7 @@ void TextureSupersamplePass::supersampleRow(const Scene& scene, const WorldGeome
   }
   if (filled > 0) flush();
   finish();
+  return traced;
 }
 
 vec4 TextureSupersamplePass::singleRayPixel(const Scene& scene, const WorldGeometry& geometry,

@@ -6,7 +6,10 @@
 // Sub-rays that miss the scene are left out of the mean; a pixel whose centre misses (no G-buffer
 // hit) gets -1, and shade then uses its own lookup. N = 1 traces the pixel centre only: the
 // reference's own lookup (the built-in hybrid recipe uses it so that the all-exact hybrid stays
-// equal to the Whitted reference).
+// equal to the Whitted reference). Counter "rays": the sub-pixel rays traced, N^2 per pixel
+// whose centre is covered (uncovered pixels trace none).
+#include <cstdint>
+
 #include "engine/graph/pass.h"
 #include "engine/rt/rt_scene.h"
 #include "engine/scene/camera_math.h"
@@ -27,10 +30,11 @@ class TextureSupersamplePass : public Pass {
                              const PinholeFrame& pinhole, int n, int x, int y);
 
  private:
-  // Row y of the signal from N x N sub-pixel rays per pixel covered in `hits`, traced as streams.
-  static void supersampleRow(const Scene& scene, const WorldGeometry& geometry, const RtScene& rt,
-                             const PinholeFrame& pinhole, const CpuImage& hits, int n, int y,
-                             CpuImage& out);
+  // Row y of the signal from N x N sub-pixel rays per pixel covered in `hits`, traced as streams;
+  // returns the number of rays traced.
+  static std::int64_t supersampleRow(const Scene& scene, const WorldGeometry& geometry,
+                                     const RtScene& rt, const PinholeFrame& pinhole,
+                                     const CpuImage& hits, int n, int y, CpuImage& out);
   int samples_ = 4;  // N
   SlotIo io_;
 };

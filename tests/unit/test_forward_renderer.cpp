@@ -1,13 +1,15 @@
 // The forward renderer's environment background (engine/gl/forward_renderer.cpp): when the
 // meshes write depth it is drawn after them, behind a depth test that passes only where no mesh
 // wrote (what engines do with the sky, so covered pixels skip its cube lookup); otherwise first,
-// under them. Both orders must give the same image, texel for texel.
+// under them. Both orders must give the same image, texel for texel. Either way the renderer
+// leaves the GL state FullscreenResolve leaves (engine/gl/forward_renderer.h), not its own.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
 #include "engine/gl/forward_renderer.h"
+#include "engine/gl/loader.h"
 #include "engine/gl/transfer.h"
 #include "engine/graph/render_world.h"
 #include "engine/scene/load.h"
@@ -31,6 +33,29 @@ Scene quadOverSky() {
   return loadScene(path);
 }
 
+GLint integer(GLenum name) {
+  GLint value = -1;
+  gl::glGetIntegerv(name, &value);
+  return value;
+}
+
+// The state render() leaves (engine/gl/forward_renderer.h), read right after it returns.
+void expectLeftState() {
+  EXPECT_FALSE(gl::glIsEnabled(GL_DEPTH_TEST)) << "the reversed-Z depth test is the renderer's";
+  EXPECT_EQ(integer(GL_DEPTH_FUNC), GL_LESS);
+  EXPECT_EQ(integer(GL_DEPTH_WRITEMASK), GL_TRUE);
+  EXPECT_FALSE(gl::glIsEnabled(GL_BLEND));
+  EXPECT_EQ(integer(GL_BLEND_SRC_RGB), GL_ONE);
+  EXPECT_EQ(integer(GL_BLEND_DST_RGB), GL_ZERO);
+  EXPECT_FALSE(gl::glIsEnabled(GL_SCISSOR_TEST));
+  EXPECT_FALSE(gl::glIsEnabled(GL_CULL_FACE));
+  EXPECT_FALSE(gl::glIsEnabled(GL_CLIP_DISTANCE0));
+  EXPECT_EQ(integer(GL_CLIP_ORIGIN), GL_LOWER_LEFT);
+  EXPECT_EQ(integer(GL_CLIP_DEPTH_MODE), GL_ZERO_TO_ONE);
+  EXPECT_EQ(integer(GL_DRAW_FRAMEBUFFER_BINDING), 0);
+  EXPECT_EQ(integer(GL_VERTEX_ARRAY_BINDING), 0);
+}
+
 std::vector<float> render(RenderWorld& world, bool depthWrite, int w, int h) {
   auto& renderer = world.glCached<gl::ForwardRenderer>();
   const gl::Texture color = gl::Texture::create2D(gl::TextureFormat::RGBA32F, w, h);
@@ -39,6 +64,7 @@ std::vector<float> render(RenderWorld& world, bool depthWrite, int w, int h) {
   options.depthWrite = depthWrite;  // false: the background is drawn first
   renderer.render(world.forwardScene(), gl::cameraView(world.scene().camera, float(w) / float(h)),
                   color, depth, options);
+  expectLeftState();
   return gl::readTextureFloats(color);
 }
 

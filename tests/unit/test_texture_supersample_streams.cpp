@@ -62,5 +62,34 @@ TEST(TextureSupersampleStreams, FourByFourSamplesEqualTheSingleRayProducer) {
   expectStreamsMatchSingleRays(4);
 }
 
+// The "rays" counter is the rays traced: N^2 per pixel whose centre is covered, none for the
+// background (a count of W x H x N^2 would take the background pixels too).
+TEST(TextureSupersampleStreams, RaysCounterCountsTheRaysOfCoveredPixelsOnly) {
+  constexpr int n = 3;
+  Recipe r = defaultHybridRecipe();
+  applySlotOverride(
+      r, parseSlotOverride("texture_filtering=texture_supersample:samples=" + std::to_string(n)),
+      builtinPasses());
+  const auto f = testing::renderHybridFrame(
+      std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/textures.json", kW, kH,
+      {"texture_filtering.albedo", "gbuffer.hits"}, r);
+  const CpuImage& hits = f->output("gbuffer.hits");
+  int covered = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) covered += hits.u(x, y, 0) != 0u ? 1 : 0;
+  ASSERT_GT(covered, 0);
+  ASSERT_LT(covered, kW * kH) << "the frame needs background pixels";
+  const std::vector<NodeTiming>& timings = f->executor->timings();
+  int nodes = 0;
+  for (std::size_t i = 0; i < f->graph.nodes.size(); ++i) {
+    const GraphNode& node = f->graph.nodes[i];
+    if (node.kind != NodeKind::Pass || f->graph.passes[node.pass].type != "texture_supersample")
+      continue;
+    ++nodes;
+    EXPECT_EQ(timings[i].counters.at("rays"), double(covered) * n * n);
+  }
+  EXPECT_EQ(nodes, 1);
+}
+
 }  // namespace
 }  // namespace diptych
