@@ -267,7 +267,15 @@ void RtScene::occludedTile(std::span<RTCRay> rays, bool coherent) const {
       coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
   std::uint64_t active = 0;
   for (const RTCRay& r : rays) active += r.tnear <= r.tfar ? 1 : 0;
-  rtcOccluded1M(scene_, &context, rays.data(), unsigned(rays.size()), sizeof(RTCRay));
+  if (alphaMasked_ > 0) {
+    // Alpha-filtered geometry: one ray at a time. A coherent rtcOccluded1M stream over this
+    // scene's filter functions hung inside Embree 3.13.5, intermittently, in the ASan suite
+    // (VisibilityAlpha; docs/benchmarks.md, session 13); rtcOccluded1 gives the same answers.
+    for (RTCRay& r : rays)
+      if (r.tnear <= r.tfar) rtcOccluded1(scene_, &context, &r);
+  } else {
+    rtcOccluded1M(scene_, &context, rays.data(), unsigned(rays.size()), sizeof(RTCRay));
+  }
   raysTraced_.add(active);
 }
 
