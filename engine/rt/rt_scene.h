@@ -124,7 +124,8 @@ class RtScene {
                      bool coherent = false) const;
 
   // One tile of Embree rays, built by the caller in its own per-thread buffer, traced as a
-  // stream (rtcOccluded1M) on the calling thread: rays[i].tfar becomes -inf where occluded.
+  // stream (rtcOccluded1M; ray by ray when the scene has alpha-filtered geometry, see the .cpp)
+  // on the calling thread: rays[i].tfar becomes -inf where occluded.
   // Inactive rays (tnear > tfar) are left alone by Embree and not counted. traceShadowRays
   // generates its rays straight into such tiles, with no ray array for the whole frame.
   void occludedTile(std::span<RTCRay> rays, bool coherent) const;
