@@ -21,14 +21,19 @@ namespace {
 constexpr int kW = 160, kH = 120;
 constexpr double kAllowedDifferent = 0.001;
 
-void expectStreamsMatchSingleRays(int n) {
+// textures.json through the built-in hybrid recipe with texture_supersample at N = n.
+auto renderSupersampled(int n) {
   Recipe r = defaultHybridRecipe();
   applySlotOverride(
       r, parseSlotOverride("texture_filtering=texture_supersample:samples=" + std::to_string(n)),
       builtinPasses());
-  const auto f = testing::renderHybridFrame(
+  return testing::renderHybridFrame(
       std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/textures.json", kW, kH,
       {"texture_filtering.albedo", "gbuffer.hits"}, r);
+}
+
+void expectStreamsMatchSingleRays(int n) {
+  const auto f = renderSupersampled(n);
   const CpuImage& albedo = f->output("texture_filtering.albedo");
   const CpuImage& hits = f->output("gbuffer.hits");
   const RtScene& rt = f->world->rtScene();
@@ -66,13 +71,7 @@ TEST(TextureSupersampleStreams, FourByFourSamplesEqualTheSingleRayProducer) {
 // background (a count of W x H x N^2 would take the background pixels too).
 TEST(TextureSupersampleStreams, RaysCounterCountsTheRaysOfCoveredPixelsOnly) {
   constexpr int n = 3;
-  Recipe r = defaultHybridRecipe();
-  applySlotOverride(
-      r, parseSlotOverride("texture_filtering=texture_supersample:samples=" + std::to_string(n)),
-      builtinPasses());
-  const auto f = testing::renderHybridFrame(
-      std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/textures.json", kW, kH,
-      {"texture_filtering.albedo", "gbuffer.hits"}, r);
+  const auto f = renderSupersampled(n);
   const CpuImage& hits = f->output("gbuffer.hits");
   int covered = 0;
   for (int y = 0; y < kH; ++y)
