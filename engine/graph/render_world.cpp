@@ -1,6 +1,7 @@
 #include "engine/graph/render_world.h"
 
 #include "engine/core/error.h"
+#include "engine/gl/loader.h"
 #include "engine/gl/context.h"
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/scene_buffers.h"
@@ -19,10 +20,17 @@ RenderWorld::~RenderWorld() {
   glScene_.reset();
 }
 
+void RenderWorld::addOneTime(const std::string& what, double ms) {
+  const std::lock_guard lock(oneTimeMutex_);
+  oneTimeMs[what] += ms;
+}
+
 const RtScene& RenderWorld::rtScene() {
   std::call_once(rtOnce_, [this] {
+    const Stopwatch clock;
     device_ = std::make_unique<RtDevice>();
     rt_ = std::make_unique<RtScene>(*device_, world_, scene_);
+    addOneTime(kBvhBuild, clock.milliseconds());
   });
   return *rt_;
 }
@@ -38,8 +46,11 @@ gl::GlContext& RenderWorld::glContext() {
 
 const gl::GlSceneBuffers& RenderWorld::glScene() {
   if (!glScene_) {
+    const Stopwatch clock;
     glContext().makeCurrent();
     glScene_ = std::make_unique<gl::GlSceneBuffers>(gl::uploadScene(world_));
+    gl::glFinish();  // a driver may copy later: the upload completes here, not in a frame
+    addOneTime(kGlSceneUpload, clock.milliseconds());
   }
   return *glScene_;
 }
@@ -47,7 +58,10 @@ const gl::GlSceneBuffers& RenderWorld::glScene() {
 const gl::GlShadingBuffers& RenderWorld::glShading() {
   if (!glShading_) {
     const gl::GlSceneBuffers& geometry = glScene();
+    const Stopwatch clock;
     glShading_ = std::make_unique<gl::GlShadingBuffers>(gl::uploadShading(scene_, geometry));
+    gl::glFinish();
+    addOneTime(kGlShadingUpload, clock.milliseconds());
   }
   return *glShading_;
 }

@@ -56,6 +56,8 @@ TEST(EnvMapOneTime, SphereMapFollowsTheViewAndIsNotAOneTimeCost) {
   const Scene scene = whitted();
   RenderWorld world(scene, &gl::testing::osmesaContext());
   const CompiledGraph graph = envGraph(scene, "env_sphere");
+  // A first executor pays the world's first-use builds (uploads, programs: RenderWorld).
+  GraphExecutor(graph, world).runMeasured(1, 1);
   GraphExecutor ex(graph, world);
   const GraphExecutor::MeasuredRun run = ex.runMeasured(0, 2);
   EXPECT_EQ(run.oneTimeMs.count("env_sphere map"), 0u);
