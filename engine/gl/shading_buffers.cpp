@@ -161,7 +161,6 @@ AlphaDraw GlShadingBuffers::alphaDraw(int material) const {
 
 GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometry) {
   GlShadingBuffers out;
-  out.textures = uploadTextures(scene);
   // One layer per distinct colour texture of an alpha-tested material. Layers are as large as
   // the largest such texture (capped at kMaxAlphaMaskSize per side); each texture sits at its
   // own size in the corner of its layer, so that the shader's texel arithmetic is exactly

@@ -3,11 +3,11 @@
 // evaluate the shared shading model (shaders/common/shading.glsl) on the same inputs as the CPU
 // passes. Read in GLSL through shaders/gl/scene_shading.glsl.
 //
-// Every scene texture is uploaded with its mip chain (engine/gl/scene_textures.h) and
-// sceneMaterial samples base colour, emission, metallic-roughness and occlusion as
-// resolveMaterial does on the CPU. The alpha of alpha-masked (AlphaMode::Mask) materials' colour
-// textures is also kept in its own R32F array for the cut-outs of the G-buffer and shadow-map
-// depth passes (sceneMaterialAlpha in GLSL).
+// Every scene texture is uploaded with its mip chain (engine/gl/scene_textures.h; on demand, by
+// RenderWorld::glShading) and sceneMaterial samples base colour, emission, metallic-roughness and
+// occlusion as resolveMaterial does on the CPU. The alpha of alpha-masked (AlphaMode::Mask)
+// materials' colour textures is also kept in its own R32F array for the cut-outs of the G-buffer
+// and shadow-map depth passes (sceneMaterialAlpha in GLSL).
 #include <vector>
 
 #include "engine/gl/objects.h"
@@ -40,7 +40,9 @@ struct GlShadingBuffers {
   // sampleTexture does, with texelFetch). A 1x1x1 dummy when no material is alpha-tested.
   Texture alphaMasks;
   int alphaMaskLayers = 0;
-  GlSceneTextures textures;          // every Scene::textures entry with its mip chain
+  // Every Scene::textures entry with its mip chain: not uploaded by uploadShading, but by
+  // RenderWorld::glShading(true) (empty, bound as id 0, until then).
+  GlSceneTextures textures;
   std::vector<AlphaDraw> drawModes;  // index material + 1, as `materials`
   int materialCount = 0, instanceCount = 0, lightCount = 0;
   // The scene's shader permutation (shader_features.h): passes compile with these first.

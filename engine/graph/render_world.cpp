@@ -1,9 +1,9 @@
 #include "engine/graph/render_world.h"
 
 #include "engine/core/error.h"
-#include "engine/gl/loader.h"
 #include "engine/gl/context.h"
 #include "engine/gl/forward_renderer.h"
+#include "engine/gl/loader.h"
 #include "engine/gl/scene_buffers.h"
 #include "engine/gl/shading_buffers.h"
 
@@ -55,13 +55,21 @@ const gl::GlSceneBuffers& RenderWorld::glScene() {
   return *glScene_;
 }
 
-const gl::GlShadingBuffers& RenderWorld::glShading() {
+const gl::GlShadingBuffers& RenderWorld::glShading(bool textures) {
   if (!glShading_) {
     const gl::GlSceneBuffers& geometry = glScene();
     const Stopwatch clock;
     glShading_ = std::make_unique<gl::GlShadingBuffers>(gl::uploadShading(scene_, geometry));
     gl::glFinish();
     addOneTime(kGlShadingUpload, clock.milliseconds());
+  }
+  if (textures && !glTexturesUploaded_) {
+    const Stopwatch clock;
+    glContext().makeCurrent();
+    glShading_->textures = gl::uploadTextures(scene_);
+    gl::glFinish();
+    glTexturesUploaded_ = true;
+    addOneTime(kGlTextureUpload, clock.milliseconds());
   }
   return *glShading_;
 }

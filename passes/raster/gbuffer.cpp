@@ -48,15 +48,18 @@ std::string GBufferPass::adapt(const ReaderQuery& readers) {
 
 void GBufferPass::execute(PassContext& c) {
   const gl::GlSceneBuffers& scene = c.world().glScene();
-  // The shading buffers carry the alpha masks, so the G-buffer sees through the holes that
-  // the Embree filter cuts for rays.
-  const gl::GlShadingBuffers& shading = c.world().glShading();
   // Only what a live pass reads is written: the hybrid frame (CPU passes, which rebuild the
   // exact surface from the hits) pays for neither the normal nor the surface.
   gl::GBufferTargets targets{
       .hits = &c.glTexture(hits_), .depth = &c.glTexture(depth_), .barycentrics = barycentrics_};
   if (consumed(c, normal_)) targets.normal = &c.glTexture(normal_);
   if (surface_ != kNoResource && consumed(c, surface_)) targets.surface = &c.glTexture(surface_);
+  // The shading buffers carry the alpha masks, so the G-buffer sees through the holes that
+  // the Embree filter cuts for rays. The scene's textures only for the normal and surface
+  // (normal and bump maps, gbuffer_surface.comp): the hits read none, the masks have their own
+  // array.
+  const gl::GlShadingBuffers& shading =
+      c.world().glShading(targets.normal != nullptr || targets.surface != nullptr);
   c.world().glCached<gl::GBufferRasterizer>().render(scene, c.frame().camera, targets, &shading);
 }
 
