@@ -59,6 +59,11 @@ endforeach()
 if(NOT osmesa_stdout MATCHES "one-time: embree device and BVH build [0-9.]+ ms")
   message(FATAL_ERROR "render must print the BVH build as a one-time cost:\n${osmesa_stdout}")
 endif()
+string(JSON again GET "${timings}" measured_again)
+if(NOT again OR NOT osmesa_stdout MATCHES "a measured frame did one-time work")
+  message(FATAL_ERROR "with no warm-up the first frame did one-time work and must be said to "
+          "have been measured again (measured_again: ${again}):\n${osmesa_stdout}")
+endif()
 # --context auto picks EGL on a hardware device, else OSMesa, and the devices line says which.
 expect_success(render-auto ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --context auto
                --size 96x72 --frames 1 --warmup 0 --out auto.exr FILES auto.exr)
