@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <glm/gtx/component_wise.hpp>
+#include <type_traits>
 
 #include "engine/core/error.h"
 
@@ -28,6 +31,26 @@ bool finite(const mat4& m) {
   return true;
 }
 
+// Whether every float of a float or float-vector array is finite: a branch-free scan of the
+// exponent bits (all ones for inf and NaN, IEEE 754) that the compiler vectorises, where a
+// per-element std::isfinite with an early exit is not (a 2048^2 RGBA texture is 16 M values).
+// Only when it fails does finiteArray look for the first bad element, to name it.
+template <typename T>
+bool allFiniteFloats(const std::vector<T>& values) {
+  static_assert(std::is_same_v<T, float> ||
+                requires { requires std::is_same_v<typename T::value_type, float>; });
+  static_assert(sizeof(T) % sizeof(float) == 0);
+  const std::size_t n = values.size() * (sizeof(T) / sizeof(float));
+  const auto* data = reinterpret_cast<const unsigned char*>(values.data());
+  std::uint32_t nonFinite = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t bits;
+    std::memcpy(&bits, data + i * sizeof(float), sizeof(float));
+    nonFinite |= std::uint32_t((bits & 0x7f800000u) == 0x7f800000u);
+  }
+  return nonFinite == 0;
+}
+
 class SceneChecker {
  public:
   explicit SceneChecker(const Scene& scene) : file_(scene.sourcePath) {}
@@ -38,6 +61,7 @@ class SceneChecker {
   }
   template <typename T>
   void finiteArray(const std::vector<T>& values, const std::string& place) const {
+    if (allFiniteFloats(values)) return;
     for (std::size_t i = 0; i < values.size(); ++i)
       if (!finite(values[i])) fail(place + "[" + std::to_string(i) + "]", "non-finite value");
   }
