@@ -1,5 +1,7 @@
 #include "engine/scene/load.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 #include "engine/core/error.h"
@@ -35,7 +37,10 @@ Scene loadScene(const std::filesystem::path& path) {
     if (!box.empty() && allFinite(box.lo) && allFinite(box.hi)) fitNearFar(scene.camera, box);
   }
   validateScene(scene);
-  for (Texture& t : scene.textures) t.mips = buildMipChain(t.image);  // once, for CPU and GL
+  // Once, for CPU and GL; each chain depends only on its own image, so they build in parallel.
+  tbb::parallel_for(std::size_t(0), scene.textures.size(), [&scene](std::size_t i) {
+    scene.textures[i].mips = buildMipChain(scene.textures[i].image);
+  });
   // Far from the origin, float world coordinates would spend their bits on the offset:
   // move the world so the camera sits at the origin (docs/numerics.md).
   rebaseIfFar(scene);

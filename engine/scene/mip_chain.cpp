@@ -1,5 +1,8 @@
 #include "engine/scene/mip_chain.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -31,9 +34,44 @@ std::vector<Taps> axisTaps(int source, int dest) {
   return taps;
 }
 
+// The exact 2:1 case (both sides even): axisTaps gives every texel the taps {2j, 2j + 1} with
+// weights {0.5, 0.5}, so each product weight is 0.25 (exact in double) and the general loop's
+// sum is 0 + p(2x, 2y) + p(2x+1, 2y) + p(2x, 2y+1) + p(2x+1, 2y+1), each times 0.25, in that
+// order. The same additions in the same order give the same double, hence the same float.
+Image downsampleEven(const Image& level) {
+  const int w = level.width / 2, h = level.height / 2, n = level.channels;
+  Image out(w, h, n);
+  const std::size_t rowValues = std::size_t(level.width) * std::size_t(n);
+  tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y) {
+      const float* top = level.pixels.data() + std::size_t(2 * y) * rowValues;
+      const float* bottom = top + rowValues;
+      float* dst = out.pixels.data() + std::size_t(y) * std::size_t(w) * std::size_t(n);
+      for (int x = 0; x < w; ++x) {
+        const std::size_t left = std::size_t(2 * x) * std::size_t(n), right = left + std::size_t(n);
+        for (int c = 0; c < n; ++c) {
+          double sum = 0.0;
+          sum += 0.25 * top[left + std::size_t(c)];
+          sum += 0.25 * top[right + std::size_t(c)];
+          sum += 0.25 * bottom[left + std::size_t(c)];
+          sum += 0.25 * bottom[right + std::size_t(c)];
+          dst[std::size_t(x) * std::size_t(n) + std::size_t(c)] = float(sum);
+        }
+      }
+    }
+  });
+  return out;
+}
+
 }  // namespace
 
 Image downsampleBox(const Image& level) {
+  if (level.empty()) return {};
+  if (level.width % 2 == 0 && level.height % 2 == 0) return downsampleEven(level);
+  return downsampleBoxAreaWeights(level);
+}
+
+Image downsampleBoxAreaWeights(const Image& level) {
   if (level.empty()) return {};
   const int w = std::max(1, level.width / 2), h = std::max(1, level.height / 2);
   const std::vector<Taps> tx = axisTaps(level.width, w), ty = axisTaps(level.height, h);

@@ -16,8 +16,12 @@
 
 namespace diptych {
 
-// Level i+1 from level i (any channel count; an empty image gives an empty image).
+// Level i+1 from level i (any channel count; an empty image gives an empty image). Even sides
+// take a fast path (rows in parallel) that adds the same products in the same order as
+// downsampleBoxAreaWeights, so the two agree bit for bit.
 Image downsampleBox(const Image& level);
+// The general area-weighted path for any sizes (what downsampleBox does for odd sides).
+Image downsampleBoxAreaWeights(const Image& level);
 
 // Levels 1..n of the chain (level 0, the image itself, is not copied); empty for a 1x1 or empty
 // image.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include "engine/scene/mip_chain.h"
@@ -77,6 +78,58 @@ TEST(MipChain, OddSizesUseAreaWeightsAndKeepTheMean) {
   EXPECT_EQ(chain[1].height, 1);
   for (const Image& level : chain)
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean(level, c), mean(image, c), 1e-5);
+}
+
+// Values of mixed signs and magnitudes, half of them from {1e20, -1e20, 1, 3e-5}, so that a
+// different order of a texel's four additions would often give another float (1e20 + 1 - 1e20
+// is 0 in double, 1e20 - 1e20 + 1 is 1).
+Image wideRangeImage(int w, int h, int channels, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(-1.f, 1.f);
+  std::uniform_int_distribution<int> exponent(-30, 30), pick(0, 7);
+  const float cancelling[4] = {1e20f, -1e20f, 1.f, 3e-5f};
+  Image image(w, h, channels);
+  for (float& v : image.pixels) {
+    const int p = pick(rng);
+    v = p < 4 ? cancelling[p] : std::ldexp(unit(rng), exponent(rng));
+  }
+  return image;
+}
+
+bool sameBits(const Image& a, const Image& b) {
+  return a.width == b.width && a.height == b.height && a.channels == b.channels &&
+         std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
+}
+
+// Even sides take downsampleBox's 2:1 fast path: the same floats as the general area-weighted
+// path, and as the general loop's sum written out here (0 + 0.25 a + 0.25 b + 0.25 c + 0.25 d in
+// double, row by row), bit for bit; whole chains of power-of-two images likewise.
+TEST(MipChain, EvenSidesFastPathEqualsTheGeneralPathBitForBit) {
+  const int sizes[][3] = {{2, 2, 1}, {64, 32, 4}, {6, 10, 3}, {130, 66, 4}, {8, 2, 2}};
+  unsigned seed = 10;
+  for (const auto& size : sizes) {
+    const Image image = wideRangeImage(size[0], size[1], size[2], seed++);
+    const Image fast = downsampleBox(image);
+    EXPECT_TRUE(sameBits(fast, downsampleBoxAreaWeights(image))) << size[0] << "x" << size[1];
+    Image written(size[0] / 2, size[1] / 2, size[2]);
+    for (int y = 0; y < written.height; ++y)
+      for (int x = 0; x < written.width; ++x)
+        for (int c = 0; c < size[2]; ++c) {
+          double sum = 0.0;
+          for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx) sum += 0.25 * image.at(2 * x + dx, 2 * y + dy, c);
+          written.at(x, y, c) = float(sum);
+        }
+    EXPECT_TRUE(sameBits(fast, written)) << size[0] << "x" << size[1];
+  }
+  const Image square = wideRangeImage(256, 64, 4, 20);
+  const std::vector<Image> chain = buildMipChain(square);
+  ASSERT_EQ(chain.size(), 8u);
+  const Image* previous = &square;
+  for (const Image& level : chain) {
+    EXPECT_TRUE(sameBits(level, downsampleBoxAreaWeights(*previous))) << level.width;
+    previous = &level;
+  }
 }
 
 TEST(MipChain, EmptyAndSingleTexelImagesHaveNoLevels) {

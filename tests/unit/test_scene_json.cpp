@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "engine/core/error.h"
 #include "engine/scene/environment.h"
@@ -313,6 +314,47 @@ TEST(Validation, ZeroNormalsAreRecomputedWithAWarning) {
     EXPECT_NE(std::string(e.what()).find("memory.json: objects[0] 'quad' positions[1]"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// Texels and vertex attributes are scanned for Inf and NaN (of either sign) by their exponent
+// bits; the largest and smallest finite floats pass, and the first bad element is named.
+TEST(Validation, NonFiniteTexelsAndUvsAreNamedByIndex) {
+  Scene s;
+  s.sourcePath = "memory.json";
+  Mesh m = makeQuad({vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0), vec3(0, 1, 0)});
+  m.name = "objects[0] 'quad'";
+  s.meshes.push_back(m);
+  s.instances.push_back({"quad", 0, mat4(1.f)});
+  Texture t;
+  t.name = "tex";
+  t.image = Image(8, 8, 4, std::numeric_limits<float>::max());
+  t.image.pixels[7] = -std::numeric_limits<float>::max();
+  t.image.pixels[9] = std::numeric_limits<float>::denorm_min();
+  t.image.pixels[10] = -0.f;
+  s.textures.push_back(t);
+  validateScene(s);  // all finite
+
+  const auto error = [](Scene scene) -> std::string {
+    try {
+      validateScene(scene);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const float bad[] = {std::numeric_limits<float>::infinity(),
+                       -std::numeric_limits<float>::infinity(), std::nanf(""), -std::nanf("")};
+  for (float v : bad) {
+    Scene texel = s;
+    texel.textures[0].image.pixels[201] = v;
+    texel.textures[0].image.pixels[250] = v;
+    EXPECT_NE(error(texel).find("textures[0] 'tex' pixels[201]"), std::string::npos)
+        << v << ": " << error(texel);
+    Scene uv = s;
+    uv.meshes[0].uvs[3].y = v;
+    EXPECT_NE(error(uv).find("objects[0] 'quad' uvs[3]"), std::string::npos)
+        << v << ": " << error(uv);
   }
 }
 

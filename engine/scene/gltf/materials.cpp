@@ -1,10 +1,14 @@
 // glTF metallic-roughness materials mapped onto the lecture's coefficients. The formulas are
 // documented in docs/scene-format.md ("glTF material mapping"); the comments here say why.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "engine/core/error.h"
+#include "engine/core/srgb_table.h"
 #include "engine/scene/gltf/gltf_internal.h"
 #include "engine/scene/gltf_pbr.h"
 
@@ -64,20 +68,28 @@ FilterMode filterMode(int gl, FilterMode fallback) {
 
 // Expands 1-4 channels to RGBA (grey replicated, alpha 1 when absent) and decodes sRGB colour
 // channels to linear; alpha is always linear (glTF 3.9.2).
+// Rows are independent, so they convert in parallel; 8-bit texels decode through a table
+// (SrgbByteDecoder, bit-identical to srgbToLinear).
 Image toLinearRgba(const Image& src, bool srgb) {
   Image out(src.width, src.height, 4, 1.f);
-  for (int y = 0; y < src.height; ++y) {
-    for (int x = 0; x < src.width; ++x) {
-      const int n = src.channels;
-      vec4 p(1.f);
-      if (n <= 2) {
-        p = vec4(vec3(src.at(x, y, 0)), n == 2 ? src.at(x, y, 1) : 1.f);
-      } else {
-        p = vec4(src.at(x, y, 0), src.at(x, y, 1), src.at(x, y, 2), n >= 4 ? src.at(x, y, 3) : 1.f);
-      }
-      for (int c = 0; c < 4; ++c) out.at(x, y, c) = (srgb && c < 3) ? srgbToLinear(p[c]) : p[c];
-    }
-  }
+  const SrgbByteDecoder& decode = SrgbByteDecoder::instance();
+  const int n = src.channels;
+  const std::size_t w = std::size_t(src.width);
+  tbb::parallel_for(tbb::blocked_range<int>(0, src.height),
+                    [&](const tbb::blocked_range<int>& rows) {
+                      for (int y = rows.begin(); y < rows.end(); ++y) {
+                        const float* in = src.pixels.data() + std::size_t(y) * w * std::size_t(n);
+                        float* to = out.pixels.data() + std::size_t(y) * w * 4;
+                        for (std::size_t x = 0; x < w; ++x, in += n, to += 4) {
+                          const bool grey = n <= 2;
+                          const float r = in[0], g = grey ? in[0] : in[1], b = grey ? in[0] : in[2];
+                          to[0] = srgb ? decode(r) : r;
+                          to[1] = srgb ? decode(g) : g;
+                          to[2] = srgb ? decode(b) : b;
+                          to[3] = n == 2 ? in[1] : n >= 4 ? in[3] : 1.f;
+                        }
+                      }
+                    });
   return out;
 }
 
