@@ -95,7 +95,11 @@ GlSceneTextures uploadTextures(const Scene& scene) {
     const int count = t.image.empty() ? 0 : mipLevelCount(t);
     for (int level = 0; level < count; ++level) {
       const Image& image = mipLevel(t, level);
-      const std::vector<float> texels = rgba(image);
+      // Loaded textures are RGBA already (validateScene): uploaded in place, without the copy
+      // (a 2048^2 level is 64 MB); anything else expanded first.
+      std::vector<float> expanded;
+      if (image.channels != 4) expanded = rgba(image);
+      const std::vector<float>& texels = image.channels == 4 ? image.pixels : expanded;
       // Image row y to GL row y (no flip): the shader fetches texel (x, y) of the image.
       glTextureSubImage3D(out.texels.id(), level, 0, 0, k, image.width, image.height, 1, GL_RGBA,
                           GL_FLOAT, texels.data());
