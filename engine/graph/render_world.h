@@ -44,13 +44,10 @@ class RenderWorld {
   // The scene with its GL buffers, what gl::ForwardRenderer draws (uploads on first call).
   gl::ForwardScene forwardScene();
 
-  // One T per world (a compiled program, a framebuffer...), built on first use with the context
-  // current and destroyed with it current. Passes keep GL state here, never in themselves,
-  // because a compiled graph may outlive the context it ran on.
   // Work done once per world, not per frame, in ms: the world's own first-use builds (kBvhBuild,
-  // kGlSceneUpload, kGlShadingUpload, kGlSetup) and what passes build once ("env_cube
-  // prefilter", "shadow_map build"). Reports show it beside the per-frame medians, never inside
-  // them: GraphExecutor::runMeasured measures again a frame in which it grew.
+  // kGlSceneUpload, kGlShadingUpload, kGlTextureUpload, kGlSetup) and what passes build once
+  // ("env_cube prefilter", "shadow_map build"). Reports show it beside the per-frame medians, never
+  // inside them: GraphExecutor::runMeasured measures again a frame in which it grew.
   std::map<std::string, double> oneTimeMs;
   static constexpr const char* kBvhBuild = "embree device and BVH build";
   static constexpr const char* kGlSceneUpload = "gl scene upload";
@@ -61,8 +58,13 @@ class RenderWorld {
   // glCached objects: programs compiled, framebuffers and renderers created.
   static constexpr const char* kGlSetup = "gl programs and targets";
   // Adds to oneTimeMs[what]; safe from any thread (rtScene() may first run inside a TBB loop).
+  // Every writer goes through it.
   void addOneTime(const std::string& what, double ms);
 
+  // One T per world (a compiled program, a framebuffer...), built on first use with the context
+  // current and destroyed with it current. Passes keep GL state here, never in themselves,
+  // because a compiled graph may outlive the context it ran on.
+  // Its construction is timed as kGlSetup.
   template <class T>
   T& glCached() {
     auto& slot = glCache_[std::type_index(typeid(T))];

@@ -151,11 +151,11 @@ void EnvReflectionPass::execute(PassContext& c) {
   // is measured again. The sphere map follows the camera's rotation: its rebuilds stay in frames.
   if (built.map && kind_ != EnvMapKind::Sphere) {
     c.count("map_ms", built.mapMs);
-    world.oneTimeMs[std::string(name) + " map"] += built.mapMs;
+    world.addOneTime(std::string(name) + " map", built.mapMs);
   }
   if (built.prefilterMs >= 0.0) {  // a one-time cost per environment, reported apart
     c.count("prefilter_ms", built.prefilterMs);
-    world.oneTimeMs[std::string(name) + " prefilter"] += built.prefilterMs;
+    world.addOneTime(std::string(name) + " prefilter", built.prefilterMs);
     log().info("{}: GGX-prefiltered {} levels in {:.1f} ms (once per environment)", name,
                map.levels() - 1, built.prefilterMs);
   }

@@ -37,7 +37,7 @@ void ShadowMapPass::execute(PassContext& c) {
   c.count("shadow_map_builds", built.rendered ? 1.0 : 0.0);
   if (built.rendered && settings_.update == shadowmap::Update::Static) {
     c.count("shadow_map_build_ms", built.ms);
-    world.oneTimeMs["shadow_map build"] += built.ms;
+    world.addOneTime("shadow_map build", built.ms);
   }
 }
 
