@@ -8,17 +8,12 @@
 
 #include "engine/scene/mip_chain.h"
 #include "engine/shading/texture_sampling.h"
+#include "tests/support/random_image.h"
 
 namespace diptych {
 namespace {
 
-Image randomImage(int w, int h, int channels, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> unit(0.f, 1.f);
-  Image image(w, h, channels);
-  for (float& v : image.pixels) v = unit(rng);
-  return image;
-}
+using ::diptych::testing::randomImage;
 
 double mean(const Image& image, int c) {
   double sum = 0.0;

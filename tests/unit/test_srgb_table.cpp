@@ -14,6 +14,7 @@
 #include "engine/core/image.h"
 #include "engine/core/srgb_table.h"
 #include "engine/scene/load.h"
+#include "tests/support/random_image.h"
 #include "tests/support/test_paths.h"
 
 namespace diptych {
@@ -62,13 +63,7 @@ std::filesystem::path scratch() {
   return dir;
 }
 
-Image randomImage(int w, int h, int channels, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> unit(0.f, 1.f);
-  Image image(w, h, channels);
-  for (float& v : image.pixels) v = unit(rng);
-  return image;
-}
+using ::diptych::testing::randomImage;
 
 // readImage's 8-bit values are ones the table knows (else the fast path would never be taken).
 TEST(SrgbTable, ReadImageGivesByteValuesTheTableKnows) {
