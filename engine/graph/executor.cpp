@@ -143,22 +143,46 @@ void GraphExecutor::clearTimings() {
   frameGlWaitCpuMs_.clear();
 }
 
+namespace {
+
+// A node's own time in frame f: its CPU clock plus, under GlSync::PerNode, the wait for its
+// own GL work to complete (the rasterization on llvmpipe).
+double ownMs(const NodeTiming& t, std::size_t f) {
+  return t.cpuMs[f] + (f < t.glCompletionMs.size() ? t.glCompletionMs[f] : 0.0);
+}
+
+}  // namespace
+
 GraphExecutor::MeasuredRun GraphExecutor::runMeasured(
     int warmup, int frames, const std::function<void(int, int)>& onFrame) {
   MeasuredRun run;
   const std::map<std::string, double> before = world_.oneTimeMs;
+  std::vector<double> firstOwnMs(timings_.size());
   int total = warmup + frames;
   for (int f = 0; f < total; ++f) {
     if (f == warmup) clearTimings();
     const std::map<std::string, double> frameBefore = world_.oneTimeMs;
     runFrame();
-    if (f == 0) run.firstFrameMs = frameMs_.back();
+    if (f == 0) {  // the first frame's samples are each vector's last (none cleared since)
+      run.firstFrameMs = frameMs_.back();
+      for (std::size_t n = 0; n < timings_.size(); ++n) {
+        const NodeTiming& t = timings_[n];
+        firstOwnMs[n] = ownMs(t, t.cpuMs.size() - 1) - t.oneTimeMs.back();
+        run.firstFrameOneTimeMs += t.oneTimeMs.back();
+      }
+    }
     if (f >= warmup && world_.oneTimeMs != frameBefore && !run.repeatedAFrame) {
       run.repeatedAFrame = true;
       clearTimings();
       total = f + 1 + frames;
     }
     if (onFrame) onFrame(f + 1, total);
+  }
+  run.steadyFrameMs = summarize(frameMs_).median;
+  for (std::size_t n = 0; n < timings_.size(); ++n) {
+    std::vector<double> own;
+    for (std::size_t f = 0; f < timings_[n].cpuMs.size(); ++f) own.push_back(ownMs(timings_[n], f));
+    run.firstUseMs.push_back(firstOwnMs[n] - summarize(own).median);
   }
   for (const auto& [what, ms] : world_.oneTimeMs) {
     const auto it = before.find(what);
@@ -239,6 +263,7 @@ void GraphExecutor::runFrame() {
     }
     Stopwatch clock;
     const double cpuStart = processCpuMs();
+    const double oneTimeBefore = world_.oneTimeTotalMs();
     auto slotOf = [&](int storage) { return graph_.storages[storage].poolSlot; };
     switch (node.kind) {
       case NodeKind::Pass: {
@@ -274,6 +299,7 @@ void GraphExecutor::runFrame() {
     }
     timing.cpuMs.push_back(clock.milliseconds());
     timing.processCpuMs.push_back(processCpuMs() - cpuStart);
+    timing.oneTimeMs.push_back(world_.oneTimeTotalMs() - oneTimeBefore);
     // A readback returns with its work done (it copies into client memory): nothing of it is
     // pending beside the CPU nodes after it. Outside its clocks, like every completion.
     if (node.kind == NodeKind::Readback) waitForGl(nullptr, nullptr);

@@ -38,6 +38,9 @@ struct NodeTiming {
   // node is GL work itself, and for a readback, whose work is done when it returns). The
   // export names those nodes (`overlapped_by`).
   std::vector<double> glOverlapMs;
+  // One-time work the world recorded while the node ran (growth of RenderWorld::oneTimeMs:
+  // a BVH build, an upload, a program compiled), per frame.
+  std::vector<double> oneTimeMs;
   std::map<std::string, double> counters;  // last frame's counters (e.g. rays)
 };
 
@@ -76,6 +79,19 @@ class GraphExecutor {
     double firstFrameMs = 0;  // wall time of the first frame (every node, its GL work included)
     std::map<std::string, double> oneTimeMs;  // RenderWorld::oneTimeMs added during the run
     bool repeatedAFrame = false;              // see runMeasured
+    // The first frame against a steady one. Beside the one-time work the world records
+    // (firstFrameOneTimeMs), a first frame pays for what no one times: a GL driver compiling
+    // each program at its first draw (llvmpipe JITs a shader variant per state there, seconds
+    // each with Mesa's shader cache cold, while glLinkProgram took milliseconds), first-touch
+    // pages of new buffers, cold caches. firstFrameUnrecordedMs() is that remainder; per node,
+    // firstUseMs is the node's own time in the first frame (CPU clock plus its GL completion)
+    // less the one-time work it recorded, less its median over the measured frames.
+    double firstFrameOneTimeMs = 0;
+    double steadyFrameMs = 0;        // median wall time of the measured frames
+    std::vector<double> firstUseMs;  // per graph node
+    double firstFrameUnrecordedMs() const {
+      return firstFrameMs - firstFrameOneTimeMs - steadyFrameMs;
+    }
   };
   // Runs `warmup` frames, drops their timings, then `frames` measured ones. A measured frame in
   // which a pass did one-time work for the world (RenderWorld::oneTimeMs grew: a static shadow

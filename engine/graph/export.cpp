@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "engine/core/timing.h"
 
 namespace diptych {
@@ -173,6 +175,38 @@ std::string graphToDot(const CompiledGraph& g, const std::vector<NodeTiming>* ti
   dot += fmt::format("  label=\"pool: {} bytes with reuse, {} without\";\n}}\n", g.bytesWithReuse(),
                      g.bytesWithoutReuse());
   return dot;
+}
+
+nlohmann::json firstFrameJson(const CompiledGraph& graph, const GraphExecutor::MeasuredRun& run) {
+  nlohmann::json byNode = nlohmann::json::object();
+  for (std::size_t n = 0; n < run.firstUseMs.size(); ++n)
+    if (run.firstUseMs[n] > kFirstUseShownMs) byNode[graph.nodes[n].name] = run.firstUseMs[n];
+  return {{"wall_ms", run.firstFrameMs},
+          {"one_time_ms", run.firstFrameOneTimeMs},
+          {"steady_ms", run.steadyFrameMs},
+          {"unrecorded_ms", run.firstFrameUnrecordedMs()},
+          {"first_use_ms", byNode}};
+}
+
+std::string firstFrameLine(const CompiledGraph& graph, const GraphExecutor::MeasuredRun& run) {
+  std::string line = fmt::format(
+      "first frame: {:.1f} ms against a steady {:.1f} ms: {:.1f} ms one-time work (listed above), "
+      "{:.1f} ms first-use work recorded nowhere else",
+      run.firstFrameMs, run.steadyFrameMs, run.firstFrameOneTimeMs, run.firstFrameUnrecordedMs());
+  std::vector<std::size_t> order;
+  for (std::size_t n = 0; n < run.firstUseMs.size(); ++n)
+    if (run.firstUseMs[n] > kFirstUseShownMs) order.push_back(n);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return run.firstUseMs[a] > run.firstUseMs[b]; });
+  for (std::size_t i = 0; i < order.size(); ++i)
+    line += fmt::format("{} {} {:.1f}", i == 0 ? " (by node:" : ",", graph.nodes[order[i]].name,
+                        run.firstUseMs[order[i]]);
+  if (!order.empty()) line += ")";
+  // What it is, where it is known to come from (docs/frame-graph.md, "One-time costs").
+  return line +
+         ": a GL driver compiling programs at their first draw (llvmpipe; Mesa's shader "
+         "cache keeps them for the next run), first-touch memory, cold caches; in no frame "
+         "median";
 }
 
 }  // namespace diptych

@@ -19,4 +19,11 @@ nlohmann::json graphToJson(const CompiledGraph& graph,
 std::string graphToDot(const CompiledGraph& graph,
                        const std::vector<NodeTiming>* timings = nullptr);
 
+// A run's first frame against a steady one (GraphExecutor::MeasuredRun): {wall_ms, one_time_ms,
+// steady_ms, unrecorded_ms, first_use_ms: {node: ms}} (nodes above kFirstUseShownMs only), and
+// the same as one line for a terminal.
+constexpr double kFirstUseShownMs = 1.0;
+nlohmann::json firstFrameJson(const CompiledGraph& graph, const GraphExecutor::MeasuredRun& run);
+std::string firstFrameLine(const CompiledGraph& graph, const GraphExecutor::MeasuredRun& run);
+
 }  // namespace diptych

@@ -25,6 +25,13 @@ void RenderWorld::addOneTime(const std::string& what, double ms) {
   oneTimeMs[what] += ms;
 }
 
+double RenderWorld::oneTimeTotalMs() const {
+  const std::lock_guard lock(oneTimeMutex_);
+  double sum = 0;
+  for (const auto& [what, ms] : oneTimeMs) sum += ms;
+  return sum;
+}
+
 const RtScene& RenderWorld::rtScene() {
   std::call_once(rtOnce_, [this] {
     const Stopwatch clock;

@@ -60,6 +60,7 @@ class RenderWorld {
   // Adds to oneTimeMs[what]; safe from any thread (rtScene() may first run inside a TBB loop).
   // Every writer goes through it.
   void addOneTime(const std::string& what, double ms);
+  double oneTimeTotalMs() const;  // the sum of oneTimeMs, read under the same lock
 
   // One T per world (a compiled program, a framebuffer...), built on first use with the context
   // current and destroyed with it current. Passes keep GL state here, never in themselves,
@@ -108,7 +109,7 @@ class RenderWorld {
   std::map<std::type_index, std::shared_ptr<void>> glCache_;
   std::map<std::type_index, std::shared_ptr<void>> cpuCache_;
   std::mutex cpuCacheMutex_;
-  std::mutex oneTimeMutex_;
+  mutable std::mutex oneTimeMutex_;
 };
 
 }  // namespace diptych

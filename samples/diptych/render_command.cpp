@@ -233,12 +233,14 @@ void runRender(const RenderOptions& o) {
     j["devices"] = devices;
     j["one_time_ms"] = world.oneTimeMs;
     j["measured_again"] = measured.repeatedAFrame;
+    j["first_frame"] = firstFrameJson(graph, measured);
     writeTextFile(o.timingsOut, j.dump(2));
     std::printf("wrote %s\n", o.timingsOut.c_str());
   }
   printTimingTable(graph, executor, o);
   for (const auto& [what, ms] : world.oneTimeMs)  // not in the frame medians above
     std::printf("one-time: %s %.3f ms\n", what.c_str(), ms);
+  std::printf("%s\n", firstFrameLine(graph, measured).c_str());
   if (measured.repeatedAFrame)  // runMeasured's rule (executor.h)
     std::printf(
         "a measured frame did one-time work: its samples were dropped and the frames measured "

@@ -59,6 +59,20 @@ endforeach()
 if(NOT osmesa_stdout MATCHES "one-time: embree device and BVH build [0-9.]+ ms")
   message(FATAL_ERROR "render must print the BVH build as a one-time cost:\n${osmesa_stdout}")
 endif()
+# The first frame against a steady one: what it paid beyond the recorded one-time work is said
+# too (tests/unit/test_first_frame.cpp checks the split).
+foreach(key wall_ms one_time_ms steady_ms unrecorded_ms)
+  string(JSON ms ERROR_VARIABLE missing GET "${timings}" first_frame ${key})
+  if(missing)
+    message(FATAL_ERROR "--timings first_frame lacks '${key}': ${timings}")
+  endif()
+endforeach()
+string(JSON first_one_time GET "${timings}" first_frame one_time_ms)
+if(NOT first_one_time GREATER 0 OR NOT osmesa_stdout MATCHES
+   "first frame: [0-9.]+ ms against a steady [0-9.]+ ms: [0-9.]+ ms one-time work")
+  message(FATAL_ERROR "render must print its first frame against a steady one, with the one-time "
+          "work it did (${first_one_time} ms):\n${osmesa_stdout}")
+endif()
 string(JSON again GET "${timings}" measured_again)
 if(NOT again OR NOT osmesa_stdout MATCHES "a measured frame did one-time work")
   message(FATAL_ERROR "with no warm-up the first frame did one-time work and must be said to "
