@@ -334,7 +334,8 @@ void runCompare(const CompareOptions& o) {
     }
     CompiledGraph graph =
         compileGraph(recipe, registry, variantWorld(i).scene(), frame, variantOutputs[i]);
-    identities.push_back(frameIdentity(graph, recipe, registry, variantSceneState(scene, v)));
+    identities.push_back(
+        frameIdentity(graph, recipe, registry, variantSceneState(scene, v), v.surfaceDetail));
     for (std::size_t j = 0; j < i && sameAs[i] < 0; ++j)
       if (sameAs[j] < 0 && identities[j].signature == identities[i].signature) sameAs[i] = int(j);
     if (sameAs[i] >= 0) {

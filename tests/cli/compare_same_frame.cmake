@@ -96,3 +96,18 @@ v = variants["sm-2048"]
 assert v.get("same_frame_as") == "sm" and v["same_frame_reason"] == "the same compiled graph", v
 print("textured:", {n: v.get("same_frame_as") for n, v in variants.items()})
 ]=] "${WORK_DIR}/tex/results.json")
+
+# On a bump-mapped scene detail-bump is the scene as authored (bump): hybrid-exact's frame;
+# detail-flat changes the scene and is timed.
+expect_success(detail ARGS compare "${SOURCE_DIR}/samples/scenes/surface-detail.json"
+               --variants hybrid-exact,detail-bump,detail-flat --size 48x36 --frames 1 --warmup 0
+               --out det FILES det/results.json)
+expect_python("surface detail" [=[
+import json, sys
+variants = {v["name"]: v for v in json.load(open(sys.argv[1]))["variants"]}
+bump, flat = variants["detail-bump"], variants["detail-flat"]
+assert bump.get("same_frame_as") == "hybrid-exact", bump.get("same_frame_as")
+assert bump["same_frame_reason"] == "surface_detail bump: the scene as authored", bump["same_frame_reason"]
+assert "same_frame_as" not in flat, flat.get("same_frame_reason")
+print("detail-bump:", bump["same_frame_reason"])
+]=] "${WORK_DIR}/det/results.json")

@@ -29,8 +29,10 @@ nlohmann::json resourceJson(const CompiledGraph& g, ResourceId id) {
 }  // namespace
 
 FrameIdentity frameIdentity(const CompiledGraph& graph, const Recipe& recipe,
-                            const PassRegistry& registry, const nlohmann::json& sceneState) {
+                            const PassRegistry& registry, const nlohmann::json& sceneState,
+                            const std::string& askedDetail) {
   FrameIdentity id;
+  id.askedDetail = askedDetail;
   nlohmann::json live = nlohmann::json::array();
   id.passes = nlohmann::json::object();
   for (const GraphPass& p : graph.passes) {
@@ -94,6 +96,11 @@ std::string sameFrameReason(const FrameIdentity& mine, const FrameIdentity& earl
   }
   for (const auto& [name, p] : earlier.passes.items())
     if (!mine.passes.contains(name) && p["culled"].get<bool>()) add(name, p);
+  // Equal signatures hold the same scene state: a detail asked differently changed nothing.
+  if (mine.askedDetail != earlier.askedDetail)
+    reason += (reason.empty() ? "" : "; ") + std::string("surface_detail ") +
+              (mine.askedDetail.empty() ? earlier.askedDetail : mine.askedDetail) +
+              ": the scene as authored";
   return reason.empty() ? "the same compiled graph" : reason;
 }
 

@@ -23,14 +23,19 @@ struct FrameIdentity {
   nlohmann::json signature;
   // Every pass, culled or not: name -> {type, params, culled, reason} (for the reason below).
   nlohmann::json passes;
+  // The surface detail the variant asked for ("" for as authored): "bump" on a bump-mapped
+  // scene, or any mode on a scene without bump maps, leaves the scene as it is.
+  std::string askedDetail;
 };
 
 FrameIdentity frameIdentity(const CompiledGraph& graph, const Recipe& recipe,
-                            const PassRegistry& registry, const nlohmann::json& sceneState);
+                            const PassRegistry& registry, const nlohmann::json& sceneState,
+                            const std::string& askedDetail);
 
 // Why two frames with equal signatures are the same: the passes their recipes set differently
 // (type or parameters), all culled, as "texture_filtering culled: scene has no textured
-// materials"; "the same compiled graph" where the recipes differ in no pass.
+// materials", and "surface_detail bump: the scene as authored" where only the asked detail
+// differs; "the same compiled graph" where the variants differ in nothing else.
 std::string sameFrameReason(const FrameIdentity& mine, const FrameIdentity& earlier);
 
 }  // namespace diptych::cli
