@@ -28,6 +28,7 @@
 #include "passes/slots.h"
 #include "samples/diptych/compare/report.h"
 #include "samples/diptych/compare/runner.h"
+#include "samples/diptych/compare/same_frame.h"
 #include "samples/diptych/compare/sdf_steps_report.h"
 #include "samples/diptych/compare/variants.h"
 #include "samples/diptych/parse_size.h"
@@ -61,11 +62,20 @@ nlohmann::json medianPassMs(const std::vector<nlohmann::json>& rounds) {
   return out;
 }
 
-double pairedSpeedup(const std::vector<double>& referenceMs, const std::vector<double>& totalMs) {
+// Per round, reference / variant, each timed in that round.
+std::vector<double> pairedRatios(const std::vector<double>& referenceMs,
+                                 const std::vector<double>& totalMs) {
   std::vector<double> ratios;
   for (std::size_t r = 0; r < totalMs.size() && r < referenceMs.size(); ++r)
     if (totalMs[r] > 0) ratios.push_back(referenceMs[r] / totalMs[r]);
-  return ratios.empty() ? 0.0 : summarize(ratios).median;
+  return ratios;
+}
+
+nlohmann::json culledPasses(const CompiledGraph& graph) {
+  nlohmann::json culled = nlohmann::json::array();
+  for (const GraphPass& p : graph.passes)
+    if (p.culled) culled.push_back({{"pass", p.name}, {"reason", p.cullReason}});
+  return culled;
 }
 
 // Pixels whose material has the coefficient `pick` > 0 (k_ps for reflection, k_t for transmission).
@@ -284,6 +294,10 @@ void runCompare(const CompareOptions& o) {
   std::vector<std::unique_ptr<Scene>> variantScenes(variants.size());
   std::vector<std::unique_ptr<RenderWorld>> variantWorlds(variants.size());
   std::vector<std::vector<std::string>> variantOutputs(variants.size());
+  // Per variant: the earlier variant whose compiled frame it is (same_frame.h), or -1 where it
+  // is timed itself. Only timed variants are matched, so a same-frame variant names one that was.
+  std::vector<int> sameAs(variants.size(), -1);
+  std::vector<FrameIdentity> identities;
   const auto variantWorld = [&](std::size_t i) -> RenderWorld& {
     return variantWorlds[i] ? *variantWorlds[i] : world;
   };
@@ -318,7 +332,34 @@ void runCompare(const CompareOptions& o) {
       tracedTriangles += m.indices.size() / 3;
       tracedBytes += 12 * (m.positions.size() + m.indices.size() / 3);
     }
-    const GraphRun run = runGraph(recipe, variantWorld(i), frame, outs, o.warmup, o.frames);
+    CompiledGraph graph =
+        compileGraph(recipe, registry, variantWorld(i).scene(), frame, variantOutputs[i]);
+    identities.push_back(
+        frameIdentity(graph, recipe, registry, variantSceneState(scene, v), v.surfaceDetail));
+    for (std::size_t j = 0; j < i && sameAs[i] < 0; ++j)
+      if (sameAs[j] < 0 && identities[j].signature == identities[i].signature) sameAs[i] = int(j);
+    if (sameAs[i] >= 0) {
+      // The frame of an earlier variant: its image, metrics, signals and timings, not run again.
+      const ReportVariant& same = results[std::size_t(sameAs[i])];
+      ReportVariant rv{v.name, same.image, same.heatmap, graphToDot(graph), same.result};
+      rv.result.update(
+          {{"name", v.name},
+           {"recipe", v.recipeFile.empty() ? "<built-in hybrid>" : v.recipeFile},
+           {"slots", v.slots},
+           {"tessellation", v.tessellation},
+           {"surface_detail", v.surfaceDetail.empty() ? "as authored" : v.surfaceDetail},
+           {"one_time_ms", nlohmann::json::object()},  // it built nothing
+           {"culled", culledPasses(graph)},
+           {"graph", graphToJson(graph)},
+           {"same_frame_as", same.name},
+           {"same_frame_reason",
+            sameFrameReason(identities[i], identities[std::size_t(sameAs[i])])},
+           {"timings_from", same.name}});
+      progress("compare", ++step, steps, v.name + " (same frame as " + same.name + ")");
+      results.push_back(std::move(rv));  // `same` may move with it
+      continue;
+    }
+    const GraphRun run = runCompiled(std::move(graph), variantWorld(i), outs, o.warmup, o.frames);
     rounds[i].totalMs.push_back(run.totalMs);
     rounds[i].passMs.push_back(run.passMs);
     // Work this variant did once for the world (a static shadow map, a prefiltered environment),
@@ -330,9 +371,6 @@ void runCompare(const CompareOptions& o) {
     const auto metrics = computeMetrics(rv.image, referenceImage);
     rv.heatmap = heatMap(flipErrorMap(rv.image, referenceImage), 1.f);
     rv.dot = graphToDot(run.graph, &run.timings);
-    nlohmann::json culled = nlohmann::json::array();
-    for (const GraphPass& p : run.graph.passes)
-      if (p.culled) culled.push_back({{"pass", p.name}, {"reason", p.cullReason}});
     rv.result = {{"name", v.name},
                  {"recipe", v.recipeFile.empty() ? "<built-in hybrid>" : v.recipeFile},
                  {"slots", v.slots},
@@ -350,7 +388,7 @@ void runCompare(const CompareOptions& o) {
                  {"metrics", metrics},
                  {"signals", hasGbuffer ? signalErrors(scene, run, recipe, exact, exactRecipe)
                                         : nlohmann::json::object()},
-                 {"culled", culled},
+                 {"culled", culledPasses(run.graph)},
                  {"graph", graphToJson(run.graph, &run.timings)}};
     results.push_back(std::move(rv));
     progress("compare", ++step, steps, v.name);
@@ -364,6 +402,10 @@ void runCompare(const CompareOptions& o) {
     progress("compare", ++step, steps, round + "reference");
     referenceRounds.push_back(timeReference().totalMs);
     for (std::size_t i = 0; i < variants.size(); ++i) {
+      if (sameAs[i] >= 0) {
+        progress("compare", ++step, steps, round + variants[i].name + " (same frame)");
+        continue;
+      }
       const GraphRun run =
           runGraph(recipes[i], variantWorld(i), frame, variantOutputs[i], o.warmup, o.frames);
       rounds[i].totalMs.push_back(run.totalMs);
@@ -374,19 +416,31 @@ void runCompare(const CompareOptions& o) {
   if (o.rounds > 1) {
     referenceMs = summarize(referenceRounds).median;
     for (std::size_t i = 0; i < results.size(); ++i) {
+      if (sameAs[i] >= 0) continue;
       nlohmann::json& v = results[i].result;
       v["total_ms"] = summarize(rounds[i].totalMs).median;
       v["total_ms_rounds"] = rounds[i].totalMs;
       v["pass_ms"] = medianPassMs(rounds[i].passMs);
-      v["speedup_vs_reference"] = pairedSpeedup(referenceRounds, rounds[i].totalMs);
+      const std::vector<double> ratios = pairedRatios(referenceRounds, rounds[i].totalMs);
+      v["speedup_rounds"] = ratios;  // the report prints their range beside the median
+      v["speedup_vs_reference"] = ratios.empty() ? 0.0 : summarize(ratios).median;
     }
+  }
+  // A same-frame variant's timings are those of the variant whose frame it is (said so by
+  // "timings_from"); it is no point of its own on the Pareto front or the plot.
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (sameAs[i] < 0) continue;
+    const nlohmann::json& same = results[std::size_t(sameAs[i])].result;
+    for (const char* key : {"total_ms", "total_ms_rounds", "pass_ms", "speedup_vs_reference",
+                            "speedup_rounds", "first_frame_ms", "gl_sync", "rays"})
+      if (same.contains(key)) results[i].result[key] = same[key];
   }
 
   // Pareto front in (time, error): no other variant is at least as fast and as accurate, and
   // strictly better in one.
   for (ReportVariant& a : results) {
     const double ta = a.result["total_ms"], ea = a.result["metrics"].value(o.metric, 0.0);
-    bool dominated = false;
+    bool dominated = a.result.contains("same_frame_as");
     for (const ReportVariant& b : results) {
       const double tb = b.result["total_ms"], eb = b.result["metrics"].value(o.metric, 0.0);
       if (tb <= ta && eb <= ea && (tb < ta || eb < ea)) dominated = true;
@@ -429,15 +483,7 @@ void runCompare(const CompareOptions& o) {
   auto written = writeReport(dir, header, referenceImage, results, o.metric);
   written.insert(written.end(), stepFiles.begin(), stepFiles.end());
 
-  std::printf("%-36s %10s %9s %10s %10s %8s %s\n", "variant", "total ms", "speedup", "rmse",
-              o.metric.c_str(), "ssim", "pareto");
-  for (const ReportVariant& r : results) {
-    const auto& m = r.result["metrics"];
-    std::printf("%-36s %10.2f %8.2fx %10.4g %10.4g %8.4f %s\n", r.name.c_str(),
-                r.result["total_ms"].get<double>(), r.result["speedup_vs_reference"].get<double>(),
-                m.value("rmse", 0.0), m.value(o.metric, 0.0), m.value("ssim", 0.0),
-                r.result["pareto"].get<bool>() ? "*" : "");
-  }
+  printSummaryTable(results, o.metric, o.rounds);
   std::printf("reference %s: %.2f ms%s; %s\nwrote %zu files to %s (open %s)\n",
               reference.text.c_str(), referenceMs,
               !referenceCached ? ""

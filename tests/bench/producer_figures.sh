@@ -20,7 +20,8 @@ r = json.load(open(sys.argv[1]))
 print("\n#### %s %s (reference %s: %.0f ms)\n" % (sys.argv[2], sys.argv[3], r["reference"]["spec"], r["reference"]["ms"]))
 print("| variant | producer pass ms | producer Mrays/s | frame ms | FLIP mean |")
 print("|---|---:|---:|---:|---:|")
-slot_pass = {"visibility": "shadows", "reflection": "reflection", "transmission": "transmission"}
+slot_pass = {"visibility": "shadows", "reflection": "reflection", "transmission": "transmission",
+             "texture_filtering": "texture_filtering"}
 def row(name, v, passes):
     ms = sum(v["pass_ms"][p] for p in passes)
     graph = json.load(open(sys.argv[1].replace("results.json", v["files"]["graph"])))
@@ -29,8 +30,10 @@ def row(name, v, passes):
     print("| %s | %.1f | %s | %.1f | %.4f |" % (name, ms, rate, v["total_ms"], v["metrics"]["flip_mean"]))
 for v in r["variants"]:
     slots = [s.split("=")[0] for s in v["slots"]] or ["visibility", "reflection", "transmission"]
-    passes = [slot_pass[s] for s in slots if slot_pass[s] in v["pass_ms"]]
-    if v["name"] == "hybrid-exact":  # one row per exact producer (a culled one has no time)
+    passes = [slot_pass[s] for s in slots if slot_pass.get(s) in v["pass_ms"]]
+    if "same_frame_as" in v:  # not timed: an earlier variant's frame (docs/compare.md)
+        print("| %s | same frame as %s | | | |" % (v["name"], v["same_frame_as"]))
+    elif v["name"] == "hybrid-exact":  # one row per exact producer (a culled one has no time)
         for exact, p in (("rt_shadows", "shadows"), ("rt_reflection", "reflection"), ("rt_transmission", "transmission")):
             if p in v["pass_ms"]:
                 row("hybrid-exact: " + exact, v, [p])

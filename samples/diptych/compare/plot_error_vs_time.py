@@ -4,7 +4,8 @@
 usage: plot_error_vs_time.py results.json METRIC OUT_PREFIX
 Writes OUT_PREFIX.svg and OUT_PREFIX.png: one point per variant (total frame ms, log scale, vs the
 metric), the reference's time as a vertical line, and the Pareto front (variants no other
-variant beats in both time and error) joined and highlighted.
+variant beats in both time and error) joined and highlighted. A variant whose compiled frame is an
+earlier one's ("same_frame_as") is no point of its own: that point's label counts it.
 """
 import json
 import sys
@@ -19,14 +20,19 @@ def main():
     results_path, metric, out_prefix = sys.argv[1], sys.argv[2], sys.argv[3]
     with open(results_path) as f:
         results = json.load(f)
-    variants = results["variants"]
+    same = {}  # variant -> how many others are its frame
+    for v in results["variants"]:
+        if "same_frame_as" in v:
+            same[v["same_frame_as"]] = same.get(v["same_frame_as"], 0) + 1
+    variants = [v for v in results["variants"] if "same_frame_as" not in v]
     fig, ax = plt.subplots(figsize=(9, 5.5), dpi=110)
     for v in variants:
         t, e = v["total_ms"], v["metrics"].get(metric, 0.0)
         ax.scatter([t], [e], s=46, zorder=3,
                    color="#d62728" if v.get("pareto") else "#1f77b4",
                    edgecolor="black", linewidth=0.5)
-        ax.annotate(v["name"], (t, e), textcoords="offset points", xytext=(5, 4), fontsize=7)
+        label = v["name"] + (" (+%d same frame)" % same[v["name"]] if v["name"] in same else "")
+        ax.annotate(label, (t, e), textcoords="offset points", xytext=(5, 4), fontsize=7)
     front = sorted((v for v in variants if v.get("pareto")), key=lambda v: v["total_ms"])
     if len(front) > 1:
         ax.step([v["total_ms"] for v in front], [v["metrics"].get(metric, 0.0) for v in front],

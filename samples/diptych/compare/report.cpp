@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -51,7 +52,7 @@ table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;paddin
 th{background:#f3f3f3}td:first-child{text-align:left}tr.pareto td:first-child{font-weight:bold;color:#b00}
 .variant{display:flex;gap:16px;align-items:flex-start;margin:18px 0}.split{position:relative;display:inline-block}
 .split img{display:block}.split img.top{position:absolute;top:0;left:0;clip-path:inset(0 calc(100% - var(--pos)) 0 0)}
-.split input{width:100%}.caption{font-size:12px;color:#555}img.plot{max-width:100%})";
+.split input{width:100%}td.same-frame{text-align:left;color:#555}.caption{font-size:12px;color:#555}img.plot{max-width:100%})";
 
 // One-time costs (results.json "one_time_ms", what -> ms, of the run or of a variant): their
 // sum, and the list "what ms, ..." the report shows.
@@ -68,7 +69,50 @@ OneTimeCosts oneTimeCosts(const nlohmann::json& costs) {
   return c;
 }
 
+// "1.04x", and with timing rounds the range of the per-round paired ratios: "1.04x (0.94-1.19)".
+std::string speedupText(const nlohmann::json& v) {
+  std::string text = fmt::format("{:.2f}x", v["speedup_vs_reference"].get<double>());
+  if (const auto r = v.value("speedup_rounds", nlohmann::json::array()); r.size() > 1) {
+    const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+    text += fmt::format(" ({:.2f}-{:.2f})", lo->get<double>(), hi->get<double>());
+  }
+  return text;
+}
+
+// A variant compiled to an earlier one's frame (same_frame.h): "same frame as NAME (reason)".
+std::string sameFrameText(const nlohmann::json& v) {
+  return fmt::format("same frame as {} ({})", v["same_frame_as"].get<std::string>(),
+                     v["same_frame_reason"].get<std::string>());
+}
+
+// Printed (and shown in the report) when the speed-ups come from one round. Identical frames
+// measured 0.77-0.88x in one round on the loaded 2-core VM (docs/compare.md, "Timing rounds").
+const char* kOneRoundNote =
+    "Speed-ups from one timing round: a change of load between variants moves them, and on a "
+    "shared machine differences within about +-20% are not distinguishable from that noise "
+    "(docs/compare.md, \"Timing rounds\"); --rounds 3 times every variant in turn, pairs it "
+    "with the reference of its round and shows the range beside each speed-up.";
+
 }  // namespace
+
+void printSummaryTable(const std::vector<ReportVariant>& variants, const std::string& metric,
+                       int rounds) {
+  const int width = rounds > 1 ? 20 : 9;  // "1.04x (0.94-1.19)"
+  std::printf("%-36s %10s %*s %10s %10s %8s %s\n", "variant", "total ms", width, "speedup", "rmse",
+              metric.c_str(), "ssim", "pareto");
+  for (const ReportVariant& r : variants) {
+    const nlohmann::json& v = r.result;
+    if (v.contains("same_frame_as")) {
+      std::printf("%-36s %s\n", r.name.c_str(), sameFrameText(v).c_str());
+      continue;
+    }
+    const auto& m = v["metrics"];
+    std::printf("%-36s %10.2f %*s %10.4g %10.4g %8.4f %s\n", r.name.c_str(),
+                v["total_ms"].get<double>(), width, speedupText(v).c_str(), m.value("rmse", 0.0),
+                m.value(metric, 0.0), m.value("ssim", 0.0), v["pareto"].get<bool>() ? "*" : "");
+  }
+  if (rounds == 1) std::printf("%s\n", kOneRoundNote);
+}
 
 std::string htmlEscape(const std::string& s) {
   std::string out;
@@ -139,13 +183,14 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
         passNames.push_back(k);
   }
   std::ostringstream csv;
-  csv << "variant,total_ms,rays,pareto,one_time_ms";
+  csv << "variant,same_frame_as,total_ms,rays,pareto,one_time_ms";
   for (const auto& m : metricNames) csv << "," << m;
   for (const auto& p : passNames) csv << ",ms:" << p;
   csv << "\n";
   for (const auto& v : results["variants"]) {
-    csv << v["name"].get<std::string>() << "," << v["total_ms"].get<double>() << ","
-        << v["rays"].get<double>() << "," << (v["pareto"].get<bool>() ? 1 : 0) << ",";
+    csv << v["name"].get<std::string>() << "," << v.value("same_frame_as", "") << ","
+        << v["total_ms"].get<double>() << "," << v["rays"].get<double>() << ","
+        << (v["pareto"].get<bool>() ? 1 : 0) << ",";
     csv << oneTimeCosts(v.value("one_time_ms", nlohmann::json::object()))
                .totalMs;  // the sum (results.json lists them)
     for (const auto& m : metricNames)
@@ -220,12 +265,17 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       spread = fmt::format(" <span class=\"caption\">({:.1f}&ndash;{:.1f})</span>",
                            lo->get<double>(), hi->get<double>());
     }
-    page += fmt::format(
-        "<tr class=\"{}\"><td>{}</td><td>{:.2f}{}</td><td>{:.2f}x</td><td title=\"{}\">{:.1f}"
-        "</td><td>{:.0f}</td>",
-        v["pareto"].get<bool>() ? "pareto" : "", htmlEscape(v["name"].get<std::string>()),
-        v["total_ms"].get<double>(), spread, v["speedup_vs_reference"].get<double>(),
-        htmlEscape(oneTime.parts), oneTime.totalMs, v["rays"].get<double>());
+    // A same-frame variant has no time of its own: the row says whose frame it is instead.
+    const std::string timing =
+        v.contains("same_frame_as")
+            ? fmt::format("<td colspan=\"2\" class=\"same-frame\">{}</td>",
+                          htmlEscape(sameFrameText(v)))
+            : fmt::format("<td>{:.2f}{}</td><td>{}</td>", v["total_ms"].get<double>(), spread,
+                          htmlEscape(speedupText(v)));
+    page += fmt::format("<tr class=\"{}\"><td>{}</td>{}<td title=\"{}\">{:.1f}</td><td>{:.0f}</td>",
+                        v["pareto"].get<bool>() ? "pareto" : "",
+                        htmlEscape(v["name"].get<std::string>()), timing, htmlEscape(oneTime.parts),
+                        oneTime.totalMs, v["rays"].get<double>());
     for (const auto& m : shown)
       page += "<td>" + number(v["metrics"].value(m, nlohmann::json())) + "</td>";
     page += "<td style=\"text-align:left\">" + htmlEscape(signal) + "</td></tr>\n";
@@ -234,6 +284,8 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
           htmlEscape(plotMetric) +
           ". Files: <a href=\"results.json\">results.json</a>, <a "
           "href=\"results.csv\">results.csv</a>.</p>\n";
+  if (header.value("rounds", 1) == 1)
+    page += "<p class=\"caption\" id=\"one-round\">" + htmlEscape(kOneRoundNote) + "</p>\n";
   page += sdfStepSection(header.value("sdf_steps", nlohmann::json()));
   page +=
       "<h2>Images</h2>\n<p class=\"caption\">Drag a slider: left of it the variant, right of it "
@@ -241,8 +293,10 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       "Beside it, the FLIP error heat map.</p>\n";
   for (const auto& v : results["variants"]) {
     const std::string name = htmlEscape(v["name"].get<std::string>());
+    const std::string caption =
+        v.contains("same_frame_as") ? name + ": " + htmlEscape(sameFrameText(v)) : name;
     page += fmt::format(
-        "<div class=\"variant\"><div><div class=\"caption\">{0}</div><div class=\"split\" "
+        "<div class=\"variant\"><div><div class=\"caption\">{1}</div><div class=\"split\" "
         "style=\"--pos:50%\">"
         "<img src=\"images/reference.png\" alt=\"reference\"><img class=\"top\" "
         "src=\"images/{0}.png\" alt=\"{0}\">"
@@ -250,7 +304,7 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
         "oninput=\"this.parentElement.style.setProperty('--pos', this.value + '%')\"></div></div>"
         "<div><div class=\"caption\">FLIP error</div><img src=\"heatmaps/{0}.png\" alt=\"{0} heat "
         "map\"></div></div>\n",
-        name);
+        name, caption);
   }
   // For readers and for the headless-browser test: mark the page once the plot has loaded.
   page +=

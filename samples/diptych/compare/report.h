@@ -24,6 +24,12 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
                                      const Image& reference, std::vector<ReportVariant>& variants,
                                      const std::string& plotMetric);
 
+// The summary table on stdout: a same-frame variant as "same frame as NAME (reason)", with
+// rounds each speed-up's range over the rounds beside it, with one round a note that such
+// speed-ups do not separate small differences from load noise.
+void printSummaryTable(const std::vector<ReportVariant>& variants, const std::string& metric,
+                       int rounds);
+
 // Shared by every report page: HTML escaping and the style sheet.
 std::string htmlEscape(const std::string& s);
 const char* reportStyle();

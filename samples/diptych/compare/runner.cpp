@@ -12,8 +12,14 @@ namespace diptych::cli {
 
 GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings& frame,
                   const std::vector<std::string>& outputs, int warmup, int frames) {
+  return runCompiled(compileGraph(recipe, builtinPasses(), world.scene(), frame, outputs), world,
+                     outputs, warmup, frames);
+}
+
+GraphRun runCompiled(CompiledGraph graph, RenderWorld& world,
+                     const std::vector<std::string>& outputs, int warmup, int frames) {
   GraphRun run;
-  run.graph = compileGraph(recipe, builtinPasses(), world.scene(), frame, outputs);
+  run.graph = std::move(graph);
   GraphExecutor ex(run.graph, world);
   const GraphExecutor::MeasuredRun measured = ex.runMeasured(warmup, frames);
   run.firstFrameMs = measured.firstFrameMs;

@@ -30,6 +30,9 @@ struct GraphRun {
 
 GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings& frame,
                   const std::vector<std::string>& outputs, int warmup, int frames);
+// The same for a graph already compiled for `world` with `outputs` (compare inspects it first).
+GraphRun runCompiled(CompiledGraph graph, RenderWorld& world,
+                     const std::vector<std::string>& outputs, int warmup, int frames);
 
 // The resource that feeds shade's input for `slot` ("visibility" -> "shadows.visibility"),
 // or empty when the recipe has no producer for it.

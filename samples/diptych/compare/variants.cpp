@@ -63,12 +63,24 @@ std::vector<Variant> surfaceDetailVariants() {
   return out;
 }
 
+namespace {
+bool changesDetail(const Scene& scene, const Variant& variant) {
+  const auto detail = parseSurfaceDetail(variant.surfaceDetail);
+  return detail && *detail != SurfaceDetail::Bump && hasBumpMaps(scene);
+}
+}  // namespace
+
+nlohmann::json variantSceneState(const Scene& scene, const Variant& variant) {
+  return {{"tessellation", std::max(variant.tessellation, 0)},
+          {"surface_detail",
+           changesDetail(scene, variant) ? variant.surfaceDetail : std::string("as authored")}};
+}
+
 std::optional<Scene> variantScene(const Scene& scene, const Variant& variant) {
   const auto detail = parseSurfaceDetail(variant.surfaceDetail);
-  const bool changesDetail = detail && *detail != SurfaceDetail::Bump && hasBumpMaps(scene);
-  if (variant.tessellation <= 0 && !changesDetail) return std::nullopt;
+  if (variant.tessellation <= 0 && !changesDetail(scene, variant)) return std::nullopt;
   Scene out = variant.tessellation > 0 ? tessellateAnalytic(scene, variant.tessellation) : scene;
-  if (changesDetail) out = withSurfaceDetail(out, *detail);
+  if (changesDetail(scene, variant)) out = withSurfaceDetail(out, *detail);
   return out;
 }
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "engine/graph/recipe.h"
 #include "engine/graph/registry.h"
 #include "engine/scene/scene.h"
@@ -35,6 +37,10 @@ std::vector<Variant> surfaceDetailVariants();
 // The scene a variant runs on: tessellated (geometry axis), then with its surface detail
 // rendered as the variant says; std::nullopt when that is the scene itself.
 std::optional<Scene> variantScene(const Scene& scene, const Variant& variant);
+// The scene state variantScene gives a variant, for compare's frame signature (same_frame.h):
+// {"tessellation": N, or 0 for as authored; "surface_detail": the mode it applies, or "as
+// authored" (also where the scene has no bump maps, or the mode is bump: nothing changes)}.
+nlohmann::json variantSceneState(const Scene& scene, const Variant& variant);
 // A .json file ({"variants": [{"name", "recipe"?, "slots"?}]}) or comma-separated names from
 // the default set. Throws InputError naming the file/element or the unknown name.
 std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& registry);
