@@ -380,6 +380,7 @@ void runCompare(const CompareOptions& o) {
                  {"traced_geometry_bytes", tracedBytes},
                  {"total_ms", run.totalMs},
                  {"first_frame_ms", run.firstFrameMs},
+                 {"first_frame", run.firstFrame},
                  {"gl_sync", run.glSync},
                  {"one_time_ms", variantOneTime},
                  {"pass_ms", run.passMs},

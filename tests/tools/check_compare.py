@@ -82,6 +82,9 @@ def main():
     for v in results["variants"]:
         if not v.get("first_frame_ms", -1) >= 0:
             fail("%s lacks first_frame_ms" % v["name"])
+        first = v.get("first_frame", {})
+        if not all(k in first for k in ("wall_ms", "one_time_ms", "steady_ms", "unrecorded_ms")):
+            fail("%s lacks first_frame {wall_ms, one_time_ms, steady_ms, unrecorded_ms}" % v["name"])
     # Static shadow maps are a one-time cost of each variant that renders its own (the two map
     # resolutions differ, so each builds once), never inside its frame medians.
     for name in ["sm-256", "sm-4096"]:

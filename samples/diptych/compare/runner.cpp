@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "engine/core/timing.h"
+#include "engine/graph/export.h"
 #include "passes/registry.h"
 #include "passes/slots.h"
 
@@ -23,6 +24,7 @@ GraphRun runCompiled(CompiledGraph graph, RenderWorld& world,
   GraphExecutor ex(run.graph, world);
   const GraphExecutor::MeasuredRun measured = ex.runMeasured(warmup, frames);
   run.firstFrameMs = measured.firstFrameMs;
+  run.firstFrame = firstFrameJson(run.graph, measured);
   run.oneTimeMs = measured.oneTimeMs;
   run.timings = ex.timings();
   run.glSync = ex.glSyncReason();

@@ -20,6 +20,9 @@ struct GraphRun {
   // The first frame's CPU time (every node): it carries one-time work (shader compilation, pool
   // allocation, first-use caches) that the median of the measured frames leaves out.
   double firstFrameMs = 0;
+  // The first frame against a steady one (firstFrameJson, engine/graph/export.h): the first-use
+  // work nothing records (a GL driver compiling programs at their first draw), per node.
+  nlohmann::json firstFrame;
   // One-time work the run did for the world (a static shadow map, ...): never in a median.
   std::map<std::string, double> oneTimeMs;
   std::string glSync;  // when the executor waited for the GL (GraphExecutor::glSyncReason)
