@@ -48,7 +48,9 @@ TEST(EnvMapOneTime, CubeMapIsBuiltOnceAndAFrameThatBuildsItIsMeasuredAgain) {
   EXPECT_FALSE(second.repeatedAFrame);
   EXPECT_TRUE(second.oneTimeMs.empty());
   for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
-    if (graph.nodes[n].name == "env") EXPECT_EQ(again.timings()[n].counters.at("map_builds"), 0.0);
+    if (graph.nodes[n].name == "env") {
+      EXPECT_EQ(again.timings()[n].counters.at("map_builds"), 0.0);
+    }
   }
 }
 
