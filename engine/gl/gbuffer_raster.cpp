@@ -113,7 +113,8 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
 }
 
 void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera,
-                               const GBufferTargets& targets, const GlShadingBuffers* shading) {
+                               const GBufferTargets& targets, const GlShadingBuffers* shading,
+                               const Scene* materials) {
   ScopedGlLabel label("gbuffer");
   checkTargets(targets);
   if (targets.surface && !shading)
@@ -185,12 +186,15 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
     // (closed_mesh.h). Alpha-tested meshes have holes: never culled.
     const bool cull = cullClosed && mode == AlphaDraw::Opaque && mesh.closedOutward &&
                       outsideBounds(camera.position, mesh.boundsLo, mesh.boundsHi, nearReach);
-    if (cull) {
+    culledMeshes_ += cull ? 1 : 0;
+    // A single-sided material (glTF doubleSided false) shows no back face to the camera, holes
+    // or not: the rule itself, not an optimisation (engine/rt/camera_rays.h traces the same).
+    // WorldMesh winding is CCW for mirrored instances too (world_geometry.h).
+    const bool singleSided = materials && !materials->material(mesh.material).doubleSided;
+    if (cull || singleSided)
       glEnable(GL_CULL_FACE);
-      ++culledMeshes_;
-    } else {
+    else
       glDisable(GL_CULL_FACE);
-    }
     program.use();
     program.set("uInstance", std::uint32_t(mesh.instance));
     program.set("uFirstTriangle", mesh.firstTriangle);

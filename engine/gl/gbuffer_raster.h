@@ -66,12 +66,15 @@ class GBufferRasterizer {
   // Back-face culling of closed meshes seen from outside their bounds (closed_mesh.h): the same
   // G-buffer, fewer fragments (test GBufferCulling.*). false draws every face.
   bool cullClosed = true;
-  // Meshes the last render drew with back-face culling.
+  // Meshes the last render drew with back-face culling of closed meshes (single-sided materials
+  // are culled whatever cullClosed says, and counted only when closed and seen from outside).
   int culledMeshes() const { return culledMeshes_; }
   // Renders into `targets` (the surface too when allocated), which must have the formats above at
   // any W x H (the viewport follows their size). Sets its own GL state: clip control
-  // lower-left/zero-to-one, depth GREATER with clear 0, back faces culled only for closed meshes
-  // seen from outside (cullClosed, closed_mesh.h), no blending. With `shading`
+  // lower-left/zero-to-one, depth GREATER with clear 0, back faces culled for single-sided
+  // materials of `materials` (Material::doubleSided false: primary visibility, as
+  // engine/rt/camera_rays.h; null: none) and for closed meshes seen from outside (cullClosed,
+  // closed_mesh.h), no blending. With `shading`
   // (uploaded from the same scene), alpha-masked materials cut out their holes: meshes whose
   // coverage is constant and below the cutoff are not drawn, textured masks are drawn with a
   // program variant that discards fragments below the cutoff (compiled on first need, so opaque
@@ -87,7 +90,7 @@ class GBufferRasterizer {
   // Any subset of the attachments; a surface needs `shading` (its program is compiled with the
   // scene's defines, shader_features.h). Throws Error on a target of the wrong format or size.
   void render(const GlSceneBuffers& scene, const Camera& camera, const GBufferTargets& targets,
-              const GlShadingBuffers* shading);
+              const GlShadingBuffers* shading, const Scene* materials = nullptr);
 
  private:
   int culledMeshes_ = 0;

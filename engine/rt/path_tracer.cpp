@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "engine/rt/camera_rays.h"
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/path_pbr.h"
 #include "engine/rt/ray_cone.h"
@@ -169,7 +170,12 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng, float coneSp
   RayCone cone{0.f, coneSpread};
   for (int depth = 1;; ++depth) {
     ++out.rays;
-    const auto hit = rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), false);
+    // Depth 1 is the camera ray: it does not see back faces of single-sided materials.
+    Hit traced;
+    const bool found =
+        depth == 1 ? CameraRays{rt_, scene_, world_}.intersect(ray, traced, false)
+                   : rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), traced, false);
+    const Hit* hit = found ? &traced : nullptr;
     if (medium)  // KHR_materials_volume: Beer-Lambert over the segment (as the Whitted tracer)
       throughput *= shading::volumeTransmittance(
           medium->attenuationColor, medium->attenuationDistance,

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "engine/core/error.h"
+#include "engine/rt/camera_rays.h"
 #include "engine/rt/ray_offset.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/rt/surface_point.h"
@@ -42,8 +43,9 @@ RayProbe probeSecondaryRays(const Scene& scene, const WorldGeometry& world, cons
     long nPrimary = 0, nSecondary = 0, nSelf = 0;
     for (int x = 0; x < width; ++x) {
       const Ray ray = primaryRay(camera, width, height, x + 0.5f, y + 0.5f);
-      const auto hit = rt.intersect(ray, 0.f, inf);
-      if (!hit) continue;
+      Hit cameraHit;  // back faces of single-sided materials culled, as the G-buffer does
+      if (!CameraRays{rt, scene, world}.intersect(ray, cameraHit, true)) continue;
+      const Hit* hit = &cameraHit;
       ++nPrimary;
       const SurfacePoint p = makeSurfacePoint(
           scene, world, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},

@@ -4,6 +4,7 @@
 #include <new>
 #include <type_traits>
 
+#include "engine/rt/camera_rays.h"
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/ray_cone.h"
 #include "engine/rt/shadow_rays.h"
@@ -22,9 +23,12 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, cons
                              float* hitDistance) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
   // Hit::Ng only for an observer: the shading rebuilds the normal (makeSurfacePoint).
+  // Depth 1 is the camera ray: it does not see back faces of single-sided materials.
   Hit h;
   const bool found =
-      rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, wantsHitNormal());
+      depth == 1
+          ? CameraRays{rt_, scene_, world_}.intersect(ray, h, wantsHitNormal())
+          : rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, wantsHitNormal());
   return radianceAt(ray, depth, seed, found ? &h : nullptr, cone, hitDistance);
 }
 

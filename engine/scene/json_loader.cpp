@@ -190,7 +190,9 @@ Material readMaterial(JsonObject o, const std::string& name, const Context& ctx,
   m.attenuationColor = o.vector3("attenuation_color", m.attenuationColor);
   m.attenuationDistance = o.number("attenuation_distance", m.attenuationDistance);
   m.alpha = o.number("alpha", m.alpha);
-  m.doubleSided = o.boolean("double_sided", m.doubleSided);
+  // Default true, unlike glTF's false: a JSON scene shows both sides unless it says otherwise
+  // (the flag had no effect before single-sided culling, so no JSON scene changes).
+  m.doubleSided = o.boolean("double_sided", true);
   m.castsShadows = o.boolean("casts_shadows", m.castsShadows);
   // The glTF model's inputs (docs/materials.md): "model": "gltf" shades with pbr.glsl.
   if (auto model = o.string("model")) {

@@ -3,7 +3,8 @@
 namespace diptych {
 
 const Material& Scene::material(int index) const {
-  static const Material defaultMaterial{.name = "default"};
+  // Both sides visible (meshes without a material, JSON's default; docs/materials.md).
+  static const Material defaultMaterial{.name = "default", .doubleSided = true};
   if (index < 0 || index >= int(materials.size())) return defaultMaterial;
   return materials[index];
 }

@@ -60,7 +60,9 @@ void GBufferPass::execute(PassContext& c) {
   // array.
   const gl::GlShadingBuffers& shading =
       c.world().glShading(targets.normal != nullptr || targets.surface != nullptr);
-  c.world().glCached<gl::GBufferRasterizer>().render(scene, c.frame().camera, targets, &shading);
+  // The scene's materials: single-sided ones show the camera no back faces (glTF doubleSided).
+  c.world().glCached<gl::GBufferRasterizer>().render(scene, c.frame().camera, targets, &shading,
+                                                     &c.world().scene());
 }
 
 }  // namespace diptych

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/graph/render_world.h"
+#include "engine/rt/camera_rays.h"
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/ray_cone.h"
 #include "engine/rt/whitted.h"
@@ -104,7 +105,8 @@ void RtDistributedPass::execute(PassContext& c) {
       const auto flush = [&] {
         Hit hits[kPrimaryTile];
         const Hit* found[kPrimaryTile];
-        rt.intersectRays({rays, filled}, {hits, filled}, {found, filled}, tracer.wantsHitNormal());
+        CameraRays{rt, world.scene(), world.geometry()}.intersectRays(
+            {rays, filled}, {hits, filled}, {found, filled}, tracer.wantsHitNormal());
         const RayCone* cones[kPrimaryTile];
         vec3 colors[kPrimaryTile];
         std::fill_n(cones, filled, cone);

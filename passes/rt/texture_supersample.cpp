@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "engine/graph/render_world.h"
+#include "engine/rt/camera_rays.h"
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
 #include "passes/common/hits_texel.h"
@@ -76,7 +77,8 @@ std::int64_t TextureSupersamplePass::supersampleRow(const Scene& scene,
     for (int ch = 0; ch < 4; ++ch) out.setF(pixel, y, ch, albedo[ch]);
   };
   const auto flush = [&] {
-    rt.intersectRays({rays, filled}, {tileHits, filled}, {found, filled}, false);
+    CameraRays{rt, scene, geometry}.intersectRays({rays, filled}, {tileHits, filled},
+                                                  {found, filled}, false);
     traced += std::int64_t(filled);
     for (std::size_t i = 0; i < filled; ++i) {
       if (pixelOf[i] != pixel) {
@@ -119,10 +121,10 @@ vec4 TextureSupersamplePass::singleRayPixel(const Scene& scene, const WorldGeome
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const Ray ray = pinhole.ray(stratum(x, i, n), stratum(y, j, n));
-      const auto hit = rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), false);
-      if (!hit) continue;
+      Hit hit;
+      if (!CameraRays{rt, scene, geometry}.intersect(ray, hit, false)) continue;
       const SurfacePoint p = makeSurfacePoint(
-          scene, geometry, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
+          scene, geometry, {hit.instance, hit.primitive, hit.u, hit.v, hit.analytic},
           ray.direction);
       sum += vec4(p.resolved.color, p.resolved.alpha);
       ++count;
