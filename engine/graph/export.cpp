@@ -177,10 +177,23 @@ std::string graphToDot(const CompiledGraph& g, const std::vector<NodeTiming>* ti
   return dot;
 }
 
+namespace {
+
+// The nodes whose first use is shown (above kFirstUseShownMs), largest first.
+std::vector<std::size_t> shownFirstUse(const GraphExecutor::MeasuredRun& run) {
+  std::vector<std::size_t> order;
+  for (std::size_t n = 0; n < run.firstUseMs.size(); ++n)
+    if (run.firstUseMs[n] > kFirstUseShownMs) order.push_back(n);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return run.firstUseMs[a] > run.firstUseMs[b]; });
+  return order;
+}
+
+}  // namespace
+
 nlohmann::json firstFrameJson(const CompiledGraph& graph, const GraphExecutor::MeasuredRun& run) {
   nlohmann::json byNode = nlohmann::json::object();
-  for (std::size_t n = 0; n < run.firstUseMs.size(); ++n)
-    if (run.firstUseMs[n] > kFirstUseShownMs) byNode[graph.nodes[n].name] = run.firstUseMs[n];
+  for (std::size_t n : shownFirstUse(run)) byNode[graph.nodes[n].name] = run.firstUseMs[n];
   return {{"wall_ms", run.firstFrameMs},
           {"one_time_ms", run.firstFrameOneTimeMs},
           {"steady_ms", run.steadyFrameMs},
@@ -193,11 +206,7 @@ std::string firstFrameLine(const CompiledGraph& graph, const GraphExecutor::Meas
       "first frame: {:.1f} ms against a steady {:.1f} ms: {:.1f} ms one-time work (listed above), "
       "{:.1f} ms first-use work recorded nowhere else",
       run.firstFrameMs, run.steadyFrameMs, run.firstFrameOneTimeMs, run.firstFrameUnrecordedMs());
-  std::vector<std::size_t> order;
-  for (std::size_t n = 0; n < run.firstUseMs.size(); ++n)
-    if (run.firstUseMs[n] > kFirstUseShownMs) order.push_back(n);
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return run.firstUseMs[a] > run.firstUseMs[b]; });
+  const std::vector<std::size_t> order = shownFirstUse(run);
   for (std::size_t i = 0; i < order.size(); ++i)
     line += fmt::format("{} {} {:.1f}", i == 0 ? " (by node:" : ",", graph.nodes[order[i]].name,
                         run.firstUseMs[order[i]]);
