@@ -29,6 +29,7 @@
 #include "samples/diptych/compare/report.h"
 #include "samples/diptych/compare/runner.h"
 #include "samples/diptych/compare/same_frame.h"
+#include "samples/diptych/compare/same_image.h"
 #include "samples/diptych/compare/sdf_steps_report.h"
 #include "samples/diptych/compare/variants.h"
 #include "samples/diptych/parse_size.h"
@@ -393,6 +394,21 @@ void runCompare(const CompareOptions& o) {
                  {"graph", graphToJson(run.graph, &run.timings)}};
     results.push_back(std::move(rv));
     progress("compare", ++step, steps, v.name);
+  }
+
+  // A variant timed on its own whose image is an earlier timed variant's (same_image.h): said
+  // so, with the difference and the reason, instead of error columns equal with nothing said.
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (sameAs[i] >= 0) continue;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (sameAs[j] >= 0 || results[j].result.contains("same_image_as")) continue;
+      const double difference = largestRelativeDifference(results[i].image, results[j].image);
+      if (!(difference <= kSameImageTolerance)) continue;
+      results[i].result["same_image_as"] = results[j].name;
+      results[i].result["same_image_difference"] = difference;
+      results[i].result["same_image_reason"] = sameImageReason(identities[i], identities[j], scene);
+      break;
+    }
   }
 
   // Timing rounds 2..R: the reference and every variant again, in the same order, so that a

@@ -85,6 +85,14 @@ std::string sameFrameText(const nlohmann::json& v) {
                      v["same_frame_reason"].get<std::string>());
 }
 
+// A variant timed on its own whose pixels are an earlier one's (same_image.h): "same image as
+// NAME (largest difference D): reason".
+std::string sameImageText(const nlohmann::json& v) {
+  return fmt::format(
+      "same image as {} (largest difference {:.1e}): {}", v["same_image_as"].get<std::string>(),
+      v["same_image_difference"].get<double>(), v["same_image_reason"].get<std::string>());
+}
+
 // Printed (and shown in the report) when the speed-ups come from one round. Identical frames
 // measured 0.77-0.88x in one round on the loaded 2-core VM (docs/compare.md, "Timing rounds").
 const char* kOneRoundNote =
@@ -107,10 +115,16 @@ void printSummaryTable(const std::vector<ReportVariant>& variants, const std::st
       continue;
     }
     const auto& m = v["metrics"];
-    std::printf("%-36s %10.2f %*s %10.4g %10.4g %8.4f %s\n", r.name.c_str(),
-                v["total_ms"].get<double>(), width, speedupText(v).c_str(), m.value("rmse", 0.0),
-                m.value(metric, 0.0), m.value("ssim", 0.0), v["pareto"].get<bool>() ? "*" : "");
+    std::printf(
+        "%-36s %10.2f %*s %10.4g %10.4g %8.4f %-6s%s\n", r.name.c_str(),
+        v["total_ms"].get<double>(), width, speedupText(v).c_str(), m.value("rmse", 0.0),
+        m.value(metric, 0.0), m.value("ssim", 0.0), v["pareto"].get<bool>() ? "*" : "",
+        v.contains("same_image_as") ? (" = " + v["same_image_as"].get<std::string>()).c_str() : "");
   }
+  // Below the table, why the rows marked "= NAME" show NAME's error: their pixels are its.
+  for (const ReportVariant& r : variants)
+    if (r.result.contains("same_image_as"))
+      std::printf("%s: %s\n", r.name.c_str(), sameImageText(r.result).c_str());
   if (rounds == 1) std::printf("%s\n", kOneRoundNote);
 }
 
@@ -183,14 +197,14 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
         passNames.push_back(k);
   }
   std::ostringstream csv;
-  csv << "variant,same_frame_as,total_ms,rays,pareto,one_time_ms";
+  csv << "variant,same_frame_as,same_image_as,total_ms,rays,pareto,one_time_ms";
   for (const auto& m : metricNames) csv << "," << m;
   for (const auto& p : passNames) csv << ",ms:" << p;
   csv << "\n";
   for (const auto& v : results["variants"]) {
     csv << v["name"].get<std::string>() << "," << v.value("same_frame_as", "") << ","
-        << v["total_ms"].get<double>() << "," << v["rays"].get<double>() << ","
-        << (v["pareto"].get<bool>() ? 1 : 0) << ",";
+        << v.value("same_image_as", "") << "," << v["total_ms"].get<double>() << ","
+        << v["rays"].get<double>() << "," << (v["pareto"].get<bool>() ? 1 : 0) << ",";
     csv << oneTimeCosts(v.value("one_time_ms", nlohmann::json::object()))
                .totalMs;  // the sum (results.json lists them)
     for (const auto& m : metricNames)
@@ -251,6 +265,8 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
                         l["light"].get<int>(), 100 * l["false_shadow_rate"].get<double>(),
                         100 * l["false_lit_rate"].get<double>(),
                         l["mean_boundary_displacement_px"].get<double>());
+    // Its pixels are an earlier variant's: said before the signal errors that show it.
+    if (v.contains("same_image_as")) signal += sameImageText(v) + "; ";
     for (const char* slot : {"reflection", "transmission"})
       if (v["signals"].contains(slot))
         signal += fmt::format("{} rel. RMSE {:.3g}; ", slot,
@@ -294,7 +310,9 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
   for (const auto& v : results["variants"]) {
     const std::string name = htmlEscape(v["name"].get<std::string>());
     const std::string caption =
-        v.contains("same_frame_as") ? name + ": " + htmlEscape(sameFrameText(v)) : name;
+        v.contains("same_frame_as")   ? name + ": " + htmlEscape(sameFrameText(v))
+        : v.contains("same_image_as") ? name + ": " + htmlEscape(sameImageText(v))
+                                      : name;
     page += fmt::format(
         "<div class=\"variant\"><div><div class=\"caption\">{1}</div><div class=\"split\" "
         "style=\"--pos:50%\">"
