@@ -72,15 +72,13 @@ void main() {
 #endif
   ShadingMaterial m = sceneMaterial(s.material, s.uv);
   if (kHasAlbedo) {
-    // The texture-filtering slot's signal replaces the resolved base colour and coverage, as
-    // passes/cpu/shade.cpp applyAlbedo: not where it wrote none (a < 0) nor for materials whose
-    // metallic-roughness texture re-maps C per texel (docs/textures.md).
+    // The texture-filtering slot's signal replaces the resolved colour and coverage, as
+    // passes/cpu/shade.cpp applyAlbedo: not where it wrote none (a < 0) nor for lecture-model
+    // materials whose metallic-roughness texture re-maps C per texel (docs/textures.md).
     vec4 albedo = imageLoad(uAlbedo, p);
-    if (albedo.a >= 0.0 && !sceneTextureValid(int(sceneMaterials[s.material + 1].texColorEmitMrAo.z))) {
-      m.color = albedo.rgb;
-      m.baseColor = albedo.rgb;  // the glTF model's C
-      m.alpha = albedo.a;
-    }
+    bool remapped = m.model != SHADING_MODEL_GLTF &&
+                    sceneTextureValid(int(sceneMaterials[s.material + 1].texColorEmitMrAo.z));
+    if (albedo.a >= 0.0 && !remapped) m = withTextureSignal(m, albedo.xyz, albedo.w);
   }
   // makeSurfacePoint(): the shading normal on the side the eye ray arrives from.
   vec3 n = dot(s.faceNormal, eye) <= 0.0 ? s.shadingNormal : -s.shadingNormal;

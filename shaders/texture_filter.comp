@@ -1,5 +1,6 @@
 // texture_filtering slot, raster producers (passes/raster/texture_filter.cpp): per visibility
-// texel, C = material colour x colour texture (linear) and coverage, the texture read through
+// texel, the colour the material's model reads (C, or the glTF base colour) x colour texture
+// (linear) and coverage, the texture read through
 // the filter uMode selects. Background pixels get -1 (shade then uses its own lookup).
 #include "common/shading.glsl"
 #include "gl/scene_buffers.glsl"
@@ -45,10 +46,13 @@ void main() {
   vec2 t2 = vec2(sceneUvs[2u * tri.z], sceneUvs[2u * tri.z + 1u]);
   vec2 uv = bw * t0 + bu * t1 + bv * t2;
   GpuMaterial g = sceneMaterials[material + 1];
-  vec4 result = vec4(g.colorKa.xyz, g.transmitAlpha.w);
+  // The colour the material's model reads (common/shading.glsl textureSignalColor): C for the
+  // lecture's, the base colour for glTF's; the texel multiplies either.
+  bool gltf = sceneMaterialModel(material) == SHADING_MODEL_GLTF;
+  vec4 result = vec4(gltf ? g.baseMetallic.xyz : g.colorKa.xyz, g.transmitAlpha.w);
   int tex = int(g.texColorEmitMrAo.x);
   if (g.emissionChecker.w > 0.5) {
-    result.xyz = sceneMaterial(material, uv).color;  // procedural: point-sampled
+    result.xyz = textureSignalColor(sceneMaterial(material, uv));  // procedural: point-sampled
   } else if (sceneTextureValid(tex)) {
     // The footprint: neighbour pixel rays meet the triangle's plane (ray differentials).
     vec3 e1 = p1 - p0, e2 = p2 - p0;

@@ -105,12 +105,14 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
 
 vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv) {
   // resolveMaterial's colour rule at level 0, without its other coefficients (gltfPbrToLecture's
-  // pow per hit).
+  // pow per hit): C, or for the glTF model the base colour.
   const Texture* metallicRoughness = textureAt(scene, material.metallicRoughnessTexture);
   const vec4 mr = metallicRoughness ? sampleTexture(*metallicRoughness, uv) : vec4(1.f);
   const ColourAlpha c = colourAlpha(scene, material, uv, metallicRoughness ? &mr : nullptr,
                                     [&](const Texture& t) { return sampleTexture(t, uv); });
-  return vec4(c.color, c.alpha);
+  if (material.model != ShadingModel::Gltf) return vec4(c.color, c.alpha);
+  // resolveMaterial's baseColor, the colour the glTF model reads (textureSignalColor).
+  return vec4(material.checker ? c.texel : vec3(material.baseColorFactor) * c.texel, c.alpha);
 }
 
 vec3 normalMapped(const Texture& map, float scale, const vec3& n, const vec4& tangent, vec2 uv) {

@@ -47,7 +47,8 @@ static_assert(std::is_trivially_destructible_v<SurfacePoint>);
 SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit,
                               const vec3& incoming);
 
-// C and alpha of makeSurfacePoint(scene, world, hit, ...).resolved, bit for bit (tested), and
+// The texture_filtering signal of makeSurfacePoint(scene, world, hit, ...).resolved, bit for bit
+// (tested): textureSignalColor (shading.glsl: C, or the glTF model's base colour) and alpha, and
 // nothing else: no position, normals, normal or bump map, emission or occlusion texture. The
 // texture_filtering slot's exact producer reads only these (passes/rt/texture_supersample.cpp).
 // Throws Error as makeSurfacePoint does.
@@ -75,8 +76,9 @@ Ray spawnRay(const SurfacePoint& p, const vec3& direction);
 shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv,
                                          float uvLod = -std::numeric_limits<float>::infinity());
 
-// resolveMaterial(scene, material, uv).color and .alpha at level 0 (uvLod -infinity), by the
-// same colour/alpha rule (one function for both), without the other coefficients.
+// textureSignalColor(resolveMaterial(scene, material, uv)) and .alpha at level 0 (uvLod
+// -infinity), by the same colour/alpha rule (one function for both), without the other
+// coefficients.
 vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv);
 
 // A tangent-space normal map applied at uv: n' = normalize(T x + B y + N z) with (x, y, z) =

@@ -17,15 +17,19 @@
 namespace diptych {
 namespace {
 
-// The texture_filtering slot's C and coverage replace shade's own level-0 lookup (a = -1: none
-// there). Not for materials whose metallic-roughness texture re-maps C per texel: the signal is
-// C = colour x texture, which that mapping does not take as input (docs/textures.md).
+// The texture_filtering slot's colour and coverage replace shade's own level-0 lookup (a = -1:
+// none there): the colour the material's model reads (shading.glsl textureSignalColor). Not for
+// lecture-model materials whose metallic-roughness texture re-maps C per texel (glTF materials
+// shaded with the lecture's model): the raster producers write colour x texture, which that
+// mapping does not take as input (docs/textures.md). The glTF model reads the base colour, which
+// no metallic-roughness texel changes.
 void applyAlbedo(SurfacePoint& sp, const Scene& scene, const CpuFloatRow& albedo, int x) {
   const float a = albedo(x, 3);
-  if (a < 0.f || scene.material(sp.material).metallicRoughnessTexture >= 0) return;
-  sp.resolved.color = albedo.rgb(x);
-  sp.resolved.baseColor = sp.resolved.color;  // the glTF model's C
-  sp.resolved.alpha = a;
+  if (a < 0.f) return;
+  if (sp.resolved.model != shading::SHADING_MODEL_GLTF &&
+      scene.material(sp.material).metallicRoughnessTexture >= 0)
+    return;
+  sp.resolved = shading::withTextureSignal(sp.resolved, albedo.rgb(x), a);
 }
 
 }  // namespace

@@ -390,6 +390,23 @@ SHADING_FN bool hasTransmission(ShadingMaterial m) {
   return m.kt > 0.0f;
 }
 
+// The texture_filtering slot's signal (docs/textures.md): the colour the material's model reads,
+// with the colour texture applied through the producer's filter, and the coverage. The lecture's
+// model reads C (colour x texel); glTF's reads the base colour (baseColorFactor x texel) and
+// derives its diffuse and metal F0 from it (pbr.glsl), so that is what its signal holds: C of a
+// metal is 0 (gltfDiffuseColor), and a signal of C turned textured metals black.
+SHADING_FN vec3 textureSignalColor(ShadingMaterial m) {
+  if (m.model == SHADING_MODEL_GLTF) return m.baseColor;
+  return m.color;
+}
+// The material with the signal's colour and coverage in place of its own lookup's (shade).
+SHADING_FN ShadingMaterial withTextureSignal(ShadingMaterial m, vec3 color, float alpha) {
+  if (m.model != SHADING_MODEL_GLTF) m.color = color;
+  m.baseColor = color;
+  m.alpha = alpha;
+  return m;
+}
+
 // The reflection signal's alpha says what it holds: 1 radiance along the mirror direction
 // (weighted by secondaryWeights), 2 the GGX lobe's prefiltered radiance (env_* with prefiltered
 // levels), which a glTF material weights by the lobe's albedo without the roughness fade (the

@@ -76,6 +76,15 @@ vec4 sceneMaterialTexture(int tex, vec2 uv, float uvLod) {
 // Material m of Scene::materials (-1: the default) at uv: the checker (colour alternates every
 // 1/scale in u and v) or the base-colour texture times C and alpha, the emission texture times
 // M_E, a metallic-roughness texture re-mapped per texel, occlusion scaling k_a.
+// The shading model of material m (SHADING_MODEL_*): a constant where every material has one.
+int sceneMaterialModel(int m) {
+#if DIPTYCH_SCENE_MODEL >= 0
+  return DIPTYCH_SCENE_MODEL;  // shading.glsl's model dispatch folds
+#else
+  return int(sceneMaterials[m + 1].modelTransSpec.x + 0.5);
+#endif
+}
+
 ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
   GpuMaterial g = sceneMaterials[m + 1];
   ShadingMaterial s;
@@ -92,16 +101,13 @@ ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
   s.transmitColor = g.transmitAlpha.xyz;
   s.alpha = g.transmitAlpha.w;
   s.emission = g.emissionChecker.xyz;
-  s.model = int(g.modelTransSpec.x + 0.5);
+  s.model = sceneMaterialModel(m);
   s.baseColor = g.baseMetallic.xyz;
   s.metallic = g.baseMetallic.w;
   s.roughness = g.tintRoughness.w;
   s.specularTint = g.tintRoughness.xyz;
   s.transmission = g.modelTransSpec.y;
   s.specularWeight = g.modelTransSpec.z;
-#if DIPTYCH_SCENE_MODEL >= 0
-  s.model = DIPTYCH_SCENE_MODEL;  // a constant: shading.glsl's model dispatch folds
-#endif
 #if DIPTYCH_SCENE_CHECKER || DIPTYCH_SCENE_TEXTURES
   int colourTex = int(g.texColorEmitMrAo.x);
   if (DIPTYCH_SCENE_CHECKER != 0 && g.emissionChecker.w > 0.5) {

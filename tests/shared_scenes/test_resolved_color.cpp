@@ -1,7 +1,8 @@
 // resolvedColorAt (engine/rt/surface_point.h), the narrow lookup texture_supersample reads, against
-// makeSurfacePoint's resolved colour and alpha at the same hits, bit for bit: textured glTF
-// scenes (base colour, metallic-roughness and alpha textures, every glTF sampler), and the
-// samples with checkers, analytic shapes and SDF objects.
+// makeSurfacePoint's resolved texture signal (textureSignalColor: C, or the glTF base colour) and
+// alpha at the same hits, bit for bit: textured glTF scenes (base colour, metallic-roughness and
+// alpha textures, every glTF sampler), and the samples with checkers, analytic shapes and SDF
+// objects.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -12,6 +13,7 @@
 
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
+#include "engine/shading/shading.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
@@ -44,7 +46,7 @@ Counts compareAtHits(const std::filesystem::path& file) {
       const SurfaceHit h{hit->instance, hit->primitive, hit->u, hit->v, hit->analytic};
       const SurfacePoint p = makeSurfacePoint(scene, world, h, ray.direction);
       const vec4 narrow = resolvedColorAt(scene, world, h);
-      const vec4 full(p.resolved.color, p.resolved.alpha);
+      const vec4 full(shading::textureSignalColor(p.resolved), p.resolved.alpha);
       bool same = true;
       for (int ch = 0; ch < 4; ++ch) same = same && sameBits(narrow[ch], full[ch]);
       ++c.hits;

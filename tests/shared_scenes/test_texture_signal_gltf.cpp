@@ -1,0 +1,129 @@
+// The texture_filtering slot on glTF materials (common/shading.glsl textureSignalColor): its
+// signal is the base colour the glTF model reads. It used to be C, the lecture's diffuse colour,
+// which is 0 for a metal: Texture_Sampler_00 (metallic 1, the glTF default, with a base colour
+// texture) rendered a black quad in the built-in recipe on both sides; and shade ignored the
+// signal on materials with a metallic-roughness texture, so on DamagedHelmet every texture-*
+// variant was hybrid-exact's image.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "engine/scene/default_lighting.h"
+#include "passes/slots.h"
+#include "tests/support/hybrid_frame.h"
+#include "tests/support/test_paths.h"
+
+namespace diptych {
+namespace {
+
+constexpr int kW = 96, kH = 72;
+
+std::filesystem::path shared(const char* file) {
+  return std::filesystem::path(DIPTYCH_SHARED_SCENES) / file;
+}
+
+Recipe withoutAlbedo(Recipe r) {
+  for (RecipePass& p : r.passes)
+    if (p.type == "shade") p.inputs.erase("albedo");
+  return r;
+}
+
+Recipe withFilter(Recipe r, const std::string& producer) {
+  applySlotOverride(r, parseSlotOverride("texture_filtering=" + producer), builtinPasses());
+  return r;
+}
+
+// The scene lit as `diptych render` lights it: these files have no light of their own (the
+// default sky and sun, engine/scene/default_lighting.h).
+Scene lit(const std::filesystem::path& file) {
+  Scene scene = loadScene(file);
+  applyLighting(scene, testing::cameraOf(scene), {});
+  return scene;
+}
+
+CpuImage frame(const std::filesystem::path& file, const Recipe& r,
+               const std::string& output = "shade.color") {
+  return testing::renderHybridFrame(lit(file), kW, kH, {output}, r)->output(output);
+}
+
+// Mean |a - b| and the mean of b over the RGB of the frame.
+struct Difference {
+  double mean = 0.0, level = 0.0;
+};
+Difference difference(const CpuImage& a, const CpuImage& b) {
+  Difference d;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      for (int c = 0; c < 3; ++c) {
+        d.mean += std::fabs(double(a.f(x, y, c)) - b.f(x, y, c));
+        d.level += b.f(x, y, c);
+      }
+  d.mean /= 3.0 * kW * kH;
+  d.level /= 3.0 * kW * kH;
+  return d;
+}
+
+// The built-in recipe's signal (one ray at the pixel centre, level 0) is shade's own lookup:
+// the frame with it is the frame without the albedo input, on a textured metal and on a material
+// with a metallic-roughness texture.
+TEST(TextureSignalGltf, PixelCentreSignalGivesShadesOwnFrame) {
+  for (const char* file :
+       {"texture-sampler-assetgen/Texture_Sampler_00.gltf", "damaged-helmet/DamagedHelmet.glb"}) {
+    if (!std::filesystem::exists(shared(file))) GTEST_SKIP() << "no " << shared(file);
+    const Difference d = difference(frame(shared(file), defaultHybridRecipe()),
+                                    frame(shared(file), withoutAlbedo(defaultHybridRecipe())));
+    std::printf("%s: mean |built-in - own lookup| = %g (frame mean %g)\n", file, d.mean, d.level);
+    EXPECT_LT(d.mean, 1e-5 * d.level + 1e-7) << file;
+  }
+}
+
+// A raster filter's signal reaches the helmet's shading (trilinear reads the minified texture's
+// mip levels, the centre ray level 0), where it used to be dropped for its metallic-roughness
+// texture: the two frames were identical.
+TEST(TextureSignalGltf, RasterFilterChangesTheHelmet) {
+  const auto file = shared("damaged-helmet/DamagedHelmet.glb");
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+  const Difference d =
+      difference(frame(file, withFilter(defaultHybridRecipe(), "texture_trilinear")),
+                 frame(file, defaultHybridRecipe()));
+  std::printf("DamagedHelmet: mean |trilinear - built-in| = %g (frame mean %g)\n", d.mean, d.level);
+  EXPECT_GT(d.mean, 1e-3 * d.level);
+}
+
+// GL shade and CPU shade of one frame with a GL filter's signal (texture_trilinear): they agree,
+// and the metal quad keeps its brightness against the frame without the signal (it was black on
+// both sides).
+TEST(TextureSignalGltf, TrilinearSignalShadesTheMetalOnBothSides) {
+  const auto file = shared("texture-sampler-assetgen/Texture_Sampler_00.gltf");
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+  const Recipe both =
+      testing::withShadeInBothDomains(withFilter(defaultHybridRecipe(), "texture_trilinear"));
+  const auto f = testing::renderHybridFrame(lit(file), kW, kH, both.outputs, both);
+  const CpuImage own = frame(file, withoutAlbedo(defaultHybridRecipe()));
+  const CpuImage& hits = f->output("gbuffer.hits");
+  for (const char* side : {"shade_gl.color", "shade_cpu.color"}) {
+    const CpuImage& shaded = f->output(side);
+    double quad = 0.0, ownQuad = 0.0;
+    int pixels = 0;
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        if (hits.u(x, y, 0) == 0u) continue;  // background
+        for (int c = 0; c < 3; ++c) {
+          quad += shaded.f(x, y, c);
+          ownQuad += own.f(x, y, c);
+        }
+        ++pixels;
+      }
+    std::printf("%s: quad mean %g against its own lookup's %g over %d pixels\n", side,
+                quad / (3.0 * pixels), ownQuad / (3.0 * pixels), pixels);
+    ASSERT_GT(pixels, kW * kH / 10);
+    EXPECT_NEAR(quad / ownQuad, 1.0, 0.1) << side;
+  }
+  const Difference parity = difference(f->output("shade_gl.color"), f->output("shade_cpu.color"));
+  EXPECT_LT(parity.mean, 1e-4 * parity.level) << "GL and CPU shade of the same signal";
+}
+
+}  // namespace
+}  // namespace diptych
