@@ -32,7 +32,16 @@ bool materialHasReflection(const Material& m, bool lobe) {
 }
 
 bool materialHasTransmission(const Material& m) {
-  return hasTransmission(toShadingMaterial(m));
+  ShadingMaterial s = toShadingMaterial(m);
+  // metallic = metallicFactor x the texel's blue channel: a texel may make a metal factor a
+  // dielectric, which transmits (LightsPunctualLamp's shade: factor 1, a transmission texture).
+  // The lecture's k_t of such a material is re-mapped per texel too (gltfPbrToLecture): at most
+  // the transmission factor.
+  if (m.metallicRoughnessTexture >= 0) {
+    s.metallic = 0.f;
+    s.kt = std::max(s.kt, m.transmissionFactor);
+  }
+  return hasTransmission(s);
 }
 
 }  // namespace diptych::shading
