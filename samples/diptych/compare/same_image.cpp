@@ -29,6 +29,18 @@ bool atMostOneTransparentMesh(const Scene& scene) {
   return meshes.size() <= 1;
 }
 
+// Every colour texture's glTF sampler asks for these filters: texture_sampler (each texture's
+// own sampler) then reads as the producer that imposes them.
+template <FilterMode kMin, FilterMode kMag>
+bool colourSamplersAre(const Scene& scene) {
+  for (const Material& m : scene.materials) {
+    if (m.colorTexture < 0 || m.colorTexture >= int(scene.textures.size())) continue;
+    const Texture& t = scene.textures[std::size_t(m.colorTexture)];
+    if (t.minFilter != kMin || t.magFilter != kMag) return false;
+  }
+  return true;
+}
+
 const SceneHint kHints[] = {
     {{"env_cube", "env_sphere", "env_equirect"},
      constantEnvironment,
@@ -36,6 +48,15 @@ const SceneHint kHints[] = {
     {{"sorted_blend", "unsorted_blend"},
      atMostOneTransparentMesh,
      "the scene has at most one transparent mesh, so there is no order to get wrong"},
+    {{"texture_sampler", "texture_trilinear"},
+     colourSamplersAre<FilterMode::LinearMipmapLinear, FilterMode::Linear>,
+     "every colour texture's glTF sampler asks for trilinear filtering"},
+    {{"texture_sampler", "texture_bilinear"},
+     colourSamplersAre<FilterMode::Linear, FilterMode::Linear>,
+     "every colour texture's glTF sampler asks for bilinear filtering without mipmaps"},
+    {{"texture_sampler", "texture_nearest"},
+     colourSamplersAre<FilterMode::Nearest, FilterMode::Nearest>,
+     "every colour texture's glTF sampler asks for nearest filtering without mipmaps"},
 };
 
 // "env_sphere" or, for the same type, the parameters that differ: "bias=adaptive".

@@ -30,7 +30,8 @@ double largestRelativeDifference(const Image& a, const Image& b,
 // Why a variant's image is an earlier one's: the live passes the two frames set differently
 // ("reflection: env_sphere, not env_cube"), then, where the scene explains it, the reason: an
 // environment of one colour for the environment-map producers, at most one transparent mesh for
-// the blending producers; otherwise that the scene does not tell the producers apart.
+// the blending producers, colour textures whose glTF samplers ask for the other producer's filter
+// for texture_sampler; otherwise that the scene does not tell the producers apart.
 std::string sameImageReason(const FrameIdentity& mine, const FrameIdentity& earlier,
                             const Scene& scene);
 
