@@ -5,7 +5,7 @@
 namespace diptych::gl {
 
 std::vector<ShaderDefine> sceneShaderDefines(const Scene& scene) {
-  bool textures = false, normalMaps = false, bump = false, checker = false;
+  bool textures = false, normalMaps = false, bump = false, checker = false, film = false;
   int model = -2;  // none seen yet
   auto visit = [&](const Material& m) {
     // As packMaterial: a checker replaces the colour texture.
@@ -14,6 +14,11 @@ std::vector<ShaderDefine> sceneShaderDefines(const Scene& scene) {
     normalMaps |= m.normalTexture >= 0;
     bump |= m.bump.has_value();
     checker |= m.checker.has_value();
+    // A film shades only under the glTF model (pbr.glsl), and only with a strength above 0;
+    // its textures are then sampled (scene_shading.glsl sceneMaterialLod).
+    const bool filmed = m.model == ShadingModel::Gltf && m.iridescenceFactor > 0.f;
+    film |= filmed;
+    textures |= filmed && (m.iridescenceTexture >= 0 || m.iridescenceThicknessTexture >= 0);
     if (model == -2) model = int(m.model);
     if (int(m.model) != model) model = -1;
   };
@@ -34,6 +39,7 @@ std::vector<ShaderDefine> sceneShaderDefines(const Scene& scene) {
           {"DIPTYCH_SCENE_NORMAL_MAPS", flag(normalMaps)},
           {"DIPTYCH_SCENE_BUMP", flag(bump)},
           {"DIPTYCH_SCENE_CHECKER", flag(checker)},
+          {"DIPTYCH_SCENE_IRIDESCENCE", flag(film)},
           {"DIPTYCH_SCENE_MODEL", std::to_string(model)},
           {"DIPTYCH_SCENE_LIGHT_TYPE", std::to_string(lightType)}};
 }

@@ -49,7 +49,7 @@ int wrapCode(WrapMode w) {
 }
 
 // std430 layout of scene_shading.glsl's GpuMaterial: nine vec4, then the glTF model's three,
-// then the four of the textures.
+// the four of the textures, the bump map's two and the iridescence's two.
 // Which secondary signals some point of the material can have (shading::materialHas*, bounds
 // over its textures), as bits of GpuMaterial.modelTransSpec.w: the GL producers' gate before
 // rebuilding any surface (scene_shading.glsl sceneHitMay*), as rt_secondary.cpp decides first.
@@ -119,6 +119,10 @@ void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& 
   const float kind = !m.bump ? 0.f : b.texture >= 0 ? 1.f : 2.f;
   out.insert(out.end(), {kind, float(b.texture), b.k, b.delta, b.amplitude, b.frequency.x,
                          b.frequency.y, 0.f});
+  // KHR_materials_iridescence (scene_shading.glsl sceneMaterialLod, as resolveMaterial).
+  out.insert(out.end(), {m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMinimum,
+                         m.iridescenceThicknessMaximum, float(m.iridescenceTexture),
+                         float(m.iridescenceThicknessTexture), 0.f, 0.f});
 }
 
 void packLight(const Light& l, std::vector<float>& out) {

@@ -100,6 +100,12 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
     const float ao = sampleTexture(*t).x;
     m.ka *= 1.f + material.occlusionStrength * (ao - 1.f);
   }
+  // KHR_materials_iridescence: strength times the texture's R; thickness mix(min, max, G).
+  if (const Texture* t = textureAt(scene, material.iridescenceTexture))
+    m.iridescence *= sampleTexture(*t).x;
+  if (const Texture* t = textureAt(scene, material.iridescenceThicknessTexture))
+    m.iridescenceThickness = glm::mix(material.iridescenceThicknessMinimum,
+                                      material.iridescenceThicknessMaximum, sampleTexture(*t).y);
   return m;
 }
 

@@ -143,7 +143,7 @@ PartHit analyticPartHit(const AnalyticInstance& a, int part, const vec3& o, cons
 bool materialReadsUv(const Material& m) {
   return m.checker || m.colorTexture >= 0 || m.emissionTexture >= 0 ||
          m.metallicRoughnessTexture >= 0 || m.occlusionTexture >= 0 || m.normalTexture >= 0 ||
-         m.bump;
+         m.iridescenceTexture >= 0 || m.iridescenceThicknessTexture >= 0 || m.bump;
 }
 
 }  // namespace diptych

@@ -445,7 +445,8 @@ void includeGltf(JsonObject& o, const mat4& transform, const Context& ctx, Scene
   for (Material m : part.materials) {
     if (m.colorTexture >= 0) m.colorTexture += textureBase;
     if (m.emissionTexture >= 0) m.emissionTexture += textureBase;
-    for (int* t : {&m.metallicRoughnessTexture, &m.occlusionTexture, &m.normalTexture})
+    for (int* t : {&m.metallicRoughnessTexture, &m.occlusionTexture, &m.normalTexture,
+                   &m.iridescenceTexture, &m.iridescenceThicknessTexture})
       if (*t >= 0) *t += textureBase;
     scene.materials.push_back(std::move(m));
   }

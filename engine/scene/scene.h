@@ -133,6 +133,14 @@ struct Material {
   std::optional<BumpMap> bump;  // JSON "bump" key; perturbs the shading normal (CPU side)
   float specularWeight = 1.f;   // KHR_materials_specular specularFactor
   vec3 specularTint{1.f};       // KHR_materials_specular specularColorFactor
+  // KHR_materials_iridescence: a thin film over the specular layer (pbr.glsl). Strength = factor
+  // times the R of iridescenceTexture; thickness (nm) = mix(minimum, maximum, G of
+  // iridescenceThicknessTexture), or the maximum without that texture.
+  float iridescenceFactor = 0.f;
+  float iridescenceIor = 1.3f;
+  float iridescenceThicknessMinimum = 100.f, iridescenceThicknessMaximum = 400.f;
+  int iridescenceTexture = -1;           // linear; R scales iridescenceFactor
+  int iridescenceThicknessTexture = -1;  // linear; G blends minimum to maximum
   bool castsShadows = true;
 };
 

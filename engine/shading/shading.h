@@ -15,8 +15,10 @@ namespace diptych::shading {
 // GLM's overloads are found, never a C library function of the same name.
 using glm::abs;
 using glm::clamp;
+using glm::cos;
 using glm::cross;
 using glm::dot;
+using glm::exp;
 using glm::exp2;
 using glm::floor;
 using glm::inversesqrt;
@@ -67,7 +69,8 @@ inline ShadingMaterial toShadingMaterial(const Material& m) {
   return ShadingMaterial(m.color, m.ka, m.kd, m.ks, m.exponent, m.specularColor, m.kps,
                          m.mirrorColor, m.kt, m.transmitColor, m.emission, m.ior, m.alpha,
                          int(m.model), vec3(m.baseColorFactor), m.metallicFactor, m.roughnessFactor,
-                         m.transmissionFactor, m.specularWeight, m.specularTint);
+                         m.transmissionFactor, m.specularWeight, m.specularTint,
+                         m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMaximum);
 }
 
 // Whether some point of the material has a reflection / transmission signal (hasReflection /

@@ -91,6 +91,11 @@ struct ShadingMaterial {
   float transmission;    // KHR_materials_transmission factor
   float specularWeight;  // KHR_materials_specular "specular" (1 without the extension)
   vec3 specularTint;     // KHR_materials_specular "specularColor" (1 without the extension)
+  // KHR_materials_iridescence (pbr.glsl pbrFilmFresnel), textures applied; 0 strength or 0
+  // thickness: no film.
+  float iridescence;           // strength [0, 1]
+  float iridescenceIor;        // the film's index of refraction
+  float iridescenceThickness;  // the film's thickness, nm
 };
 
 // One light, flattened from diptych::Light.

@@ -25,6 +25,8 @@ struct GpuMaterial {
   // --- end textures ---
   vec4 bumpKindTexKDelta;     // bump: 0 none, 1 height texture, 2 sinusoid; texture, k, delta
   vec4 bumpWave;              // sinusoid amplitude, frequency u, frequency v, unused
+  vec4 iridescence;           // KHR_materials_iridescence factor, film IOR, thickness min, max (nm)
+  vec4 iridescenceTextures;   // iridescence texture (R), thickness texture (G), unused, unused
 };
 layout(std430, binding = BINDING_SCENE_MATERIALS) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
 layout(std430, binding = BINDING_SCENE_INSTANCES) readonly buffer SceneInstances { ivec2 sceneInstances[]; };
@@ -108,6 +110,21 @@ ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
   s.specularTint = g.tintRoughness.xyz;
   s.transmission = g.modelTransSpec.y;
   s.specularWeight = g.modelTransSpec.z;
+#if DIPTYCH_SCENE_IRIDESCENCE
+  s.iridescence = g.iridescence.x;
+  s.iridescenceIor = g.iridescence.y;
+  s.iridescenceThickness = g.iridescence.w;
+  int filmTex = int(g.iridescenceTextures.x);
+  if (sceneTextureValid(filmTex)) s.iridescence *= sceneMaterialTexture(filmTex, uv, uvLod).x;
+  int thicknessTex = int(g.iridescenceTextures.y);
+  if (sceneTextureValid(thicknessTex))
+    s.iridescenceThickness =
+        mix(g.iridescence.z, g.iridescence.w, sceneMaterialTexture(thicknessTex, uv, uvLod).y);
+#else
+  s.iridescence = 0.0;  // a constant: pbr.glsl's film paths fold away
+  s.iridescenceIor = 1.0;
+  s.iridescenceThickness = 0.0;
+#endif
 #if DIPTYCH_SCENE_CHECKER || DIPTYCH_SCENE_TEXTURES
   int colourTex = int(g.texColorEmitMrAo.x);
   if (DIPTYCH_SCENE_CHECKER != 0 && g.emissionChecker.w > 0.5) {

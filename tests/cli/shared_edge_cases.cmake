@@ -68,11 +68,6 @@ expect_failure(invalid-primitive-indices
          "glTF parse error (tinygltf)" "indices accessor out of bounds"
   ARGS render "${bounds}/invalid-primitive-indices.gltf" ${small})
 
-expect_failure(iridescence-suzanne
-  EXPECT "diptych: error: ${SHARED_SCENES}/iridescence-suzanne/IridescenceSuzanne.glb: "
-         "extensionsRequired[0]" "unsupported required extension KHR_materials_iridescence"
-  ARGS render "${SHARED_SCENES}/iridescence-suzanne/IridescenceSuzanne.glb" ${small})
-
 # Recovered, not rejected: renders, with one warning naming the fix.
 function(expect_render label file warning)
   file(REMOVE "${WORK_DIR}/${label}.png")
@@ -89,5 +84,7 @@ function(expect_render label file warning)
 endfunction()
 expect_render(box-bad-normals "${assimp}/BoxBadNormals.glb" "zero-length normals replaced")
 expect_render(negative-scale "${SHARED_SCENES}/negative-scale-test/NegativeScaleTest.glb" "")
+# KHR_materials_iridescence is a required extension of this file, now supported.
+expect_render(iridescence-suzanne "${SHARED_SCENES}/iridescence-suzanne/IridescenceSuzanne.glb" "")
 expect_render(mesh-primitive-modes "${SHARED_SCENES}/mesh-primitive-modes/MeshPrimitiveModes.gltf"
               "skipped POINTS primitive")

@@ -42,8 +42,6 @@ const std::map<std::string, Expected>& expectations() {
       {"edge-cases-tinygltf/BoundsChecking/invalid-buffer-index.gltf", {{"tinygltf"}, ""}},
       {"edge-cases-tinygltf/BoundsChecking/invalid-buffer-view-index.gltf", {{"tinygltf"}, ""}},
       {"edge-cases-tinygltf/BoundsChecking/invalid-primitive-indices.gltf", {{"tinygltf"}, ""}},
-      {"iridescence-suzanne/IridescenceSuzanne.glb",
-       {{"extensionsRequired[0]", "unsupported required extension KHR_materials_iridescence"}, ""}},
       {"mesh-primitive-modes/MeshPrimitiveModes.gltf", {{}, "skipped POINTS primitive"}},
   };
   return table;

@@ -1,6 +1,7 @@
 // The glTF 2.0 metallic-roughness model (shaders/common/pbr.glsl) compiled as C++: closed-form
-// cases, reciprocity, energy bounds by quadrature, the dispatch by ShadingMaterial::model, and
-// the scene side (loader defaults, the JSON keys, --shading's forceShadingModel).
+// cases, reciprocity, energy bounds by quadrature, the dispatch by ShadingMaterial::model, the
+// KHR_materials_iridescence film (PbrFilm), and the scene side (loader defaults, the JSON keys,
+// --shading's forceShadingModel).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -152,6 +153,80 @@ TEST(Pbr, TheLectureModelIsUnchangedByTheDispatch) {
   const vec3 n(0, 0, 1), v = dirAt(0.7f), l = dirAt(0.3f, 1.f);
   EXPECT_EQ(directResponse(m, n, v, l), directTerm(m, n, v, l));
   EXPECT_EQ(secondaryTerms(m, n, v, vec3(4.f), vec3(2.f)), vec3(2.f, 1.f, 1.f));
+}
+
+// ---- KHR_materials_iridescence: the thin-film Fresnel (pbrFilmFresnel) and its mix ----
+
+ShadingMaterial filmed(ShadingMaterial m, float strength, float ior, float thickness) {
+  m.iridescence = strength;
+  m.iridescenceIor = ior;
+  m.iridescenceThickness = thickness;
+  return m;
+}
+
+TEST(PbrFilm, StrengthZeroLeavesTheModelExactlyUnchanged) {
+  const vec3 n(0, 0, 1), v = dirAt(0.6f), l = dirAt(0.9f, 2.f);
+  for (float metallic : {0.f, 0.4f, 1.f}) {
+    const ShadingMaterial plain = pbr(vec3(0.8f, 0.5f, 0.2f), metallic, 0.3f, 0.5f);
+    const ShadingMaterial off = filmed(plain, 0.f, 1.8f, 350.f);
+    EXPECT_EQ(pbrDirect(off, n, v, l), pbrDirect(plain, n, v, l)) << metallic;
+    const SecondaryWeights a = pbrSecondaryWeights(off, n, v), b = pbrSecondaryWeights(plain, n, v);
+    EXPECT_EQ(a.reflection, b.reflection) << metallic;
+    EXPECT_EQ(a.transmission, b.transmission) << metallic;
+    // The same film at full strength does change the colour: the term is wired in.
+    const vec3 on = pbrDirect(filmed(plain, 1.f, 1.8f, 350.f), n, v, l);
+    EXPECT_GT(glm::length(on - pbrDirect(plain, n, v, l)), 1e-3f) << metallic;
+  }
+}
+
+TEST(PbrFilm, ZeroThicknessIsThePlainFresnelOfTheBase) {
+  for (float c : {0.f, 0.2f, 0.7f, 1.f}) {
+    for (vec3 f0 : {vec3(0.04f), vec3(0.9f, 0.6f, 0.3f), vec3(1.f)}) {
+      const vec3 schlick = f0 + (vec3(1.f) - f0) * pbrSchlickWeight(c);
+      EXPECT_EQ(pbrFilmFresnel(1.8f, f0, 0.f, c), schlick) << c;
+    }
+  }
+  // Through the BRDF: a film of strength 1 but no thickness shades as no film.
+  const vec3 n(0, 0, 1), v = dirAt(0.4f), l = dirAt(1.1f, 0.5f);
+  const ShadingMaterial plain = pbr(vec3(0.3f, 0.6f, 0.9f), 0.5f, 0.2f);
+  EXPECT_EQ(pbrDirect(filmed(plain, 1.f, 1.5f, 0.f), n, v, l), pbrDirect(plain, n, v, l));
+}
+
+TEST(PbrFilm, MatchesThePythonReference) {
+  // From tests/tools/iridescence_reference.py: the spec's formulas in double precision, written
+  // separately from pbr.glsl (film IOR, base F0, thickness nm, cos theta1, expected linear sRGB).
+  struct Reference {
+    float ior;
+    vec3 f0;
+    float thickness, cosTheta;
+    vec3 rgb;
+  };
+  const Reference cases[] = {
+      {1.8f, vec3(0.04f, 0.04f, 0.04f), 300.0f, 0.8f, vec3(0.1433912f, 0.05119359f, 0.09259215f)},
+      {1.33f, vec3(0.9f, 0.6f, 0.3f), 400.0f, 1.0f, vec3(0.8612996f, 0.6000648f, 0.151301f)},
+      {1.33f, vec3(0.9f, 0.6f, 0.3f), 250.0f, 0.35f, vec3(0.9121609f, 0.7001597f, 0.4591795f)},
+  };
+  for (const Reference& r : cases) {
+    const vec3 got = pbrFilmFresnel(r.ior, r.f0, r.thickness, r.cosTheta);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(got[k], r.rgb[k], 2e-5f) << r.ior << " " << r.thickness << " channel " << k;
+  }
+  // The hue really moves with the thickness: 300 and 400 nm films on the same base differ.
+  const vec3 a = pbrFilmFresnel(1.33f, vec3(0.04f), 300.f, 1.f);
+  const vec3 b = pbrFilmFresnel(1.33f, vec3(0.04f), 400.f, 1.f);
+  EXPECT_GT(glm::length(a - b), 0.01f);
+}
+
+TEST(PbrFilm, FullStrengthReplacesBothLobesFresnel) {
+  // A smooth metal at normal incidence: pi f n.l = F D V pi, so the ratio of the filmed to the
+  // plain response is F_film(base, v.h = 1) / base, per channel.
+  const vec3 n(0, 0, 1), v(0, 0, 1), l(0, 0, 1);
+  const vec3 base(0.9f, 0.6f, 0.3f);
+  const ShadingMaterial metal = pbr(base, 1.f, 0.5f);
+  const vec3 ratio =
+      pbrDirect(filmed(metal, 1.f, 1.33f, 400.f), n, v, l) / pbrDirect(metal, n, v, l);
+  const vec3 expected = pbrFilmFresnel(1.33f, base, 400.f, 1.f) / base;
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(ratio[k], expected[k], 1e-5f) << k;
 }
 
 std::filesystem::path writeScene(const std::string& name, const std::string& text) {

@@ -1,4 +1,5 @@
-// GLSL vs C++ parity of the glTF model (shaders/common/pbr.glsl): compiled as GLSL (a compute
+// GLSL vs C++ parity of the glTF model (shaders/common/pbr.glsl), with and without a
+// KHR_materials_iridescence film: compiled as GLSL (a compute
 // shader on OSMesa/llvmpipe) and as C++ (engine/shading/shading.h), evaluated through the shared
 // dispatch points directResponse and secondaryWeights on random inputs, a share of them extreme:
 // roughness exactly 0 and 1, metallic 0 and 1, grazing v and l (within 1e-3 rad of the tangent
@@ -28,11 +29,12 @@ namespace diptych {
 namespace {
 
 using namespace shading;
-constexpr int kInStride = 32, kOutStride = 12;
+constexpr int kInStride = 32, kOutStride = 16;
 
 struct Case {
   ShadingMaterial m{};
   vec3 n{0.f}, v{0.f}, l{0.f};
+  float filmCos = 0.f;  // cos(theta1) of the pbrFilmFresnel output
 
   void write(float* r) const {
     auto put3 = [&](int i, vec3 x) { r[i] = x.x, r[i + 1] = x.y, r[i + 2] = x.z; };
@@ -43,12 +45,15 @@ struct Case {
     put3(11, n);
     put3(14, v);
     put3(17, l);
+    r[20] = m.iridescence, r[21] = m.iridescenceIor, r[22] = m.iridescenceThickness;
+    r[23] = filmCos;
   }
 
   std::array<float, kOutStride> evaluate() const {
     const vec3 d = directResponse(m, n, v, l);
     const SecondaryWeights w = secondaryWeights(m, n, v);
     const vec2 ab = pbrEnvironmentBrdf(dot(safeNormalize(n), safeNormalize(v)), m.roughness);
+    const vec3 f = pbrFilmFresnel(m.iridescenceIor, m.baseColor, m.iridescenceThickness, filmCos);
     return {d.x,
             d.y,
             d.z,
@@ -60,6 +65,10 @@ struct Case {
             w.transmission.z,
             ab.x,
             ab.y,
+            0.f,
+            f.x,
+            f.y,
+            f.z,
             0.f};
   }
 
@@ -73,7 +82,9 @@ struct Case {
 
 class CaseGenerator : testing::RandomInputs {
  public:
-  explicit CaseGenerator(unsigned seed) : RandomInputs(seed, 0.15f) {}
+  // film: KHR_materials_iridescence on every case (strength and thickness 0 among the extremes);
+  // without it the film inputs stay 0 and the random sequence is the film-free one.
+  CaseGenerator(unsigned seed, bool film) : RandomInputs(seed, 0.15f), film_(film) {}
 
   Case next() {
     Case c;
@@ -95,10 +106,17 @@ class CaseGenerator : testing::RandomInputs {
     } else {
       c.l = chance(0.2f) ? grazing(c.n) : vector();
     }
+    if (film_) {
+      m.iridescence = pick({0.f, 1.f}, uniform(0, 1));
+      m.iridescenceIor = pick({1.f, 2.5f}, uniform(1.f, 2.5f));
+      m.iridescenceThickness = pick({0.f, 1200.f}, uniform(0.f, 1200.f));
+      c.filmCos = pick({0.f, 1.f}, uniform(0, 1));
+    }
     return c;
   }
 
  private:
+  bool film_;
   vec3 vector() {
     return unit() * (chance(0.05f) ? (chance(0.5f) ? 0.f : 1e30f) : uniform(0.1f, 3.f));
   }
@@ -111,12 +129,23 @@ struct Group {
 constexpr Group kGroups[] = {{"directResponse (pi f n.l)", 0, 3},
                              {"secondaryWeights.reflection", 3, 3},
                              {"secondaryWeights.transmission", 6, 3},
-                             {"pbrEnvironmentBrdf", 9, 2}};
+                             {"pbrEnvironmentBrdf", 9, 2},
+                             {"pbrFilmFresnel", 12, 3}};
 
-TEST(PbrParity, GlslAndCppAgreeOnRandomGrazingAndExtremeRoughness) {
+// The film's phases: cos(x) at x up to the largest Fourier frequency (2.2399e6, doubled for the
+// second order) times 2 pi opd 1e-9, opd = 2 n d cos(theta2) <= 2 n d; a few-ULP difference in x
+// is ~4 eps x absolute in cos. Added to every group the film reaches (all but the table's).
+double filmPhaseBound(const ShadingMaterial& m) {
+  if (!(m.iridescenceThickness > 0.f)) return 0.0;
+  const double x = 2.0 * 2.2399e6 * 2.0 * 3.14159265 * 2.0 * std::max(m.iridescenceIor, 1.f) *
+                   m.iridescenceThickness * 1e-9;
+  return 4.0 * FLT_EPSILON * x;
+}
+
+void checkParity(bool film, unsigned seed) {
   gl::testing::osmesaContext();
   constexpr int kCases = 20000;
-  CaseGenerator gen(20261128u);
+  CaseGenerator gen(seed, film);
   std::vector<Case> cases;
   for (int i = 0; i < kCases; ++i) cases.push_back(gen.next());
   const std::vector<float> gpu = testing::dispatchCases(
@@ -157,6 +186,7 @@ TEST(PbrParity, GlslAndCppAgreeOnRandomGrazingAndExtremeRoughness) {
       if (grp.first == 0)
         bound += 64.0 * FLT_EPSILON / std::max(d, 1e-12f) + 16.0 * FLT_EPSILON * (1 / nl + 1 / nv);
       if (grp.first == 6) bound += 16.0 * FLT_EPSILON / nv;
+      if (grp.first != 9) bound += filmPhaseBound(c.m);
       worst[grp.name] = std::max(worst[grp.name], rel);
       if (d > 0.1f && nl > 0.1f && nv > 0.1f)  // well conditioned: no peak, nothing grazing
         worstConditioned[grp.name] = std::max(worstConditioned[grp.name], rel);
@@ -164,7 +194,10 @@ TEST(PbrParity, GlslAndCppAgreeOnRandomGrazingAndExtremeRoughness) {
         ADD_FAILURE() << grp.name << " case " << i << ": relative difference " << rel << " bound "
                       << bound << " (roughness " << c.m.roughness << ", d " << d << ", n.l "
                       << dot(N, safeNormalize(c.l)) << ", n.v " << dot(N, safeNormalize(c.v))
-                      << ")";
+                      << "; film " << c.m.iridescence << ", IOR " << c.m.iridescenceIor << ", "
+                      << c.m.iridescenceThickness << " nm, cos " << c.filmCos << ", base "
+                      << c.m.baseColor.x << " " << c.m.baseColor.y << " " << c.m.baseColor.z
+                      << "; GPU " << g[grp.first] << " CPU " << cpu[grp.first] << ")";
     }
   }
   std::cout << "[ measured ] cases: " << kCases << ", roughness 0: " << roughness0
@@ -176,6 +209,16 @@ TEST(PbrParity, GlslAndCppAgreeOnRandomGrazingAndExtremeRoughness) {
   EXPECT_GT(roughness0, 1000);
   EXPECT_GT(roughness1, 1000);
   EXPECT_GT(peaks, 100);
+}
+
+TEST(PbrParity, GlslAndCppAgreeOnRandomGrazingAndExtremeRoughness) {
+  checkParity(false, 20261128u);
+}
+
+// KHR_materials_iridescence: the same cases with a random film (strength, IOR 1 to 2.5,
+// thickness 0 to 1200 nm), and pbrFilmFresnel itself at a random cos(theta1).
+TEST(PbrParity, GlslAndCppAgreeWithAThinFilm) {
+  checkParity(true, 20261130u);
 }
 
 }  // namespace

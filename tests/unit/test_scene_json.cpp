@@ -413,6 +413,45 @@ TEST(SceneGltf, TinyFilesLoadAndFailByName) {
   EXPECT_EQ(included.meshes[0].material, 0);
 }
 
+TEST(SceneGltf, IridescenceReadsDefaultsAndRefusesOutOfRangeValues) {
+  const std::string nodes = R"("scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "extensionsUsed": ["KHR_materials_iridescence"],
+    "extensionsRequired": ["KHR_materials_iridescence"], )";
+  const auto withFilm = [&](const std::string& film) {
+    return tinyGltf(nodes + R"("materials": [{"extensions": {"KHR_materials_iridescence": )" +
+                    film + "}}], ");
+  };
+  const Scene defaults = loadScene(writeFile("film_defaults.gltf", withFilm("{}")));
+  ASSERT_EQ(defaults.materials.size(), 1u);
+  const Material& d = defaults.materials[0];
+  EXPECT_EQ(d.iridescenceFactor, 0.f);
+  EXPECT_FLOAT_EQ(d.iridescenceIor, 1.3f);
+  EXPECT_EQ(d.iridescenceThicknessMinimum, 100.f);
+  EXPECT_EQ(d.iridescenceThicknessMaximum, 400.f);
+  EXPECT_EQ(d.iridescenceTexture, -1);
+  EXPECT_EQ(d.iridescenceThicknessTexture, -1);
+
+  const Scene set = loadScene(writeFile("film_set.gltf", withFilm(R"({"iridescenceFactor": 0.5,
+    "iridescenceIor": 1.8, "iridescenceThicknessMinimum": 50, "iridescenceThicknessMaximum": 900})")));
+  EXPECT_EQ(set.materials[0].iridescenceFactor, 0.5f);
+  EXPECT_FLOAT_EQ(set.materials[0].iridescenceIor, 1.8f);
+  EXPECT_EQ(set.materials[0].iridescenceThicknessMinimum, 50.f);
+  EXPECT_EQ(set.materials[0].iridescenceThicknessMaximum, 900.f);
+
+  const std::string place = "materials[0].extensions.KHR_materials_iridescence.";
+  const std::pair<const char*, const char*> bad[] = {
+      {R"({"iridescenceFactor": 1.5})", "iridescenceFactor"},
+      {R"({"iridescenceIor": 0.5})", "iridescenceIor"},
+      {R"({"iridescenceThicknessMinimum": -1})", "iridescenceThicknessMinimum"},
+      {R"({"iridescenceThicknessMaximum": "thick"})", "iridescenceThicknessMaximum"},
+      {R"({"iridescenceTexture": {"index": 7}})", "iridescenceTexture.index"}};
+  for (const auto& [film, key] : bad) {
+    const std::string error = loadError("film_bad.gltf", withFilm(film));
+    EXPECT_NE(error.find("film_bad.gltf"), std::string::npos) << film << ": " << error;
+    EXPECT_NE(error.find(place + key), std::string::npos) << film << ": " << error;
+  }
+}
+
 TEST(Environment, SolidColourAndEquirectConvention) {
   Environment env;
   env.color = vec3(0.5f);

@@ -31,6 +31,7 @@ TEST(ShaderFeatures, WhittedKeepsTheCheckerAndOnePointLightAndFoldsTextures) {
   EXPECT_EQ(d.at("DIPTYCH_SCENE_TEXTURES"), "0");
   EXPECT_EQ(d.at("DIPTYCH_SCENE_NORMAL_MAPS"), "0");
   EXPECT_EQ(d.at("DIPTYCH_SCENE_CHECKER"), "1");
+  EXPECT_EQ(d.at("DIPTYCH_SCENE_IRIDESCENCE"), "0");
   EXPECT_EQ(d.at("DIPTYCH_SCENE_MODEL"), std::to_string(int(ShadingModel::Lecture)));
   EXPECT_EQ(d.at("DIPTYCH_SCENE_LIGHT_TYPE"), std::to_string(int(LightType::Point)));
 }
@@ -54,6 +55,17 @@ TEST(ShaderFeatures, EveryFeatureAndMixtureIsKept) {
   EXPECT_EQ(d.at("DIPTYCH_SCENE_NORMAL_MAPS"), "1");
   EXPECT_EQ(d.at("DIPTYCH_SCENE_MODEL"), "-1");       // lecture and glTF both present
   EXPECT_EQ(d.at("DIPTYCH_SCENE_LIGHT_TYPE"), "-1");  // point and spot
+}
+
+TEST(ShaderFeatures, AFilmIsKeptOnlyForAGltfMaterialWithAStrength) {
+  Scene scene = sample("whitted.json");
+  ASSERT_GE(scene.materials.size(), 1u);
+  scene.materials[0].iridescenceFactor = 0.5f;  // a lecture material: pbr.glsl never runs
+  EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_IRIDESCENCE"), "0");
+  scene.materials[0].model = ShadingModel::Gltf;
+  EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_IRIDESCENCE"), "1");
+  scene.materials[0].iridescenceFactor = 0.f;
+  EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_IRIDESCENCE"), "0");
 }
 
 TEST(ShaderFeatures, TheDefaultMaterialCountsOnlyWhereAMeshUsesIt) {

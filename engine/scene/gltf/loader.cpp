@@ -17,8 +17,9 @@ namespace diptych {
 namespace {
 
 const std::set<std::string> kSupportedExtensions = {
-    "KHR_lights_punctual",  "KHR_materials_transmission",      "KHR_materials_ior",
-    "KHR_materials_volume", "KHR_materials_emissive_strength", "KHR_materials_specular"};
+    "KHR_lights_punctual",      "KHR_materials_transmission",      "KHR_materials_ior",
+    "KHR_materials_volume",     "KHR_materials_emissive_strength", "KHR_materials_specular",
+    "KHR_materials_iridescence"};
 
 // tinygltf image callback: decode with OpenImageIO, keep the float pixels beside the model.
 // A failure is recorded, not raised, so that an unused broken image does not fail the file.

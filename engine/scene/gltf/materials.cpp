@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <string>
 
 #include "engine/core/error.h"
 #include "engine/core/srgb_table.h"
@@ -29,6 +31,15 @@ vec3 valueVec3(const tinygltf::Value& v, vec3 fallback) {
 float valueNumber(const tinygltf::Value& object, const char* key, float fallback) {
   if (!object.IsObject() || !object.Has(key) || !object.Get(key).IsNumber()) return fallback;
   return float(object.Get(key).GetNumberAsDouble());
+}
+
+// A bound for an error message: "1", "1.5", or "inf" for the largest float.
+std::string formatBound(float x) {
+  if (x >= std::numeric_limits<float>::max()) return "inf";
+  std::string s = std::to_string(x);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
 }
 
 const tinygltf::Value* extension(const tinygltf::Material& m, const char* name) {
@@ -109,6 +120,27 @@ class TextureTable {
   int dataTexture(const Info& info, const std::string& place) {
     return texture(info.index, info.texCoord, info.extensions, place, false);
   }
+
+  // The same for a textureInfo held in an extension's JSON (tinygltf leaves those as Values):
+  // `key` of `ext`, absent: -1. `place` names `ext`.
+  int dataTexture(const tinygltf::Value& ext, const char* key, const std::string& place) {
+    if (!ext.IsObject() || !ext.Has(key)) return -1;
+    const tinygltf::Value& info = ext.Get(key);
+    const std::string at = place + "." + key;
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
+      throw InputError(file_, at + ".index", "a textureInfo needs an integer index");
+    const int texCoord = info.Has("texCoord") && info.Get("texCoord").IsInt()
+                             ? info.Get("texCoord").GetNumberAsInt()
+                             : 0;
+    tinygltf::ExtensionMap extensions;
+    if (info.Has("extensions") && info.Get("extensions").IsObject())
+      for (const std::string& name : info.Get("extensions").Keys())
+        extensions[name] = info.Get("extensions").Get(name);
+    const int index = info.Get("index").GetNumberAsInt();
+    if (index < 0) throw InputError(file_, at + ".index", "texture index is negative");
+    return texture(index, texCoord, extensions, at, false);
+  }
+  const std::string& file() const { return file_; }
 
   int texture(int index, int texCoord, const tinygltf::ExtensionMap& extensions,
               const std::string& place, bool srgb) {
@@ -194,6 +226,28 @@ class TextureTable {
   std::map<int, int> made_;
 };
 
+// KHR_materials_iridescence into m. Out-of-range numbers are errors (the schema's bounds: factor
+// in [0, 1], IOR >= 1, thicknesses >= 0), not clamped: a film's hue depends on every one of them.
+void readIridescence(const tinygltf::Value& ext, const std::string& place, TextureTable& textures,
+                     Material& m) {
+  const auto number = [&](const char* key, float fallback, float lo, float hi) {
+    if (!ext.IsObject() || !ext.Has(key)) return fallback;
+    const tinygltf::Value& v = ext.Get(key);
+    const double x = v.IsNumber() ? v.GetNumberAsDouble() : std::nan("");
+    if (!(x >= lo && x <= hi))
+      throw InputError(textures.file(), place + "." + key,
+                       "must be a number in [" + formatBound(lo) + ", " + formatBound(hi) + "]");
+    return float(x);
+  };
+  const float inf = std::numeric_limits<float>::max();
+  m.iridescenceFactor = number("iridescenceFactor", 0.f, 0.f, 1.f);
+  m.iridescenceIor = number("iridescenceIor", 1.3f, 1.f, inf);
+  m.iridescenceThicknessMinimum = number("iridescenceThicknessMinimum", 100.f, 0.f, inf);
+  m.iridescenceThicknessMaximum = number("iridescenceThicknessMaximum", 400.f, 0.f, inf);
+  m.iridescenceTexture = textures.dataTexture(ext, "iridescenceTexture", place);
+  m.iridescenceThicknessTexture = textures.dataTexture(ext, "iridescenceThicknessTexture", place);
+}
+
 Material convertMaterial(const tinygltf::Material& src, const std::string& place,
                          TextureTable& textures) {
   const tinygltf::PbrMetallicRoughness& pbr = src.pbrMetallicRoughness;
@@ -225,6 +279,8 @@ Material convertMaterial(const tinygltf::Material& src, const std::string& place
     m.specularWeight = std::clamp(valueNumber(*ext, "specularFactor", 1.f), 0.f, 1.f);
     m.specularTint = glm::max(valueVec3(ext->Get("specularColorFactor"), vec3(1.f)), vec3(0.f));
   }
+  if (const tinygltf::Value* ext = extension(src, "KHR_materials_iridescence"))
+    readIridescence(*ext, place + ".extensions.KHR_materials_iridescence", textures, m);
   float emissiveStrength = 1.f;
   if (const tinygltf::Value* ext = extension(src, "KHR_materials_emissive_strength"))
     emissiveStrength = valueNumber(*ext, "emissiveStrength", 1.f);

@@ -25,7 +25,7 @@ void main() {
   ShadingMaterial m = ShadingMaterial(at3(15), at(18), at(19), at(20), at(21), at3(22), at(25),
                                       at3(26), at(29), at3(30), at3(33), at(36), at(37),
                                       SHADING_MODEL_LECTURE, vec3(0.0), 0.0, 0.0, 0.0, 0.0,
-                                      vec3(0.0));
+                                      vec3(0.0), 0.0, 1.0, 0.0);
   vec3 p = at3(38), n = at3(41), v = at3(44), d = at3(51);
   float visibility = at(47), eta = at(48), cosTheta = at(49), n1 = at(50), n2 = at(54);
 
