@@ -205,7 +205,7 @@ void RtScene::intersectRays(std::span<const Ray> rays, std::span<Hit> hits,
                 "RtScene::intersectRays: output smaller than the rays");
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  context.flags = streamFlag(true);
   for (std::size_t begin = 0; begin < rays.size(); begin += kStreamRays) {
     const std::size_t n = std::min(kStreamRays, rays.size() - begin);
     RTCRayHit tile[kStreamRays];  // RTC_ALIGN(16), as rtcIntersect1M requires
@@ -260,11 +260,22 @@ bool RtScene::occluded(const vec3& origin, const vec3& direction, float tnear, f
   return ray.tfar < 0.f;
 }
 
+RTCIntersectContextFlags RtScene::streamFlag(bool coherent) const {
+  // Embree 3.13.5's coherent stream kernels hung, intermittently, inside rtcOccluded1M on a scene
+  // with instances: four ordinary shadow rays (finite, tnear 0, tfar ~20) never returned on
+  // NegativeScaleTest's mirrored instances, in the ASan build (both CI runs of a branch that
+  // only changed the caller's stack layout, and 3 of 4 runs here); with the INCOHERENT flag,
+  // which takes Embree's packet path instead of its frustum path, 6 of 6 passed. Instanced
+  // scenes pay that flag's cost (rt_shadows on whitted, which has no instances, measured 22.9
+  // against 28.3 CPU ms with it: docs/benchmarks.md, session 17).
+  return coherent && instanced_ == 0 ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                     : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+}
+
 void RtScene::occludedTile(std::span<RTCRay> rays, bool coherent) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  context.flags =
-      coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  context.flags = streamFlag(coherent);
   std::uint64_t active = 0;
   for (const RTCRay& r : rays) active += r.tnear <= r.tfar ? 1 : 0;
   if (alphaMasked_ > 0) {

@@ -105,7 +105,8 @@ class RtScene {
   // std::optional<Hit> copied through the stack.
   bool intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool wantNormal) const;
   // Closest hits of many rays (t in [0, inf)), traced as coherent Embree streams
-  // (rtcIntersect1M with RTC_INTERSECT_CONTEXT_FLAG_COHERENT) of kStreamRays on the calling
+  // (rtcIntersect1M with RTC_INTERSECT_CONTEXT_FLAG_COHERENT, INCOHERENT on a scene with
+  // instances: streamFlag) of kStreamRays on the calling
   // thread: Embree groups neighbouring rays into packets, so a row of pixel rays pays one
   // traversal setup per packet instead of one per ray. found[i] = &hits[i] on a hit, null on a
   // miss (hits[i] then untouched). The packet kernels may round differently from intersect's
@@ -119,7 +120,8 @@ class RtScene {
 
   // Many occlusion rays: occludedOut[i] = 1 when rays[i] hits something, else 0. Split into
   // tiles traced with Embree's ray-stream API (rtcOccluded1M) in parallel with TBB.
-  // `coherent` hints that neighbouring rays are similar (camera-like), otherwise incoherent.
+  // `coherent` hints that neighbouring rays are similar (camera-like), otherwise incoherent;
+  // a scene with instances traces both as incoherent (streamFlag).
   void occludedBatch(std::span<const OcclusionRay> rays, std::span<std::uint8_t> occludedOut,
                      bool coherent = false) const;
 
@@ -180,6 +182,9 @@ class RtScene {
  private:
   RtScene(const RtDevice& device, const WorldGeometry& world, const Scene* scene,
           RtSceneOptions options);
+  // The context flag of a stream: COHERENT where asked for and the scene has no instances (see
+  // the .cpp), else INCOHERENT.
+  RTCIntersectContextFlags streamFlag(bool coherent) const;
   // The Hit of a traced RTCRayHit (intersect's conversion); false on a miss.
   bool hitOf(const RTCRayHit& rh, Hit& hit, bool wantNormal) const;
   const RtDevice& device_;
