@@ -74,10 +74,10 @@ void main() {
   if (kHasAlbedo) {
     // The texture-filtering slot's signal replaces the resolved colour and coverage, as
     // passes/cpu/shade.cpp applyAlbedo: not where it wrote none (a < 0) nor for lecture-model
-    // materials whose metallic-roughness texture re-maps C per texel (docs/textures.md).
+    // materials re-mapped per texel (remapsPerTexel, gate 8; docs/textures.md).
     vec4 albedo = imageLoad(uAlbedo, p);
     bool remapped = m.model != SHADING_MODEL_GLTF &&
-                    sceneTextureValid(int(sceneMaterials[s.material + 1].texColorEmitMrAo.z));
+                    (int(sceneMaterials[s.material + 1].modelTransSpec.w) & 8) != 0;
     if (albedo.a >= 0.0 && !remapped) m = withTextureSignal(m, albedo.xyz, albedo.w);
   }
   // makeSurfacePoint(): the shading normal on the side the eye ray arrives from.

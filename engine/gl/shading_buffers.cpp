@@ -6,6 +6,7 @@
 #include "engine/core/check.h"
 #include "engine/gl/bindings.h"
 #include "engine/gl/loader.h"
+#include "engine/scene/gltf_pbr.h"
 #include "engine/shading/shading.h"
 #include "engine/shading/texture_sampling.h"
 
@@ -56,7 +57,7 @@ int wrapCode(WrapMode w) {
 float materialGates(const Material& m) {
   return float((shading::materialHasReflection(m, false) ? 1 : 0) |
                (shading::materialHasReflection(m, true) ? 2 : 0) |
-               (shading::materialHasTransmission(m) ? 4 : 0));
+               (shading::materialHasTransmission(m) ? 4 : 0) | (remapsPerTexel(m) ? 8 : 0));
 }
 
 void packMaterial(const Material& m, const AlphaLane& lane, std::vector<float>& out) {

@@ -32,7 +32,8 @@ AlphaDraw alphaDraw(const Scene& scene, int material);
 inline constexpr int kMaxAlphaMaskSize = 2048;
 
 struct GlShadingBuffers {
-  Buffer materials;  // 18 vec4 per material; entry 0 is the default material, m + 1 is materials[m]
+  Buffer materials;  // 20 vec4 per material (packMaterial); entry 0 is the default material, m + 1
+                     // is materials[m]
   Buffer instances;  // 2 ints per instance: (material + 1, first triangle in the shared buffers)
   Buffer lights;     // 5 vec4 per light
   // R32F 2D array: layer k holds the alpha of one colour texture used by a masked material, at

@@ -32,8 +32,9 @@ struct ColourAlpha {
 
 // The colour/alpha rule, written once for resolveMaterial and resolvedColorAlpha: C = colour x
 // texel (a checker's colour replaces it, and the colour texture with it), alpha x texel.a; where
-// a metallic-roughness texel `mr` is given, C becomes the glTF diffuse colour of the base colour
-// at this texel (gltfDiffuseColor, the loader's mapping: engine/scene/gltf_pbr.h).
+// the material is re-mapped per texel (remapsPerTexel) and `mr` is its metallic-roughness texel
+// (1 without that texture), C becomes the glTF diffuse colour of the base colour at this texel
+// (gltfDiffuseColor, the loader's mapping: engine/scene/gltf_pbr.h).
 // sample(texture) reads a texture at the point, at the caller's level. Inline: it runs per hit.
 template <class Sample>
 inline ColourAlpha colourAlpha(const Scene& scene, const Material& material, vec2 uv,
@@ -69,8 +70,8 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
   };
   const Texture* metallicRoughness = textureAt(scene, material.metallicRoughnessTexture);
   const vec4 mr = metallicRoughness ? sampleTexture(*metallicRoughness) : vec4(1.f);
-  const ColourAlpha c =
-      colourAlpha(scene, material, uv, metallicRoughness ? &mr : nullptr, sampleTexture);
+  const bool remap = remapsPerTexel(material);
+  const ColourAlpha c = colourAlpha(scene, material, uv, remap ? &mr : nullptr, sampleTexture);
   m.color = c.color;
   m.alpha = c.alpha;
   m.baseColor = material.checker ? c.texel : m.baseColor * c.texel;
@@ -78,7 +79,7 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
     const vec4 e = sampleTexture(*t);
     m.emission *= vec3(e.x, e.y, e.z);
   }
-  if (metallicRoughness) {
+  if (remap) {
     // Sampled, not averaged: the glTF inputs at this texel through the same mapping the loader
     // used for the constants (engine/scene/gltf_pbr.h); C is colourAlpha's, the same value.
     const LectureCoefficients k =
@@ -114,7 +115,7 @@ vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv) {
   // pow per hit): C, or for the glTF model the base colour.
   const Texture* metallicRoughness = textureAt(scene, material.metallicRoughnessTexture);
   const vec4 mr = metallicRoughness ? sampleTexture(*metallicRoughness, uv) : vec4(1.f);
-  const ColourAlpha c = colourAlpha(scene, material, uv, metallicRoughness ? &mr : nullptr,
+  const ColourAlpha c = colourAlpha(scene, material, uv, remapsPerTexel(material) ? &mr : nullptr,
                                     [&](const Texture& t) { return sampleTexture(t, uv); });
   if (material.model != ShadingModel::Gltf) return vec4(c.color, c.alpha);
   // resolveMaterial's baseColor, the colour the glTF model reads (textureSignalColor).

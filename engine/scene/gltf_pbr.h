@@ -1,8 +1,8 @@
 #pragma once
 // glTF metallic-roughness parameters mapped onto the lecture's coefficients (docs/scene-format.md,
 // "glTF material mapping"; docs/materials.md). One function, used by the glTF loader for the
-// material's constants and by the CPU surface code per hit when a metallicRoughnessTexture is
-// sampled, so both give the same coefficients for the same inputs.
+// material's constants and by the CPU surface code per hit where remapsPerTexel (GL:
+// scene_shading.glsl sceneApplyGltfPbr), so both give the same coefficients for the same inputs.
 #include <algorithm>
 #include <optional>
 #include <string>
@@ -27,6 +27,20 @@ struct LectureCoefficients {
 // textured C to (engine/rt/surface_point.cpp). Inline: it runs per hit there.
 inline vec3 gltfDiffuseColor(vec3 base, float metallic) {
   return base * (1.f - std::clamp(metallic, 0.f, 1.f));
+}
+
+// Whether the surface code maps the material's glTF inputs to lecture coefficients per texel
+// (gltfPbrToLecture at each hit, both sides: engine/rt/surface_point.cpp, scene_shading.glsl)
+// rather than using the loader's constants: where a metallic-roughness texture moves metallic and
+// roughness (the glTF model reads those too), and, for the lecture's model, where a colour
+// texture moves the base colour of a glTF material that is partly metal or transmissive. A
+// metal's base colour is its specular colour and a transmissive one's its M_T, which
+// C = colour x texel does not carry (C is 0 for a metal): without the re-mapping
+// `--shading lecture` showed a textured metal untextured.
+inline bool remapsPerTexel(const Material& m) {
+  return m.metallicRoughnessTexture >= 0 ||
+         (m.model == ShadingModel::Lecture && m.fromGltfPbr && !m.checker && m.colorTexture >= 0 &&
+          (m.metallicFactor > 0.f || m.transmissionFactor > 0.f));
 }
 
 // base: linear base colour (alpha ignored); metallic, roughness, transmission in [0, 1] (clamped

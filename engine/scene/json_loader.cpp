@@ -215,6 +215,7 @@ Material readMaterial(JsonObject o, const std::string& name, const Context& ctx,
       if (o.has(key)) o.fail(key, "is a lecture-model key; this material has \"model\": \"gltf\"");
     const LectureCoefficients k = gltfPbrToLecture(vec3(m.baseColorFactor), m.metallicFactor,
                                                    m.roughnessFactor, m.transmissionFactor, m.ior);
+    m.fromGltfPbr = true;  // mapped, as a glTF file's: remapsPerTexel applies
     m.color = k.color, m.kd = k.kd, m.ks = k.ks, m.exponent = k.exponent;
     m.specularColor = k.specularColor, m.kps = k.kps, m.mirrorColor = k.mirrorColor;
     m.kt = k.kt, m.transmitColor = k.transmitColor;

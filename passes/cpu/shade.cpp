@@ -8,6 +8,7 @@
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
+#include "engine/scene/gltf_pbr.h"
 #include "engine/shading/shading.h"
 #include "passes/common/exact_hits.h"
 #include "passes/raster/gbuffer_surface.h"
@@ -19,15 +20,16 @@ namespace {
 
 // The texture_filtering slot's colour and coverage replace shade's own level-0 lookup (a = -1:
 // none there): the colour the material's model reads (shading.glsl textureSignalColor). Not for
-// lecture-model materials whose metallic-roughness texture re-maps C per texel (glTF materials
-// shaded with the lecture's model): the raster producers write colour x texture, which that
-// mapping does not take as input (docs/textures.md). The glTF model reads the base colour, which
-// no metallic-roughness texel changes.
+// lecture-model materials re-mapped per texel (remapsPerTexel: glTF materials with a
+// metallic-roughness texture, or partly metal with a colour texture, shaded with the lecture's
+// model): the raster producers write colour x texture, which that mapping does not take as input
+// (docs/textures.md). The glTF model reads the base colour, which no metallic-roughness texel
+// changes.
 void applyAlbedo(SurfacePoint& sp, const Scene& scene, const CpuFloatRow& albedo, int x) {
   const float a = albedo(x, 3);
   if (a < 0.f) return;
   if (sp.resolved.model != shading::SHADING_MODEL_GLTF &&
-      scene.material(sp.material).metallicRoughnessTexture >= 0)
+      remapsPerTexel(scene.material(sp.material)))
     return;
   sp.resolved = shading::withTextureSignal(sp.resolved, albedo.rgb(x), a);
 }

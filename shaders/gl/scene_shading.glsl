@@ -16,7 +16,8 @@ struct GpuMaterial {
   vec4 alphaMask;       // layer of uSceneAlphaMasks (-1: none), width, height, flags
   vec4 baseMetallic;    // glTF model: base colour, metallic
   vec4 tintRoughness;   // KHR_materials_specular colour, roughness
-  vec4 modelTransSpec;  // SHADING_MODEL_*, transmission, specular weight, gates (sceneHitMay*)
+  vec4 modelTransSpec;  // SHADING_MODEL_*, transmission, specular weight, gates (sceneHitMay*,
+                        // 8: remapsPerTexel)
   // --- textures (engine/gl/shading_buffers.cpp packMaterial; -1: none) ---
   vec4 texColorEmitMrAo;      // base colour, emission, metallic-roughness, occlusion textures
   vec4 texNormalScales;       // normal texture, normal scale, occlusion strength, transmission
@@ -86,7 +87,9 @@ int sceneMaterialModel(int m) {
 
 // Material m of Scene::materials (-1: the default) at uv: the checker (colour alternates every
 // 1/scale in u and v) or the base-colour texture times C and alpha, the emission texture times
-// M_E, a metallic-roughness texture re-mapped per texel, occlusion scaling k_a.
+// M_E, the lecture coefficients re-mapped per texel where remapsPerTexel (gate 8: a
+// metallic-roughness texture, or a partly metal or transmissive glTF material's colour texture),
+// occlusion scaling k_a, the film's strength and thickness textures.
 ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
   GpuMaterial g = sceneMaterials[m + 1];
   ShadingMaterial s;
@@ -142,9 +145,10 @@ ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
 #if DIPTYCH_SCENE_TEXTURES
   int emissionTex = int(g.texColorEmitMrAo.y);
   if (sceneTextureValid(emissionTex)) s.emission *= sceneMaterialTexture(emissionTex, uv, uvLod).xyz;
-  int mrTex = int(g.texColorEmitMrAo.z);
-  if (sceneTextureValid(mrTex)) {
-    vec4 mr = sceneMaterialTexture(mrTex, uv, uvLod);
+  // remapsPerTexel (gate 8): the glTF inputs at this texel (a metallic-roughness texel, 1
+  // without that texture) through the loader's mapping, as resolveMaterial.
+  if ((int(g.modelTransSpec.w) & 8) != 0) {
+    vec4 mr = sceneMaterialTexture(int(g.texColorEmitMrAo.z), uv, uvLod);
     vec3 base = sceneTextureValid(colourTex) ? sceneMaterialTexture(colourTex, uv, uvLod).xyz : vec3(1.0);
     sceneApplyGltfPbr(s, g.baseFactorMetallic.xyz * base, g.baseFactorMetallic.w * mr.z,
                       g.roughnessFactor.x * mr.y, g.texNormalScales.w);

@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "engine/scene/default_lighting.h"
+#include "engine/scene/gltf_pbr.h"
 #include "passes/slots.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
@@ -123,6 +124,35 @@ TEST(TextureSignalGltf, TrilinearSignalShadesTheMetalOnBothSides) {
   }
   const Difference parity = difference(f->output("shade_gl.color"), f->output("shade_cpu.color"));
   EXPECT_LT(parity.mean, 1e-4 * parity.level) << "GL and CPU shade of the same signal";
+}
+
+// `--shading lecture` on a textured metal (remapsPerTexel): its base colour is its specular
+// colour, so the lecture coefficients are mapped from the base colour at each texel on both
+// sides. They used to be the loader's constants (C = 0 for a metal, the specular colour of
+// baseColorFactor), so Texture_Sampler_00's quad rendered as if untextured: its frame was the
+// frame without the colour texture (measured: equal to the last bit).
+TEST(TextureSignalGltf, LectureShadingShowsAMetalsColourTextureOnBothSides) {
+  const auto file = shared("texture-sampler-assetgen/Texture_Sampler_00.gltf");
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+  const auto lecture = [&](bool textured) {
+    Scene scene = lit(file);
+    forceShadingModel(scene, ShadingModel::Lecture);
+    for (Material& m : scene.materials) {
+      EXPECT_GT(m.metallicFactor, 0.f) << m.name;
+      if (!textured) m.colorTexture = -1;
+    }
+    const Recipe both = testing::withShadeInBothDomains(defaultHybridRecipe());
+    return testing::renderHybridFrame(std::move(scene), kW, kH, both.outputs, both);
+  };
+  const auto textured = lecture(true), flat = lecture(false);
+  for (const char* side : {"shade_gl.color", "shade_cpu.color"}) {
+    const Difference d = difference(textured->output(side), flat->output(side));
+    std::printf("%s: mean |textured - untextured| = %g (frame mean %g)\n", side, d.mean, d.level);
+    EXPECT_GT(d.mean, 0.05 * d.level) << side;
+  }
+  const Difference parity =
+      difference(textured->output("shade_gl.color"), textured->output("shade_cpu.color"));
+  EXPECT_LT(parity.mean, 1e-4 * parity.level) << "GL and CPU shade of the re-mapped metal";
 }
 
 }  // namespace

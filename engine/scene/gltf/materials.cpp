@@ -196,8 +196,8 @@ class TextureTable {
   }
 
   // Mean of the green (roughness) and blue (metallic) channels of a metallicRoughnessTexture,
-  // or (1, 1) when there is none: the material's constants (what the GL side shades with);
-  // the CPU side samples the texture per hit instead (engine/rt/surface_point.cpp).
+  // or (1, 1) when there is none: the material's constants (the reflection / transmission gates
+  // read them); both sides sample the texture per hit for shading (remapsPerTexel).
   vec2 meanRoughnessMetallic(const tinygltf::TextureInfo& info, const std::string& place) {
     if (info.index < 0) return vec2(1.f);
     if (info.index >= int(model_.textures.size()))
