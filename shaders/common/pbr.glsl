@@ -116,7 +116,10 @@ SHADING_FN vec3 pbrFilmFresnel(float filmIor, vec3 baseF0, float thickness, floa
                                      n3.z < n2 ? SHADING_PI : 0.0f);
   // Optical path difference of one round trip in the film, 2 n2 d cos(theta2) (Belcour & Barla
   // 2017, Sec. 3; the spec's text writes cos theta1 there, its reference code cos theta2).
-  float opd = 2.0f * n2 * thickness * c2;
+  // Capped at 1e5 nm, where every sensitivity term has long underflowed to 0 (exp(-phase^2 var)
+  // is 0 in float from about 2.5e4 nm): absurd thicknesses or IORs would overflow it to inf, and
+  // cos(inf) exp(-inf) is NaN.
+  float opd = min(2.0f * n2 * thickness * c2, 1.0e5f);
   // Airy sum: I = C0 + sum_{m=1,2} C_m S_m, C0 = R12 + Rs, C_m = (Rs - T121) r123^m,
   // Rs = T121^2 R23 / (1 - R12 R23), r123 = sqrt(R12 R23) clamped away from 0 and 1.
   vec3 r123Sq = clamp(r12 * r23, vec3(1.0e-5f), vec3(0.9999f));

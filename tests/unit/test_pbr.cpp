@@ -192,6 +192,25 @@ TEST(PbrFilm, ZeroThicknessIsThePlainFresnelOfTheBase) {
   EXPECT_EQ(pbrDirect(filmed(plain, 1.f, 1.5f, 0.f), n, v, l), pbrDirect(plain, n, v, l));
 }
 
+// Thicknesses and IORs the schema allows but no film has (1e38 nm, IOR 1e36): the optical path
+// difference overflowed to inf and cos(inf) exp(-inf) made F NaN. Beyond ~2.5e4 nm every
+// interference term is 0 in float, so such a film is the thick-film limit, finite and in [0, 1].
+TEST(PbrFilm, AbsurdThicknessOrIorStaysFiniteAtTheThickFilmLimit) {
+  const vec3 f0(0.9f, 0.6f, 0.3f);
+  for (float c : {0.1f, 0.6f, 1.f}) {
+    const vec3 limit = pbrFilmFresnel(1.5f, f0, 1.0e5f, c);
+    for (const auto& [ior, thickness] : {std::pair{1.5f, 1.0e38f}, std::pair{1.0e36f, 400.f},
+                                         std::pair{3.0e38f, 3.0e38f}}) {
+      const vec3 f = pbrFilmFresnel(ior, f0, thickness, c);
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_TRUE(std::isfinite(f[k]) && f[k] >= 0.f && f[k] <= 1.f)
+            << "ior " << ior << " thickness " << thickness << " cos " << c << ": " << f[k];
+      }
+      if (ior == 1.5f) EXPECT_EQ(f, limit) << c;
+    }
+  }
+}
+
 TEST(PbrFilm, MatchesThePythonReference) {
   // From tests/tools/iridescence_reference.py: the spec's formulas in double precision, written
   // separately from pbr.glsl (film IOR, base F0, thickness nm, cos theta1, expected linear sRGB).
