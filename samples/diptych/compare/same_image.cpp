@@ -31,14 +31,18 @@ bool atMostOneTransparentMesh(const Scene& scene) {
 
 // Every colour texture's glTF sampler asks for these filters: texture_sampler (each texture's
 // own sampler) then reads as the producer that imposes them.
+// At least one colour texture is needed (a scene without one has nothing to filter); a checker
+// replaces the colour texture.
 template <FilterMode kMin, FilterMode kMag>
 bool colourSamplersAre(const Scene& scene) {
+  int textured = 0;
   for (const Material& m : scene.materials) {
-    if (m.colorTexture < 0 || m.colorTexture >= int(scene.textures.size())) continue;
+    if (m.checker || m.colorTexture < 0 || m.colorTexture >= int(scene.textures.size())) continue;
     const Texture& t = scene.textures[std::size_t(m.colorTexture)];
     if (t.minFilter != kMin || t.magFilter != kMag) return false;
+    ++textured;
   }
-  return true;
+  return textured > 0;
 }
 
 const SceneHint kHints[] = {
