@@ -265,9 +265,10 @@ RTCIntersectContextFlags RtScene::streamFlag(bool coherent) const {
   // with instances: four ordinary shadow rays (finite, tnear 0, tfar ~20) never returned on
   // NegativeScaleTest's mirrored instances, in the ASan build (both CI runs of a branch that
   // only changed the caller's stack layout, and 3 of 4 runs here); with the INCOHERENT flag,
-  // which takes Embree's packet path instead of its frustum path, 6 of 6 passed. Instanced
-  // scenes pay that flag's cost (rt_shadows on whitted, which has no instances, measured 22.9
-  // against 28.3 CPU ms with it: docs/benchmarks.md, session 17).
+  // which takes Embree's packet path instead of its frustum path, 8 of 8 passed. It is also the
+  // faster flag there (MetalRoughSpheresNoTextures, 640x480: rt_shadows 31.1 against 37.6 CPU
+  // ms, rt_reflection 53.2 against 71.7, same image); on whitted, which has no instances, the
+  // coherent flag saves rt_shadows a fifth (22.9 against 28.3): docs/benchmarks.md, session 17.
   return coherent && instanced_ == 0 ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
                                      : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
 }
