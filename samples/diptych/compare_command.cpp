@@ -402,7 +402,8 @@ void runCompare(const CompareOptions& o) {
     if (sameAs[i] >= 0) continue;
     for (std::size_t j = 0; j < i; ++j) {
       if (sameAs[j] >= 0 || results[j].result.contains("same_image_as")) continue;
-      const double difference = largestRelativeDifference(results[i].image, results[j].image);
+      const double difference =
+          largestRelativeDifference(results[i].image, results[j].image, kSameImageTolerance);
       if (!(difference <= kSameImageTolerance)) continue;
       results[i].result["same_image_as"] = results[j].name;
       results[i].result["same_image_difference"] = difference;

@@ -73,9 +73,6 @@ vec4 sceneMaterialTexture(int tex, vec2 uv, float uvLod) {
   return sceneSampleTextureLod(tex, uv, uvLod + 0.5 * log2(max(size.x * size.y, 1.0)));
 }
 
-// Material m of Scene::materials (-1: the default) at uv: the checker (colour alternates every
-// 1/scale in u and v) or the base-colour texture times C and alpha, the emission texture times
-// M_E, a metallic-roughness texture re-mapped per texel, occlusion scaling k_a.
 // The shading model of material m (SHADING_MODEL_*): a constant where every material has one.
 int sceneMaterialModel(int m) {
 #if DIPTYCH_SCENE_MODEL >= 0
@@ -85,6 +82,9 @@ int sceneMaterialModel(int m) {
 #endif
 }
 
+// Material m of Scene::materials (-1: the default) at uv: the checker (colour alternates every
+// 1/scale in u and v) or the base-colour texture times C and alpha, the emission texture times
+// M_E, a metallic-roughness texture re-mapped per texel, occlusion scaling k_a.
 ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
   GpuMaterial g = sceneMaterials[m + 1];
   ShadingMaterial s;

@@ -51,7 +51,7 @@ std::string setting(const nlohmann::json& pass, const nlohmann::json& other) {
 
 }  // namespace
 
-double largestRelativeDifference(const Image& a, const Image& b) {
+double largestRelativeDifference(const Image& a, const Image& b, double stopAbove) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (a.width != b.width || a.height != b.height || a.channels != b.channels) return kInf;
   double largest = 0.0;
@@ -64,6 +64,7 @@ double largestRelativeDifference(const Image& a, const Image& b) {
     if (x == y) continue;  // also equal infinities
     const double scale = std::max({std::abs(x), std::abs(y), 1e-6});
     largest = std::max(largest, std::abs(x - y) / scale);  // inf against a finite value: inf
+    if (largest > stopAbove) return largest;
   }
   return largest;
 }

@@ -6,6 +6,7 @@
 // (their frames are not the same: same_frame.h), such variants used to show identical error
 // columns with nothing said; compare now names the earlier variant whose image it is, how far
 // apart the two are, and why where it can tell.
+#include <limits>
 #include <string>
 
 #include "engine/core/image.h"
@@ -21,8 +22,10 @@ namespace diptych::cli {
 constexpr double kSameImageTolerance = 1e-5;
 
 // The largest per-sample difference of a and b relative to max(|a|, |b|, 1e-6); infinity when
-// their sizes differ or one is NaN where the other is not.
-double largestRelativeDifference(const Image& a, const Image& b);
+// their sizes differ or one is NaN where the other is not. It stops at the first sample past
+// `stopAbove` and returns that sample's difference (compare tries every earlier variant).
+double largestRelativeDifference(const Image& a, const Image& b,
+                                 double stopAbove = std::numeric_limits<double>::infinity());
 
 // Why a variant's image is an earlier one's: the live passes the two frames set differently
 // ("reflection: env_sphere, not env_cube"), then, where the scene explains it, the reason: an
