@@ -73,12 +73,19 @@ void main() {
   ShadingMaterial m = sceneMaterial(s.material, s.uv);
   if (kHasAlbedo) {
     // The texture-filtering slot's signal replaces the resolved colour and coverage, as
-    // passes/cpu/shade.cpp applyAlbedo: not where it wrote none (a < 0) nor for lecture-model
-    // materials re-mapped per texel (remapsPerTexel, gate 8; docs/textures.md).
+    // passes/cpu/shade.cpp applyAlbedo, where it wrote one (a >= 0). On lecture-model materials
+    // re-mapped per texel (remapsPerTexel, gate 8) it is the base colour, and the coefficients
+    // are mapped from it (withBaseColorSignal; docs/textures.md).
     vec4 albedo = imageLoad(uAlbedo, p);
     bool remapped = m.model != SHADING_MODEL_GLTF &&
                     (int(sceneMaterials[s.material + 1].modelTransSpec.w) & 8) != 0;
-    if (albedo.a >= 0.0 && !remapped) m = withTextureSignal(m, albedo.xyz, albedo.w);
+    if (albedo.a >= 0.0 && remapped) {
+      sceneApplyGltfPbr(m, albedo.xyz, m.metallic, m.roughness, m.transmission);
+      m.baseColor = albedo.xyz;
+      m.alpha = albedo.w;
+    } else if (albedo.a >= 0.0) {
+      m = withTextureSignal(m, albedo.xyz, albedo.w);
+    }
   }
   // makeSurfacePoint(): the shading normal on the side the eye ray arrives from.
   vec3 n = dot(s.faceNormal, eye) <= 0.0 ? s.shadingNormal : -s.shadingNormal;

@@ -47,9 +47,11 @@ void main() {
   vec2 uv = bw * t0 + bu * t1 + bv * t2;
   GpuMaterial g = sceneMaterials[material + 1];
   // The colour the material's model reads (common/shading.glsl textureSignalColor): C for the
-  // lecture's, the base colour for glTF's; the texel multiplies either.
-  bool gltf = sceneMaterialModel(material) == SHADING_MODEL_GLTF;
-  vec4 result = vec4(gltf ? g.baseMetallic.xyz : g.colorKa.xyz, g.transmitAlpha.w);
+  // lecture's, the base colour for glTF's and for materials re-mapped per texel (gate 8,
+  // remapsPerTexel: shade maps their coefficients from it); the texel multiplies either.
+  bool base = sceneMaterialModel(material) == SHADING_MODEL_GLTF ||
+              (int(g.modelTransSpec.w) & 8) != 0;
+  vec4 result = vec4(base ? g.baseMetallic.xyz : g.colorKa.xyz, g.transmitAlpha.w);
   int tex = int(g.texColorEmitMrAo.x);
   if (g.emissionChecker.w > 0.5) {
     result.xyz = textureSignalColor(sceneMaterial(material, uv));  // procedural: point-sampled

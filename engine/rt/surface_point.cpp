@@ -56,6 +56,18 @@ inline ColourAlpha colourAlpha(const Scene& scene, const Material& material, vec
   return c;
 }
 
+// The mapped coefficients into m; C is left to the caller (colourAlpha computes the same value).
+void setLecture(shading::ShadingMaterial& m, const LectureCoefficients& k) {
+  m.kd = k.kd;
+  m.ks = k.ks;
+  m.exponent = k.exponent;
+  m.specularColor = k.specularColor;
+  m.kps = k.kps;
+  m.mirrorColor = k.mirrorColor;
+  m.kt = k.kt;
+  m.transmitColor = k.transmitColor;
+}
+
 }  // namespace
 
 shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv,
@@ -82,17 +94,9 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
   if (remap) {
     // Sampled, not averaged: the glTF inputs at this texel through the same mapping the loader
     // used for the constants (engine/scene/gltf_pbr.h); C is colourAlpha's, the same value.
-    const LectureCoefficients k =
-        gltfPbrToLecture(c.gltfBase, material.metallicFactor * mr.z,
-                         material.roughnessFactor * mr.y, material.transmissionFactor, m.ior);
-    m.kd = k.kd;
-    m.ks = k.ks;
-    m.exponent = k.exponent;
-    m.specularColor = k.specularColor;
-    m.kps = k.kps;
-    m.mirrorColor = k.mirrorColor;
-    m.kt = k.kt;
-    m.transmitColor = k.transmitColor;
+    setLecture(
+        m, gltfPbrToLecture(c.gltfBase, material.metallicFactor * mr.z,
+                            material.roughnessFactor * mr.y, material.transmissionFactor, m.ior));
     m.metallic = glm::clamp(material.metallicFactor * mr.z, 0.f, 1.f);  // the glTF model's inputs
     m.roughness = glm::clamp(material.roughnessFactor * mr.y, 0.f, 1.f);
   }
@@ -117,9 +121,21 @@ vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv) {
   const vec4 mr = metallicRoughness ? sampleTexture(*metallicRoughness, uv) : vec4(1.f);
   const ColourAlpha c = colourAlpha(scene, material, uv, remapsPerTexel(material) ? &mr : nullptr,
                                     [&](const Texture& t) { return sampleTexture(t, uv); });
-  if (material.model != ShadingModel::Gltf) return vec4(c.color, c.alpha);
-  // resolveMaterial's baseColor, the colour the glTF model reads (textureSignalColor).
+  if (material.model != ShadingModel::Gltf && !remapsPerTexel(material))
+    return vec4(c.color, c.alpha);
+  // resolveMaterial's baseColor: what the glTF model reads (textureSignalColor), and what a
+  // re-mapped material's coefficients are mapped from (withBaseColorSignal).
   return vec4(material.checker ? c.texel : vec3(material.baseColorFactor) * c.texel, c.alpha);
+}
+
+shading::ShadingMaterial withBaseColorSignal(shading::ShadingMaterial m, vec3 base, float alpha) {
+  const LectureCoefficients k =
+      gltfPbrToLecture(base, m.metallic, m.roughness, m.transmission, m.ior);
+  setLecture(m, k);
+  m.color = k.color;
+  m.baseColor = base;
+  m.alpha = alpha;
+  return m;
 }
 
 vec3 normalMapped(const Texture& map, float scale, const vec3& n, const vec4& tangent, vec2 uv) {

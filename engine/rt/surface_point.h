@@ -78,10 +78,17 @@ Ray spawnRay(const SurfacePoint& p, const vec3& direction);
 shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv,
                                          float uvLod = -std::numeric_limits<float>::infinity());
 
-// textureSignalColor(resolveMaterial(scene, material, uv)) and .alpha at level 0 (uvLod
-// -infinity), by the same colour/alpha rule (one function for both), without the other
-// coefficients.
+// The texture_filtering signal's colour (textureSignalColor) and alpha of
+// resolveMaterial(scene, material, uv) at level 0 (uvLod -infinity), by the same colour/alpha
+// rule (one function for both), without the other coefficients. The colour is C for the
+// lecture's model, the base colour for glTF's and for lecture-model materials re-mapped per texel
+// (remapsPerTexel), whose coefficients shade maps from it (withBaseColorSignal).
 vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv);
+
+// A lecture-model material re-mapped per texel (remapsPerTexel) with the signal's base colour
+// and coverage in place of its own lookup's: gltfPbrToLecture of that colour and the point's
+// metallic and roughness, as resolveMaterial maps its own texel. GL: gl_shade.frag.
+shading::ShadingMaterial withBaseColorSignal(shading::ShadingMaterial m, vec3 base, float alpha);
 
 // A tangent-space normal map applied at uv: n' = normalize(T x + B y + N z) with (x, y, z) =
 // (2 texel - 1) * (scale, scale, 1), T Gram-Schmidt-orthogonalised against n and

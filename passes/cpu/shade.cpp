@@ -19,19 +19,18 @@ namespace diptych {
 namespace {
 
 // The texture_filtering slot's colour and coverage replace shade's own level-0 lookup (a = -1:
-// none there): the colour the material's model reads (shading.glsl textureSignalColor). Not for
-// lecture-model materials re-mapped per texel (remapsPerTexel: glTF materials with a
-// metallic-roughness texture, or partly metal with a colour texture, shaded with the lecture's
-// model): the raster producers write colour x texture, which that mapping does not take as input
-// (docs/textures.md). The glTF model reads the base colour, which no metallic-roughness texel
-// changes.
+// none there): the colour the material's model reads (shading.glsl textureSignalColor). On
+// lecture-model materials re-mapped per texel (remapsPerTexel: glTF materials shaded with the
+// lecture's model) the signal is the base colour, and the coefficients are mapped from it
+// (withBaseColorSignal; docs/textures.md).
 void applyAlbedo(SurfacePoint& sp, const Scene& scene, const CpuFloatRow& albedo, int x) {
   const float a = albedo(x, 3);
   if (a < 0.f) return;
   if (sp.resolved.model != shading::SHADING_MODEL_GLTF &&
       remapsPerTexel(scene.material(sp.material)))
-    return;
-  sp.resolved = shading::withTextureSignal(sp.resolved, albedo.rgb(x), a);
+    sp.resolved = withBaseColorSignal(sp.resolved, albedo.rgb(x), a);
+  else
+    sp.resolved = shading::withTextureSignal(sp.resolved, albedo.rgb(x), a);
 }
 
 }  // namespace

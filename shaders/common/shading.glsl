@@ -399,7 +399,9 @@ SHADING_FN bool hasTransmission(ShadingMaterial m) {
 // with the colour texture applied through the producer's filter, and the coverage. The lecture's
 // model reads C (colour x texel); glTF's reads the base colour (baseColorFactor x texel) and
 // derives its diffuse and metal F0 from it (pbr.glsl), so that is what its signal holds: C of a
-// metal is 0 (gltfDiffuseColor), and a signal of C turned textured metals black.
+// metal is 0 (gltfDiffuseColor), and a signal of C turned textured metals black. (Lecture-model
+// materials re-mapped per texel from glTF inputs also carry the base colour: the producers and
+// shade decide that from the material, remapsPerTexel, which this struct does not record.)
 SHADING_FN vec3 textureSignalColor(ShadingMaterial m) {
   if (m.model == SHADING_MODEL_GLTF) return m.baseColor;
   return m.color;

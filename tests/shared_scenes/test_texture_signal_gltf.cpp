@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/gltf_pbr.h"
@@ -38,15 +39,18 @@ Recipe withFilter(Recipe r, const std::string& producer) {
 
 // The scene lit as `diptych render` lights it: these files have no light of their own (the
 // default sky and sun, engine/scene/default_lighting.h).
-Scene lit(const std::filesystem::path& file) {
+// With `model`, every material is shaded by it (forceShadingModel, as `--shading`).
+Scene lit(const std::filesystem::path& file, std::optional<ShadingModel> model = std::nullopt) {
   Scene scene = loadScene(file);
   applyLighting(scene, testing::cameraOf(scene), {});
+  if (model) forceShadingModel(scene, *model);
   return scene;
 }
 
 CpuImage frame(const std::filesystem::path& file, const Recipe& r,
-               const std::string& output = "shade.color") {
-  return testing::renderHybridFrame(lit(file), kW, kH, {output}, r)->output(output);
+               std::optional<ShadingModel> model = std::nullopt) {
+  const std::string output = "shade.color";
+  return testing::renderHybridFrame(lit(file, model), kW, kH, {output}, r)->output(output);
 }
 
 // Mean |a - b| and the mean of b over the RGB of the frame.
@@ -68,16 +72,42 @@ Difference difference(const CpuImage& a, const CpuImage& b) {
 
 // The built-in recipe's signal (one ray at the pixel centre, level 0) is shade's own lookup:
 // the frame with it is the frame without the albedo input, on a textured metal and on a material
-// with a metallic-roughness texture.
+// with a metallic-roughness texture, under glTF's model and under the lecture's (whose
+// coefficients shade maps from the signal's base colour there: withBaseColorSignal).
 TEST(TextureSignalGltf, PixelCentreSignalGivesShadesOwnFrame) {
   for (const char* file :
        {"texture-sampler-assetgen/Texture_Sampler_00.gltf", "damaged-helmet/DamagedHelmet.glb"}) {
     if (!std::filesystem::exists(shared(file))) GTEST_SKIP() << "no " << shared(file);
-    const Difference d = difference(frame(shared(file), defaultHybridRecipe()),
-                                    frame(shared(file), withoutAlbedo(defaultHybridRecipe())));
-    std::printf("%s: mean |built-in - own lookup| = %g (frame mean %g)\n", file, d.mean, d.level);
-    EXPECT_LT(d.mean, 1e-5 * d.level + 1e-7) << file;
+    for (const ShadingModel model : {ShadingModel::Gltf, ShadingModel::Lecture}) {
+      const Difference d =
+          difference(frame(shared(file), defaultHybridRecipe(), model),
+                     frame(shared(file), withoutAlbedo(defaultHybridRecipe()), model));
+      std::printf("%s (%s): mean |built-in - own lookup| = %g (frame mean %g)\n", file,
+                  model == ShadingModel::Gltf ? "gltf" : "lecture", d.mean, d.level);
+      EXPECT_LT(d.mean, 1e-5 * d.level + 1e-7) << file;
+    }
   }
+}
+
+// Under the lecture's model a raster filter's signal reaches the helmet's re-mapped coefficients
+// (it was ignored there: every texture-* variant was hybrid-exact's image), and GL and CPU shade
+// map it alike.
+TEST(TextureSignalGltf, LectureShadingTakesARasterFiltersBaseColourOnBothSides) {
+  const auto file = shared("damaged-helmet/DamagedHelmet.glb");
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+  const Recipe both =
+      testing::withShadeInBothDomains(withFilter(defaultHybridRecipe(), "texture_trilinear"));
+  const auto f =
+      testing::renderHybridFrame(lit(file, ShadingModel::Lecture), kW, kH, both.outputs, both);
+  const CpuImage own = frame(file, defaultHybridRecipe(), ShadingModel::Lecture);
+  for (const char* side : {"shade_gl.color", "shade_cpu.color"}) {
+    const Difference d = difference(f->output(side), own);
+    std::printf("DamagedHelmet (lecture) %s: mean |trilinear - built-in| = %g (frame mean %g)\n",
+                side, d.mean, d.level);
+    EXPECT_GT(d.mean, 1e-3 * d.level) << side;
+  }
+  const Difference parity = difference(f->output("shade_gl.color"), f->output("shade_cpu.color"));
+  EXPECT_LT(parity.mean, 1e-4 * parity.level) << "GL and CPU shade of the same signal";
 }
 
 // A raster filter's signal reaches the helmet's shading (trilinear reads the minified texture's

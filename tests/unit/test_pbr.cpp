@@ -206,7 +206,9 @@ TEST(PbrFilm, AbsurdThicknessOrIorStaysFiniteAtTheThickFilmLimit) {
         EXPECT_TRUE(std::isfinite(f[k]) && f[k] >= 0.f && f[k] <= 1.f)
             << "ior " << ior << " thickness " << thickness << " cos " << c << ": " << f[k];
       }
-      if (ior == 1.5f) EXPECT_EQ(f, limit) << c;
+      if (ior == 1.5f) {
+        EXPECT_EQ(f, limit) << c;
+      }
     }
   }
 }
