@@ -116,7 +116,7 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
 
 vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv) {
   // resolveMaterial's colour rule at level 0, without its other coefficients (gltfPbrToLecture's
-  // pow per hit): C, or for the glTF model the base colour.
+  // pow per hit): C, or the base colour for the glTF model and for re-mapped materials.
   const Texture* metallicRoughness = textureAt(scene, material.metallicRoughnessTexture);
   const vec4 mr = metallicRoughness ? sampleTexture(*metallicRoughness, uv) : vec4(1.f);
   const ColourAlpha c = colourAlpha(scene, material, uv, remapsPerTexel(material) ? &mr : nullptr,
