@@ -119,10 +119,10 @@ vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv) {
   // pow per hit): C, or the base colour for the glTF model and for re-mapped materials.
   const Texture* metallicRoughness = textureAt(scene, material.metallicRoughnessTexture);
   const vec4 mr = metallicRoughness ? sampleTexture(*metallicRoughness, uv) : vec4(1.f);
-  const ColourAlpha c = colourAlpha(scene, material, uv, remapsPerTexel(material) ? &mr : nullptr,
+  const bool remap = remapsPerTexel(material);
+  const ColourAlpha c = colourAlpha(scene, material, uv, remap ? &mr : nullptr,
                                     [&](const Texture& t) { return sampleTexture(t, uv); });
-  if (material.model != ShadingModel::Gltf && !remapsPerTexel(material))
-    return vec4(c.color, c.alpha);
+  if (material.model != ShadingModel::Gltf && !remap) return vec4(c.color, c.alpha);
   // resolveMaterial's baseColor: what the glTF model reads (textureSignalColor), and what a
   // re-mapped material's coefficients are mapped from (withBaseColorSignal).
   return vec4(material.checker ? c.texel : vec3(material.baseColorFactor) * c.texel, c.alpha);

@@ -199,8 +199,8 @@ TEST(PbrFilm, AbsurdThicknessOrIorStaysFiniteAtTheThickFilmLimit) {
   const vec3 f0(0.9f, 0.6f, 0.3f);
   for (float c : {0.1f, 0.6f, 1.f}) {
     const vec3 limit = pbrFilmFresnel(1.5f, f0, 1.0e5f, c);
-    for (const auto& [ior, thickness] : {std::pair{1.5f, 1.0e38f}, std::pair{1.0e36f, 400.f},
-                                         std::pair{3.0e38f, 3.0e38f}}) {
+    for (const auto& [ior, thickness] :
+         {std::pair{1.5f, 1.0e38f}, std::pair{1.0e36f, 400.f}, std::pair{3.0e38f, 3.0e38f}}) {
       const vec3 f = pbrFilmFresnel(ior, f0, thickness, c);
       for (int k = 0; k < 3; ++k) {
         EXPECT_TRUE(std::isfinite(f[k]) && f[k] >= 0.f && f[k] <= 1.f)
