@@ -1,9 +1,9 @@
 #pragma once
 // glTF metallic-roughness parameters mapped onto the lecture's coefficients (docs/scene-format.md,
-// "glTF material mapping"; docs/materials.md). One function, used by the glTF loader for the
-// material's constants and by the CPU surface code per hit where remapsPerTexel (GL:
-// scene_shading.glsl sceneApplyGltfPbr), so both give the same coefficients for the same inputs.
-#include <algorithm>
+// "glTF material mapping"; docs/materials.md): shaders/common/gltf_lecture.glsl compiled as C++,
+// the one definition the loaders' constants, the CPU surface code per texel and the GL scene code
+// (gl/scene_shading.glsl, gl_shade.frag) all run, so every side gives the same coefficients for
+// the same inputs. Plus the rule for when a material is re-mapped per texel, and --shading.
 #include <optional>
 #include <string>
 
@@ -12,22 +12,22 @@
 
 namespace diptych {
 
-struct LectureCoefficients {
-  vec3 color{0.f};  // C
-  float kd = 1.f, ks = 0.f, exponent = 1.f;
-  vec3 specularColor{1.f};
-  float kps = 0.f;
-  vec3 mirrorColor{1.f};
-  float kt = 0.f;
-  vec3 transmitColor{1.f};
-};
-
-// The diffuse colour C = base (1 - metallic), metallic clamped to [0, 1]: metals have no diffuse
-// term (glTF spec appendix B). gltfPbrToLecture's C, and the one the CPU surface code re-maps a
-// textured C to (engine/rt/surface_point.cpp). Inline: it runs per hit there.
-inline vec3 gltfDiffuseColor(vec3 base, float metallic) {
-  return base * (1.f - std::clamp(metallic, 0.f, 1.f));
-}
+// The subset prelude of engine/shading/shading.h, for this file alone: GLM's types and built-ins
+// by name, definitions inline (they run per hit in the CPU surface code).
+namespace gltf_lecture {
+using glm::clamp;
+using glm::max;
+using glm::mix;
+using glm::vec3;
+#define in
+#define SHADING_FN inline
+#include "shaders/common/gltf_lecture.glsl"
+#undef SHADING_FN
+#undef in
+}  // namespace gltf_lecture
+using gltf_lecture::gltfDiffuseColor;
+using gltf_lecture::gltfPbrToLecture;
+using gltf_lecture::LectureCoefficients;
 
 // Whether the surface code maps the material's glTF inputs to lecture coefficients per texel
 // (gltfPbrToLecture at each hit, both sides: engine/rt/surface_point.cpp, scene_shading.glsl)
@@ -42,11 +42,6 @@ inline bool remapsPerTexel(const Material& m) {
          (m.model == ShadingModel::Lecture && m.fromGltfPbr && !m.checker && m.colorTexture >= 0 &&
           (m.metallicFactor > 0.f || m.transmissionFactor > 0.f));
 }
-
-// base: linear base colour (alpha ignored); metallic, roughness, transmission in [0, 1] (clamped
-// here); ior of the dielectric.
-LectureCoefficients gltfPbrToLecture(vec3 base, float metallic, float roughness, float transmission,
-                                     float ior);
 
 // The reverse, for `--shading gltf` on a lecture material: fills the metallic-roughness inputs
 // (baseColorFactor, metallicFactor, roughnessFactor, transmissionFactor) from the lecture's

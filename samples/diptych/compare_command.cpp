@@ -488,12 +488,20 @@ void runCompare(const CompareOptions& o) {
            "reference and variants alike: per pass, median of {} frames after {} warm-up frames "
            "(steady_clock); total = sum of per-pass medians{}. One-time costs (context, BVH "
            "build, scene upload; each recipe's first frame) are reported apart, never inside a "
-           "frame",
+           "frame{}",
            o.frames, o.warmup,
            o.rounds > 1 ? fmt::format("; {} timing rounds (reference, then every variant, in "
                                       "turn): medians over rounds, speed-ups paired per round",
                                       o.rounds)
-                        : std::string())}};
+                        : std::string(),
+           // runMeasured repeats a frame that recorded one-time work, but a driver's first-use
+           // work (llvmpipe compiles programs at their first draw) is recorded nowhere: without
+           // warm-up the first frame is a sample, and with fewer than 3 frames it moves the median.
+           o.warmup == 0 && o.frames < 3
+               ? "; NO WARM-UP: the first frame's unrecorded first-use work (a GL driver "
+                 "compiling programs at their first draw) is inside these medians, so the times "
+                 "are not steady-state figures"
+               : "")}};
   std::vector<std::string> stepFiles;
   if (sdfSteps)
     header["sdf_steps"] =

@@ -4,6 +4,7 @@
 #include "common/bindings.glsl"
 #include "gl/scene_textures.glsl"
 #include "common/bump.glsl"
+#include "common/gltf_lecture.glsl"
 struct GpuMaterial {
   vec4 colorKa;         // C, k_a
   vec4 kdKsExpKps;      // k_d, k_s, e, k_ps
@@ -45,26 +46,20 @@ uniform int uLightCount;  // sceneLights has a dummy entry when the scene has no
 layout(binding = UNIT_SCENE_ALPHA_MASKS) uniform sampler2DArray uSceneAlphaMasks;
 
 // --- textures: the material at a texel, as engine/rt/surface_point.cpp resolveMaterial ---
-// Rec. 709 luminance and the glTF metallic-roughness mapping of engine/scene/gltf_pbr.cpp.
-float sceneLuminance(vec3 c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
-
+// The glTF metallic-roughness mapping (common/gltf_lecture.glsl, the C++ loaders' and
+// resolveMaterial's too) written into s's lecture coefficients.
 void sceneApplyGltfPbr(inout ShadingMaterial s, vec3 base, float metallic, float roughness,
                        float transmission) {
-  metallic = clamp(metallic, 0.0, 1.0);
-  roughness = clamp(roughness, 0.0, 1.0);
-  transmission = clamp(transmission, 0.0, 1.0);
-  float dielectricF0 = pow((s.ior - 1.0) / (s.ior + 1.0), 2.0);
-  vec3 f0 = mix(vec3(dielectricF0), base, metallic);
-  s.color = base * (1.0 - metallic);
-  s.kd = 1.0 - transmission;
-  s.ks = sceneLuminance(f0);
-  s.specularColor = s.ks > 0.0 ? f0 / s.ks : vec3(1.0);
-  float alpha = max(roughness * roughness, 0.01);
-  s.exponent = max(2.0 / (alpha * alpha) - 2.0, 1.0);
-  s.kps = s.ks * (1.0 - roughness);
-  s.mirrorColor = s.specularColor;
-  s.kt = transmission * (1.0 - metallic);
-  s.transmitColor = base;
+  LectureCoefficients k = gltfPbrToLecture(base, metallic, roughness, transmission, s.ior);
+  s.color = k.color;
+  s.kd = k.kd;
+  s.ks = k.ks;
+  s.exponent = k.exponent;
+  s.specularColor = k.specularColor;
+  s.kps = k.kps;
+  s.mirrorColor = k.mirrorColor;
+  s.kt = k.kt;
+  s.transmitColor = k.transmitColor;
 }
 
 // A texture of the material at uv: level 0 by its magnification filter when uvLod is below

@@ -29,6 +29,11 @@ string(FIND "${LAST_STDOUT}" "(cached)" pos)
 if(pos EQUAL -1)
   message(FATAL_ERROR "the second run did not reuse the cached reference:\n${LAST_STDOUT}")
 endif()
+# Without warm-up, one frame: the method line says its times hold the first frame's first-use work.
+string(FIND "${LAST_STDOUT}" "NO WARM-UP" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "compare --warmup 0 --frames 1 does not say its medians are unsteady:\n${LAST_STDOUT}")
+endif()
 
 # Bad compare input: one error line, non-zero exit.
 expect_failure(compare-unknown-variant EXPECT "--variants" "nonsense" ARGS compare --variants nonsense)

@@ -79,6 +79,13 @@ def main():
             fail("one-time cost %s missing: %s" % (key, one_time))
     if "reference and variants alike" not in results["method"]:
         fail("the method must say the reference is timed like the variants: " + results["method"])
+    # Without warm-up and with fewer than 3 frames the medians hold the first frame's driver
+    # compilation: the method must say so, and only then.
+    unsteady = results["warmup"] == 0 and results["frames"] < 3
+    if unsteady != ("NO WARM-UP" in results["method"]):
+        fail("warm-up %d, %d frames: the method %s the first frame's first-use work: %s" % (
+            results["warmup"], results["frames"], "must name" if unsteady else "must not name",
+            results["method"]))
     for v in results["variants"]:
         if not v.get("first_frame_ms", -1) >= 0:
             fail("%s lacks first_frame_ms" % v["name"])

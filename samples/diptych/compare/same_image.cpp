@@ -29,14 +29,17 @@ bool atMostOneTransparentMesh(const Scene& scene) {
   return meshes.size() <= 1;
 }
 
-// Every colour texture's glTF sampler asks for these filters: texture_sampler (each texture's
-// own sampler) then reads as the producer that imposes them.
-// At least one colour texture is needed (a scene without one has nothing to filter); a checker
-// replaces the colour texture.
+// Every colour texture that the scene's instances show has a glTF sampler asking for these
+// filters: texture_sampler (each texture's own sampler) then reads as the producer that imposes
+// them. At least one colour texture is needed (a scene without one has nothing to filter); a
+// checker replaces the colour texture; a material no instance uses shows nothing.
 template <FilterMode kMin, FilterMode kMag>
 bool colourSamplersAre(const Scene& scene) {
+  std::set<int> shown;
+  for (const Instance& i : scene.instances) shown.insert(scene.meshes[i.mesh].material);
   int textured = 0;
-  for (const Material& m : scene.materials) {
+  for (const int index : shown) {
+    const Material& m = scene.material(index);
     if (m.checker || m.colorTexture < 0 || m.colorTexture >= int(scene.textures.size())) continue;
     const Texture& t = scene.textures[std::size_t(m.colorTexture)];
     if (t.minFilter != kMin || t.magFilter != kMag) return false;
