@@ -53,8 +53,9 @@ void main() {
               (int(g.modelTransSpec.w) & 8) != 0;
   vec4 result = vec4(base ? g.baseMetallic.xyz : g.colorKa.xyz, g.transmitAlpha.w);
   int tex = int(g.texColorEmitMrAo.x);
-  if (g.emissionChecker.w > 0.5) {
-    result.xyz = textureSignalColor(sceneMaterial(material, uv));  // procedural: point-sampled
+  if (g.emissionChecker.w > 0.5) {  // procedural: point-sampled
+    ShadingMaterial checkered = sceneMaterial(material, uv);
+    result.xyz = base ? checkered.baseColor : checkered.color;
   } else if (sceneTextureValid(tex)) {
     // The footprint: neighbour pixel rays meet the triangle's plane (ray differentials).
     vec3 e1 = p1 - p0, e2 = p2 - p0;

@@ -34,7 +34,8 @@ struct ColourAlpha {
 // texel (a checker's colour replaces it, and the colour texture with it), alpha x texel.a; where
 // the material is re-mapped per texel (remapsPerTexel) and `mr` is its metallic-roughness texel
 // (1 without that texture), C becomes the glTF diffuse colour of the base colour at this texel
-// (gltfDiffuseColor, the loader's mapping: engine/scene/gltf_pbr.h).
+// (baseColorFactor x texel, or the checker's colour; gltfDiffuseColor, the loader's mapping:
+// engine/scene/gltf_pbr.h).
 // sample(texture) reads a texture at the point, at the caller's level. Inline: it runs per hit.
 template <class Sample>
 inline ColourAlpha colourAlpha(const Scene& scene, const Material& material, vec2 uv,
@@ -50,7 +51,8 @@ inline ColourAlpha colourAlpha(const Scene& scene, const Material& material, vec
     c.alpha *= texel.w;
   }
   if (mr) {
-    c.gltfBase = vec3(material.baseColorFactor) * textured;
+    // A checker replaces the base colour, as resolveMaterial's baseColor (the glTF model's).
+    c.gltfBase = material.checker ? c.texel : vec3(material.baseColorFactor) * textured;
     c.color = gltfDiffuseColor(c.gltfBase, material.metallicFactor * mr->z);
   }
   return c;

@@ -33,13 +33,13 @@ using gltf_lecture::LectureCoefficients;
 // (gltfPbrToLecture at each hit, both sides: engine/rt/surface_point.cpp, scene_shading.glsl)
 // rather than using the loader's constants: where a metallic-roughness texture moves metallic and
 // roughness (the glTF model reads those too), and, for the lecture's model, where a colour
-// texture moves the base colour of a glTF material that is partly metal or transmissive. A
-// metal's base colour is its specular colour and a transmissive one's its M_T, which
-// C = colour x texel does not carry (C is 0 for a metal): without the re-mapping
-// `--shading lecture` showed a textured metal untextured.
+// texture (or a checker, which replaces it as the base colour) moves the base colour of a glTF
+// material that is partly metal or transmissive. A metal's base colour is its specular colour
+// and a transmissive one's its M_T, which C = colour x texel does not carry (C is 0 for a
+// metal): without the re-mapping `--shading lecture` showed a textured metal untextured.
 inline bool remapsPerTexel(const Material& m) {
   return m.metallicRoughnessTexture >= 0 ||
-         (m.model == ShadingModel::Lecture && m.fromGltfPbr && !m.checker && m.colorTexture >= 0 &&
+         (m.model == ShadingModel::Lecture && m.fromGltfPbr && (m.checker || m.colorTexture >= 0) &&
           (m.metallicFactor > 0.f || m.transmissionFactor > 0.f));
 }
 

@@ -140,17 +140,24 @@ ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
 #if DIPTYCH_SCENE_TEXTURES
   int emissionTex = int(g.texColorEmitMrAo.y);
   if (sceneTextureValid(emissionTex)) s.emission *= sceneMaterialTexture(emissionTex, uv, uvLod).xyz;
+#endif
+#if DIPTYCH_SCENE_CHECKER || DIPTYCH_SCENE_TEXTURES
   // remapsPerTexel (gate 8): the glTF inputs at this texel (a metallic-roughness texel, 1
-  // without that texture) through the loader's mapping, as resolveMaterial.
+  // without that texture; the base colour factor times the colour texel, or the checker's
+  // colour, which replaces it) through the loader's mapping, as resolveMaterial.
   if ((int(g.modelTransSpec.w) & 8) != 0) {
     vec4 mr = sceneMaterialTexture(int(g.texColorEmitMrAo.z), uv, uvLod);
     vec3 base = sceneTextureValid(colourTex) ? sceneMaterialTexture(colourTex, uv, uvLod).xyz : vec3(1.0);
-    sceneApplyGltfPbr(s, g.baseFactorMetallic.xyz * base, g.baseFactorMetallic.w * mr.z,
-                      g.roughnessFactor.x * mr.y, g.texNormalScales.w);
+    if (DIPTYCH_SCENE_CHECKER == 0 || g.emissionChecker.w <= 0.5) base *= g.baseFactorMetallic.xyz;
+    else base = s.baseColor;  // the checker's colour (above)
+    sceneApplyGltfPbr(s, base, g.baseFactorMetallic.w * mr.z, g.roughnessFactor.x * mr.y,
+                      g.texNormalScales.w);
     // The glTF model's own inputs at this texel (resolveMaterial does the same).
     s.metallic = clamp(g.baseFactorMetallic.w * mr.z, 0.0, 1.0);
     s.roughness = clamp(g.roughnessFactor.x * mr.y, 0.0, 1.0);
   }
+#endif
+#if DIPTYCH_SCENE_TEXTURES
   int aoTex = int(g.texColorEmitMrAo.w);
   if (sceneTextureValid(aoTex)) {
     float ao = sceneMaterialTexture(aoTex, uv, uvLod).x;

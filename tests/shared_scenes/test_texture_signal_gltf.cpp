@@ -185,5 +185,70 @@ TEST(TextureSignalGltf, LectureShadingShowsAMetalsColourTextureOnBothSides) {
   EXPECT_LT(parity.mean, 1e-4 * parity.level) << "GL and CPU shade of the re-mapped metal";
 }
 
+// The same with a checker in place of the colour texture (a JSON glTF-model material's
+// `checker`): the checker's colour is the base colour there (resolveMaterial's baseColor), so
+// under the lecture's model the metal is re-mapped from it per texel on both sides, and with a
+// texture_filtering producer on the GL side the signal carries it (texture_filter.comp). Before,
+// remapsPerTexel left checkers out and C = checker x 0 kept the metal untextured: its frame was
+// the frame of a checker of one colour.
+TEST(TextureSignalGltf, LectureShadingShowsAMetalsCheckerOnBothSides) {
+  const auto file = shared("texture-sampler-assetgen/Texture_Sampler_00.gltf");
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
+  const auto lecture = [&](bool twoColours, const Recipe& recipe) {
+    Scene scene = lit(file);
+    forceShadingModel(scene, ShadingModel::Lecture);
+    // A copy of the model with its colour texture, far behind the model (hidden by it): the
+    // texture_filtering slot needs a shown colour-textured material, else it is culled and no
+    // producer runs. The camera stays the model's.
+    scene.camera = testing::cameraOf(scene);
+    scene.hasCamera = true;
+    const vec3 away = 1e3f * glm::normalize(scene.camera.target - scene.camera.position);
+    const std::size_t meshes = scene.meshes.size(), instances = scene.instances.size();
+    for (std::size_t i = 0; i < meshes; ++i) {
+      scene.materials.push_back(scene.material(scene.meshes[i].material));
+      scene.meshes.push_back(scene.meshes[i]);
+      scene.meshes.back().material = int(scene.materials.size()) - 1;
+    }
+    for (std::size_t i = 0; i < instances; ++i) {
+      Instance copy = scene.instances[i];
+      copy.mesh += int(meshes);
+      copy.transform = glm::translate(mat4(1.f), away) * copy.transform;
+      scene.instances.push_back(copy);
+    }
+    for (std::size_t i = 0; i < meshes; ++i) {
+      Material& m = scene.materials[std::size_t(scene.meshes[i].material)];
+      EXPECT_GT(m.metallicFactor, 0.f) << m.name;
+      m.colorTexture = -1;
+      m.checker = Checker{vec3(0.9f, 0.2f, 0.1f),
+                          twoColours ? vec3(0.1f, 0.3f, 0.9f) : vec3(0.9f, 0.2f, 0.1f), 4.f};
+      EXPECT_TRUE(remapsPerTexel(m)) << m.name;
+    }
+    return testing::renderHybridFrame(std::move(scene), kW, kH, recipe.outputs, recipe);
+  };
+  const Recipe both = testing::withShadeInBothDomains(defaultHybridRecipe());
+  const auto checkered = lecture(true, both), flat = lecture(false, both);
+  for (const char* side : {"shade_gl.color", "shade_cpu.color"}) {
+    const Difference d = difference(checkered->output(side), flat->output(side));
+    std::printf("%s: mean |two colours - one colour| = %g (frame mean %g)\n", side, d.mean,
+                d.level);
+    EXPECT_GT(d.mean, 0.05 * d.level) << side;
+  }
+  const Difference parity =
+      difference(checkered->output("shade_gl.color"), checkered->output("shade_cpu.color"));
+  EXPECT_LT(parity.mean, 1e-4 * parity.level) << "GL and CPU shade of the re-mapped metal";
+  // A GL texture_filtering producer's signal (point-sampled for a checker: texture_filter.comp)
+  // is the checker's base colour too, which shade maps as its own lookup does.
+  const Recipe filtered =
+      testing::withShadeInBothDomains(withFilter(defaultHybridRecipe(), "texture_trilinear"));
+  const auto viaSignal = lecture(true, filtered);
+  ASSERT_TRUE(viaSignal->output("shade_gl.color").desc.width == kW);
+  for (const char* side : {"shade_gl.color", "shade_cpu.color"}) {
+    const Difference d = difference(viaSignal->output(side), checkered->output(side));
+    std::printf("%s with texture_trilinear: mean difference %g (frame mean %g)\n", side, d.mean,
+                d.level);
+    EXPECT_LT(d.mean, 1e-4 * d.level) << side;
+  }
+}
+
 }  // namespace
 }  // namespace diptych
