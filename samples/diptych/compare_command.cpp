@@ -7,6 +7,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
@@ -70,6 +71,18 @@ std::vector<double> pairedRatios(const std::vector<double>& referenceMs,
   for (std::size_t r = 0; r < totalMs.size() && r < referenceMs.size(); ++r)
     if (totalMs[r] > 0) ratios.push_back(referenceMs[r] / totalMs[r]);
   return ratios;
+}
+
+// The all-exact frame among the variants: the first with the built-in recipe, no slot override
+// and the scene as authored (the default set's `hybrid-exact`), timed on its own.
+std::optional<std::size_t> exactVariant(const std::vector<Variant>& variants,
+                                        const std::vector<int>& sameAs) {
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    const Variant& v = variants[i];
+    if (v.recipeFile.empty() && v.slots.empty() && v.tessellation == 0 && v.surfaceDetail.empty())
+      return sameAs[i] < 0 ? std::optional<std::size_t>(i) : std::nullopt;
+  }
+  return std::nullopt;
 }
 
 nlohmann::json culledPasses(const CompiledGraph& graph) {
@@ -444,13 +457,27 @@ void runCompare(const CompareOptions& o) {
       v["speedup_vs_reference"] = ratios.empty() ? 0.0 : summarize(ratios).median;
     }
   }
+  // What a technique saves against the all-exact frame whose slot it replaces, in the same
+  // round: exact / variant per round (the time axis of "how wrong is the trick and what does it
+  // save"; the reference is a different renderer, whose speed-up mixes in the G-buffer's cost).
+  if (const auto exact = exactVariant(variants, sameAs)) {
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      if (sameAs[i] >= 0 || i == *exact) continue;
+      const std::vector<double> ratios = pairedRatios(rounds[*exact].totalMs, rounds[i].totalMs);
+      if (ratios.empty()) continue;
+      results[i].result["exact_variant"] = variants[*exact].name;
+      results[i].result["speedup_vs_exact"] = summarize(ratios).median;
+      results[i].result["speedup_vs_exact_rounds"] = ratios;
+    }
+  }
   // A same-frame variant's timings are those of the variant whose frame it is (said so by
   // "timings_from"); it is no point of its own on the Pareto front or the plot.
   for (std::size_t i = 0; i < results.size(); ++i) {
     if (sameAs[i] < 0) continue;
     const nlohmann::json& same = results[std::size_t(sameAs[i])].result;
     for (const char* key : {"total_ms", "total_ms_rounds", "pass_ms", "speedup_vs_reference",
-                            "speedup_rounds", "first_frame_ms", "gl_sync", "rays"})
+                            "speedup_rounds", "exact_variant", "speedup_vs_exact",
+                            "speedup_vs_exact_rounds", "first_frame_ms", "gl_sync", "rays"})
       if (same.contains(key)) results[i].result[key] = same[key];
   }
 

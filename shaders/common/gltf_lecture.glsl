@@ -44,8 +44,8 @@ SHADING_FN LectureCoefficients gltfPbrToLecture(vec3 base, float metallic, float
   transmission = clamp(transmission, 0.0f, 1.0f);
   // Dielectric reflectance at normal incidence from the IOR, F0 = ((n-1)/(n+1))^2 (0.04 for the
   // default 1.5); metals reflect their base colour (glTF spec appendix B). Squared by a product:
-  // GLSL's pow is undefined for a negative base, as (n-1)/(n+1) is for n < 1 (KHR_materials_ior's
-  // n = 0 gives F0 = 1).
+  // GLSL's pow is undefined for a negative base, and (n-1)/(n+1) is negative for an IOR below 1
+  // (which validation accepts).
   float f = (ior - 1.0f) / (ior + 1.0f);
   float dielectricF0 = f * f;
   vec3 f0 = mix(vec3(dielectricF0), base, metallic);

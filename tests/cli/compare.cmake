@@ -9,7 +9,7 @@ file(WRITE "${WORK_DIR}/variants.json" "{\"variants\": [
 expect_success(compare ARGS compare "${SOURCE_DIR}/samples/scenes/shadow-sphere.json" --variants variants.json
                --size 192x144 --frames 1 --warmup 1 --out cmp
                FILES cmp/results.json cmp/results.csv cmp/report.html cmp/plot.svg)
-foreach(expected "reference-self" "sm-4096" "reference whitted")
+foreach(expected "reference-self" "sm-4096" "reference whitted" "vs exact")
   string(FIND "${LAST_STDOUT}" "${expected}" pos)
   if(pos EQUAL -1)
     message(FATAL_ERROR "compare summary lacks '${expected}':\n${LAST_STDOUT}")

@@ -98,10 +98,26 @@ def main():
         if not variants[name]["one_time_ms"].get("shadow_map build", -1) > 0:
             fail("%s: its shadow-map build is not among its one-time costs: %s"
                  % (name, variants[name]["one_time_ms"]))
+    # What each technique saves against the all-exact frame of the run (hybrid-exact: the built-in
+    # recipe, no override): exact / variant in the same round, absent for hybrid-exact itself.
+    if "speedup_vs_exact" in variants["hybrid-exact"]:
+        fail("hybrid-exact has a speed-up against itself")
+    for name in ["sm-256", "sm-4096", "geometry-16", "reference-self"]:
+        v = variants[name]
+        if v.get("exact_variant") != "hybrid-exact":
+            fail("%s: exact_variant %r" % (name, v.get("exact_variant")))
+        expected_ratio = variants["hybrid-exact"]["total_ms"] / v["total_ms"]
+        if abs(v["speedup_vs_exact"] - expected_ratio) > 1e-9 * expected_ratio:
+            fail("%s: speedup_vs_exact %r, exact / variant %r" % (name, v["speedup_vs_exact"],
+                                                                  expected_ratio))
     with open(os.path.join(out, "results.csv")) as f:
         rows = list(csv.DictReader(f))
     if sorted(r["variant"] for r in rows) != sorted(expected) or "flip_mean" not in rows[0]:
         fail("results.csv rows/columns are wrong")
+    by_name = {r["variant"]: r for r in rows}
+    if by_name["hybrid-exact"]["speedup_vs_exact"] != "" or \
+            abs(float(by_name["sm-256"]["speedup_vs_exact"]) - variants["sm-256"]["speedup_vs_exact"]) > 1e-6:
+        fail("results.csv speedup_vs_exact: %r" % {n: r["speedup_vs_exact"] for n, r in by_name.items()})
     print("check_compare: ok (sm-256 flip %.4g > sm-4096 flip %.4g; exact relmse %.3g)"
           % (variants["sm-256"]["metrics"]["flip_mean"], variants["sm-4096"]["metrics"]["flip_mean"], exact["relmse"]))
 

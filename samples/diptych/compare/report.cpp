@@ -79,6 +79,18 @@ std::string speedupText(const nlohmann::json& v) {
   return text;
 }
 
+// Against the all-exact frame of the same run (exact / variant, paired per round): "1.15x" with
+// the rounds' range as speedupText; "-" for that frame itself or a run without it.
+std::string exactSpeedupText(const nlohmann::json& v) {
+  if (!v.contains("speedup_vs_exact")) return "-";
+  std::string text = fmt::format("{:.2f}x", v["speedup_vs_exact"].get<double>());
+  if (const auto r = v.value("speedup_vs_exact_rounds", nlohmann::json::array()); r.size() > 1) {
+    const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+    text += fmt::format(" ({:.2f}-{:.2f})", lo->get<double>(), hi->get<double>());
+  }
+  return text;
+}
+
 // A variant compiled to an earlier one's frame (same_frame.h): "same frame as NAME (reason)".
 std::string sameFrameText(const nlohmann::json& v) {
   return fmt::format("same frame as {} ({})", v["same_frame_as"].get<std::string>(),
@@ -106,8 +118,8 @@ const char* kOneRoundNote =
 void printSummaryTable(const std::vector<ReportVariant>& variants, const std::string& metric,
                        int rounds) {
   const int width = rounds > 1 ? 20 : 9;  // "1.04x (0.94-1.19)"
-  std::printf("%-36s %10s %*s %10s %10s %8s %s\n", "variant", "total ms", width, "speedup", "rmse",
-              metric.c_str(), "ssim", "pareto");
+  std::printf("%-36s %10s %*s %*s %10s %10s %8s %s\n", "variant", "total ms", width, "speedup",
+              width, "vs exact", "rmse", metric.c_str(), "ssim", "pareto");
   for (const ReportVariant& r : variants) {
     const nlohmann::json& v = r.result;
     if (v.contains("same_frame_as")) {
@@ -116,9 +128,10 @@ void printSummaryTable(const std::vector<ReportVariant>& variants, const std::st
     }
     const auto& m = v["metrics"];
     std::printf(
-        "%-36s %10.2f %*s %10.4g %10.4g %8.4f %-6s%s\n", r.name.c_str(),
-        v["total_ms"].get<double>(), width, speedupText(v).c_str(), m.value("rmse", 0.0),
-        m.value(metric, 0.0), m.value("ssim", 0.0), v["pareto"].get<bool>() ? "*" : "",
+        "%-36s %10.2f %*s %*s %10.4g %10.4g %8.4f %-6s%s\n", r.name.c_str(),
+        v["total_ms"].get<double>(), width, speedupText(v).c_str(), width,
+        exactSpeedupText(v).c_str(), m.value("rmse", 0.0), m.value(metric, 0.0),
+        m.value("ssim", 0.0), v["pareto"].get<bool>() ? "*" : "",
         v.contains("same_image_as") ? (" = " + v["same_image_as"].get<std::string>()).c_str() : "");
   }
   // Below the table, why the rows marked "= NAME" show NAME's error: their pixels are its.
@@ -197,13 +210,16 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
         passNames.push_back(k);
   }
   std::ostringstream csv;
-  csv << "variant,same_frame_as,same_image_as,total_ms,rays,pareto,one_time_ms";
+  csv << "variant,same_frame_as,same_image_as,total_ms,speedup_vs_reference,speedup_vs_exact,rays,"
+         "pareto,one_time_ms";
   for (const auto& m : metricNames) csv << "," << m;
   for (const auto& p : passNames) csv << ",ms:" << p;
   csv << "\n";
   for (const auto& v : results["variants"]) {
     csv << v["name"].get<std::string>() << "," << v.value("same_frame_as", "") << ","
         << v.value("same_image_as", "") << "," << v["total_ms"].get<double>() << ","
+        << v["speedup_vs_reference"].get<double>() << ","
+        << (v.contains("speedup_vs_exact") ? v["speedup_vs_exact"].dump() : "") << ","
         << v["rays"].get<double>() << "," << (v["pareto"].get<bool>() ? 1 : 0) << ",";
     csv << oneTimeCosts(v.value("one_time_ms", nlohmann::json::object()))
                .totalMs;  // the sum (results.json lists them)
@@ -251,7 +267,9 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
       "plot\">\n";
   page +=
       "<h2>Results</h2>\n<table id=\"results\"><tr><th>variant</th><th>total "
-      "ms</th><th>speed-up</th><th>one-time ms</th><th>rays</th>";
+      "ms</th><th title=\"reference / variant\">speed-up</th><th title=\"the all-exact frame of "
+      "this run / variant: what the technique saves against the exact producer it "
+      "replaces\">vs exact</th><th>one-time ms</th><th>rays</th>";
   const std::vector<std::string> shown = {"rmse", "relmse",    "psnr",
                                           "ssim", "flip_mean", "flip_p95"};
   for (const auto& m : shown) page += "<th>" + m + "</th>";
@@ -284,10 +302,10 @@ std::vector<std::string> writeReport(const std::filesystem::path& dir, const nlo
     // A same-frame variant has no time of its own: the row says whose frame it is instead.
     const std::string timing =
         v.contains("same_frame_as")
-            ? fmt::format("<td colspan=\"2\" class=\"same-frame\">{}</td>",
+            ? fmt::format("<td colspan=\"3\" class=\"same-frame\">{}</td>",
                           htmlEscape(sameFrameText(v)))
-            : fmt::format("<td>{:.2f}{}</td><td>{}</td>", v["total_ms"].get<double>(), spread,
-                          htmlEscape(speedupText(v)));
+            : fmt::format("<td>{:.2f}{}</td><td>{}</td><td>{}</td>", v["total_ms"].get<double>(),
+                          spread, htmlEscape(speedupText(v)), htmlEscape(exactSpeedupText(v)));
     page += fmt::format("<tr class=\"{}\"><td>{}</td>{}<td title=\"{}\">{:.1f}</td><td>{:.0f}</td>",
                         v["pareto"].get<bool>() ? "pareto" : "",
                         htmlEscape(v["name"].get<std::string>()), timing, htmlEscape(oneTime.parts),
