@@ -2,10 +2,13 @@
 
 #include <string>
 
+#include "engine/scene/gltf_pbr.h"
+
 namespace diptych::gl {
 
 std::vector<ShaderDefine> sceneShaderDefines(const Scene& scene) {
   bool textures = false, normalMaps = false, bump = false, checker = false, film = false;
+  bool remap = false;
   int model = -2;  // none seen yet
   auto visit = [&](const Material& m) {
     // As packMaterial: a checker replaces the colour texture.
@@ -14,6 +17,7 @@ std::vector<ShaderDefine> sceneShaderDefines(const Scene& scene) {
     normalMaps |= m.normalTexture >= 0;
     bump |= m.bump.has_value();
     checker |= m.checker.has_value();
+    remap |= remapsPerTexel(m);  // gate 8 of scene_shading.glsl sceneMaterialLod
     // A film shades only under the glTF model (pbr.glsl), and only with a strength above 0;
     // its textures are then sampled (scene_shading.glsl sceneMaterialLod).
     const bool filmed = m.model == ShadingModel::Gltf && m.iridescenceFactor > 0.f;
@@ -39,6 +43,7 @@ std::vector<ShaderDefine> sceneShaderDefines(const Scene& scene) {
           {"DIPTYCH_SCENE_NORMAL_MAPS", flag(normalMaps)},
           {"DIPTYCH_SCENE_BUMP", flag(bump)},
           {"DIPTYCH_SCENE_CHECKER", flag(checker)},
+          {"DIPTYCH_SCENE_REMAP", flag(remap)},
           {"DIPTYCH_SCENE_IRIDESCENCE", flag(film)},
           {"DIPTYCH_SCENE_MODEL", std::to_string(model)},
           {"DIPTYCH_SCENE_LIGHT_TYPE", std::to_string(lightType)}};

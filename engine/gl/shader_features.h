@@ -10,7 +10,8 @@
 
 namespace diptych::gl {
 
-// DIPTYCH_SCENE_FEATURES plus DIPTYCH_SCENE_TEXTURES, _NORMAL_MAPS, _CHECKER, _IRIDESCENCE (0/1),
+// DIPTYCH_SCENE_FEATURES plus DIPTYCH_SCENE_TEXTURES, _NORMAL_MAPS, _CHECKER, _REMAP (a material
+// re-mapped per texel: remapsPerTexel), _IRIDESCENCE (0/1),
 // _MODEL and _LIGHT_TYPE (the one value every shaded material / light has, else -1). The default
 // material (entry 0 of the GL material buffer) counts only where a mesh has no material of its own.
 std::vector<ShaderDefine> sceneShaderDefines(const Scene& scene);

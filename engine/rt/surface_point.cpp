@@ -27,7 +27,8 @@ struct ColourAlpha {
   vec3 color{1.f};  // C
   float alpha = 1.f;
   vec3 texel{1.f};     // the colour texture's rgb, or the checker's colour; 1 without either
-  vec3 gltfBase{1.f};  // the glTF base colour, baseColorFactor x the colour texture's rgb
+  vec3 gltfBase{1.f};  // the glTF base colour: baseColorFactor x the colour texture's rgb, or
+                       // the checker's colour (set where re-mapped)
 };
 
 // The colour/alpha rule, written once for resolveMaterial and resolvedColorAlpha: C = colour x
@@ -117,8 +118,8 @@ shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& mat
 }
 
 vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv) {
-  // resolveMaterial's colour rule at level 0, without its other coefficients (gltfPbrToLecture's
-  // pow per hit): C, or the base colour for the glTF model and for re-mapped materials.
+  // resolveMaterial's colour rule at level 0, without its other coefficients (the lecture mapping
+  // per hit): C, or the base colour for the glTF model and for re-mapped materials.
   const Texture* metallicRoughness = textureAt(scene, material.metallicRoughnessTexture);
   const vec4 mr = metallicRoughness ? sampleTexture(*metallicRoughness, uv) : vec4(1.f);
   const bool remap = remapsPerTexel(material);

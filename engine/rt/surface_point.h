@@ -70,10 +70,10 @@ Ray spawnRay(const SurfacePoint& p, const vec3& direction);
 // The material's parameters at uv: C = color * colorTexture (or the checker, which replaces C),
 // alpha = alpha * colorTexture.a, M_E = emission * emissionTexture.
 // glTF materials re-mapped per texel (remapsPerTexel: a metallicRoughnessTexture, or under the
-// lecture's model a colour texture on a partly metal or transmissive material) take the lecture
-// coefficients of the texel's base colour, metallic and roughness; an occlusionTexture scales k_a
-// (the lecture's ambient, glTF's indirect light); the iridescence textures scale the film's
-// strength (R) and place its thickness (G). uvLod: log2 of the footprint in uv units
+// lecture's model a colour texture or a checker on a partly metal or transmissive material) take
+// the lecture coefficients of the texel's base colour, metallic and roughness; an occlusionTexture
+// scales k_a (the lecture's ambient, glTF's indirect light); the iridescence textures scale the
+// film's strength (R) and place its thickness (G). uvLod: log2 of the footprint in uv units
 // (engine/rt/ray_cone.h); -infinity (the default) reads level 0 with each texture's magnification
 // filter.
 shading::ShadingMaterial resolveMaterial(const Scene& scene, const Material& material, vec2 uv,

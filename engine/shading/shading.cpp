@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "engine/scene/gltf_pbr.h"
+
 namespace diptych::shading {
 
 ShadingLight toShadingLight(const Light& light) {
@@ -28,7 +30,20 @@ ShadingLight toShadingLight(const Light& light) {
 bool materialHasReflection(const Material& m, bool lobe) {
   ShadingMaterial s = toShadingMaterial(m);
   if (m.metallicRoughnessTexture >= 0) s.roughness = 0.f;
-  return hasReflection(s, lobe);
+  if (hasReflection(s, lobe)) return true;
+  // A checker replaces a re-mapped material's base colour (remapsPerTexel) instead of scaling
+  // baseColorFactor down: its lecture coefficients at a texel are those of one of its two
+  // colours, which the loader's constants (from baseColorFactor) do not bound.
+  if (!m.checker || !remapsPerTexel(m)) return false;
+  const float roughness = m.metallicRoughnessTexture >= 0 ? 0.f : m.roughnessFactor;
+  for (const vec3& colour : {m.checker->colorA, m.checker->colorB}) {
+    const LectureCoefficients k =
+        gltfPbrToLecture(colour, m.metallicFactor, roughness, m.transmissionFactor, m.ior);
+    s.kps = k.kps;
+    s.mirrorColor = k.mirrorColor;
+    if (hasReflection(s, lobe)) return true;
+  }
+  return false;
 }
 
 bool materialHasTransmission(const Material& m) {

@@ -77,7 +77,8 @@ inline ShadingMaterial toShadingMaterial(const Material& m) {
 // hasTransmission of shading.glsl, by the material's own model), for passes that select meshes
 // before any hit: textures only scale the glTF factors down, so a metallic-roughness texture is
 // taken as possibly smooth (roughness 0) and dielectric (metallic 0), and the factors bound the
-// rest. `lobe` as hasReflection.
+// rest; a checker that replaces a re-mapped material's base colour is tried colour by colour.
+// `lobe` as hasReflection.
 bool materialHasReflection(const Material& material, bool lobe = false);
 bool materialHasTransmission(const Material& material);
 

@@ -74,13 +74,14 @@ std::vector<double> pairedRatios(const std::vector<double>& referenceMs,
 }
 
 // The all-exact frame among the variants: the first with the built-in recipe, no slot override
-// and the scene as authored (the default set's `hybrid-exact`), timed on its own.
+// and the scene as authored (the default set's `hybrid-exact`). Where it is an earlier variant's
+// frame (same_frame.h), that variant is the one timed, and the one returned.
 std::optional<std::size_t> exactVariant(const std::vector<Variant>& variants,
                                         const std::vector<int>& sameAs) {
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const Variant& v = variants[i];
     if (v.recipeFile.empty() && v.slots.empty() && v.tessellation == 0 && v.surfaceDetail.empty())
-      return sameAs[i] < 0 ? std::optional<std::size_t>(i) : std::nullopt;
+      return sameAs[i] < 0 ? i : std::size_t(sameAs[i]);
   }
   return std::nullopt;
 }
@@ -460,12 +461,12 @@ void runCompare(const CompareOptions& o) {
   // What a technique saves against the all-exact frame whose slot it replaces, in the same
   // round: exact / variant per round (the time axis of "how wrong is the trick and what does it
   // save"; the reference is a different renderer, whose speed-up mixes in the G-buffer's cost).
-  if (const auto exact = exactVariant(variants, sameAs)) {
+  if (const auto allExact = exactVariant(variants, sameAs)) {
     for (std::size_t i = 0; i < results.size(); ++i) {
-      if (sameAs[i] >= 0 || i == *exact) continue;
-      const std::vector<double> ratios = pairedRatios(rounds[*exact].totalMs, rounds[i].totalMs);
+      if (sameAs[i] >= 0 || i == *allExact) continue;
+      const std::vector<double> ratios = pairedRatios(rounds[*allExact].totalMs, rounds[i].totalMs);
       if (ratios.empty()) continue;
-      results[i].result["exact_variant"] = variants[*exact].name;
+      results[i].result["exact_variant"] = variants[*allExact].name;
       results[i].result["speedup_vs_exact"] = summarize(ratios).median;
       results[i].result["speedup_vs_exact_rounds"] = ratios;
     }

@@ -12,6 +12,7 @@
 #define DIPTYCH_SCENE_NORMAL_MAPS 1  // some material has a normal texture
 #define DIPTYCH_SCENE_BUMP 1         // some material has a bump map (texture or procedural)
 #define DIPTYCH_SCENE_CHECKER 1      // some material has the procedural checker
+#define DIPTYCH_SCENE_REMAP 1        // some material is re-mapped per texel (remapsPerTexel)
 #define DIPTYCH_SCENE_MODEL -1       // SHADING_MODEL_* of every material, -1 when mixed
 #define DIPTYCH_SCENE_IRIDESCENCE 1  // some glTF-model material has a thin film
 #define DIPTYCH_SCENE_LIGHT_TYPE -1  // LIGHT_* of every light, -1 when mixed or none

@@ -83,7 +83,8 @@ int sceneMaterialModel(int m) {
 // Material m of Scene::materials (-1: the default) at uv: the checker (colour alternates every
 // 1/scale in u and v) or the base-colour texture times C and alpha, the emission texture times
 // M_E, the lecture coefficients re-mapped per texel where remapsPerTexel (gate 8: a
-// metallic-roughness texture, or a partly metal or transmissive glTF material's colour texture),
+// metallic-roughness texture, or a partly metal or transmissive glTF material's colour texture
+// or checker),
 // occlusion scaling k_a, the film's strength and thickness textures.
 ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
   GpuMaterial g = sceneMaterials[m + 1];
@@ -141,7 +142,7 @@ ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
   int emissionTex = int(g.texColorEmitMrAo.y);
   if (sceneTextureValid(emissionTex)) s.emission *= sceneMaterialTexture(emissionTex, uv, uvLod).xyz;
 #endif
-#if DIPTYCH_SCENE_CHECKER || DIPTYCH_SCENE_TEXTURES
+#if DIPTYCH_SCENE_REMAP
   // remapsPerTexel (gate 8): the glTF inputs at this texel (a metallic-roughness texel, 1
   // without that texture; the base colour factor times the colour texel, or the checker's
   // colour, which replaces it) through the loader's mapping, as resolveMaterial.

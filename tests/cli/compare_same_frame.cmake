@@ -45,14 +45,21 @@ for name in ("hybrid-exact", "raster", "shadow-map-256-none"):
     for ratio, ms, ref in zip(r, v["total_ms_rounds"], results["reference"]["ms_rounds"]):
         assert abs(ratio - ref / ms) < 1e-9, (name, ratio, ref, ms)
     assert abs(v["speedup_vs_reference"] - statistics.median(r)) < 1e-9, name
-    # Against the all-exact frame likewise: hybrid-exact / variant per round, paired.
+    # Against the all-exact frame likewise: hybrid-exact / variant per round, paired; "-" on
+    # hybrid-exact's own row.
+    against = "-"
     if name != "hybrid-exact":
         e = v["speedup_vs_exact_rounds"]
-        for ratio, ms, exact in zip(e, v["total_ms_rounds"], variants["hybrid-exact"]["total_ms_rounds"]):
-            assert abs(ratio - exact / ms) < 1e-9, (name, ratio, exact, ms)
+        for ratio, ms, ex in zip(e, v["total_ms_rounds"], variants["hybrid-exact"]["total_ms_rounds"]):
+            assert abs(ratio - ex / ms) < 1e-9, (name, ratio, ex, ms)
         assert len(e) == 2 and abs(v["speedup_vs_exact"] - statistics.median(e)) < 1e-9, (name, e)
+        assert v["exact_variant"] == "hybrid-exact", (name, v["exact_variant"])
+        against = "%.2fx (%.2f-%.2f)" % (v["speedup_vs_exact"], min(e), max(e))
+    else:
+        assert "speedup_vs_exact" not in v, name
     shown = "%.2fx (%.2f-%.2f)" % (v["speedup_vs_reference"], min(r), max(r))
-    assert re.search(r"^" + name + r"\s+[0-9.]+\s+" + re.escape(shown) + r"\s", stdout, re.M), (shown, stdout)
+    assert re.search(r"^" + name + r"\s+[0-9.]+\s+" + re.escape(shown) + r"\s+" + re.escape(against) + r"\s",
+                     stdout, re.M), (shown, against, stdout)
 assert "not distinguishable" not in stdout, "the one-round note printed with two rounds"
 print("same frame:", textures, "->", variants["texture-nearest"]["same_frame_reason"])
 ]=] "${WORK_DIR}/cmp" "${WORK_DIR}/stdout.txt")

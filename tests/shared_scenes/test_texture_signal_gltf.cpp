@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "engine/rt/surface_point.h"
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/gltf_pbr.h"
 #include "passes/slots.h"
@@ -187,10 +188,11 @@ TEST(TextureSignalGltf, LectureShadingShowsAMetalsColourTextureOnBothSides) {
 
 // The same with a checker in place of the colour texture (a JSON glTF-model material's
 // `checker`): the checker's colour is the base colour there (resolveMaterial's baseColor), so
-// under the lecture's model the metal is re-mapped from it per texel on both sides, and with a
-// texture_filtering producer on the GL side the signal carries it (texture_filter.comp). Before,
-// remapsPerTexel left checkers out and C = checker x 0 kept the metal untextured: its frame was
-// the frame of a checker of one colour.
+// under the lecture's model the metal is re-mapped from it per texel on both sides (C = 0, a
+// mirror and a specular colour of that colour), and with a texture_filtering producer on the GL
+// side the signal carries it (texture_filter.comp). Before, remapsPerTexel left checkers out:
+// the checker replaced C of the loader's constants, so the metal shaded as a diffuse checker
+// with the white specular of its baseColorFactor.
 TEST(TextureSignalGltf, LectureShadingShowsAMetalsCheckerOnBothSides) {
   const auto file = shared("texture-sampler-assetgen/Texture_Sampler_00.gltf");
   if (!std::filesystem::exists(file)) GTEST_SKIP() << "no " << file;
@@ -222,6 +224,13 @@ TEST(TextureSignalGltf, LectureShadingShowsAMetalsCheckerOnBothSides) {
       m.checker = Checker{vec3(0.9f, 0.2f, 0.1f),
                           twoColours ? vec3(0.1f, 0.3f, 0.9f) : vec3(0.9f, 0.2f, 0.1f), 4.f};
       EXPECT_TRUE(remapsPerTexel(m)) << m.name;
+      // At a texel of colour A: the metal of base colour A, as gltfPbrToLecture maps it.
+      const shading::ShadingMaterial at = resolveMaterial(scene, m, vec2(0.01f, 0.01f));
+      const LectureCoefficients metal = gltfPbrToLecture(
+          m.checker->colorA, m.metallicFactor, m.roughnessFactor, m.transmissionFactor, m.ior);
+      EXPECT_EQ(at.color, metal.color) << m.name;  // 0 for a full metal, not the checker
+      EXPECT_EQ(at.mirrorColor, metal.mirrorColor) << m.name;
+      EXPECT_EQ(at.kps, metal.kps) << m.name;
     }
     return testing::renderHybridFrame(std::move(scene), kW, kH, recipe.outputs, recipe);
   };

@@ -15,6 +15,7 @@
 #include "engine/graph/frame_graph.h"
 #include "engine/graph/recipe.h"
 #include "engine/graph/render_world.h"
+#include "engine/scene/gltf_pbr.h"
 #include "engine/scene/load.h"
 #include "engine/shading/shading.h"
 #include "gl_test_context.h"
@@ -144,6 +145,27 @@ Counts countSignals(const Scene& scene, const std::string& reflection,
       if (trans.f(x, y, 0) + trans.f(x, y, 1) + trans.f(x, y, 2) > 0.f) ++transmitted[name];
     }
   return c;
+}
+
+// A checker replaces a re-mapped glTF material's base colour (remapsPerTexel under the lecture's
+// model), so the loader's constants, mapped from baseColorFactor, do not bound its texels: a
+// black metal (k_ps 0) with a bright checker reflects wherever the checker is bright, and the
+// pass gate must say so.
+TEST(MaterialGates, ACheckerOnABlackGltfMetalStillReflects) {
+  Material m;
+  m.model = ShadingModel::Lecture;
+  m.fromGltfPbr = true;
+  m.metallicFactor = 1.f;
+  m.roughnessFactor = 0.f;
+  m.baseColorFactor = vec4(0.f, 0.f, 0.f, 1.f);
+  const LectureCoefficients k = gltfPbrToLecture(vec3(0.f), 1.f, 0.f, 0.f, m.ior);
+  m.kps = k.kps;  // the loader's constant: 0 for a black metal
+  ASSERT_EQ(m.kps, 0.f);
+  EXPECT_FALSE(shading::materialHasReflection(m));
+  m.checker = Checker{vec3(0.9f), vec3(0.f), 4.f};
+  EXPECT_TRUE(shading::materialHasReflection(m));
+  m.checker->colorA = vec3(0.f);  // both colours black: nothing reflects
+  EXPECT_FALSE(shading::materialHasReflection(m));
 }
 
 }  // namespace

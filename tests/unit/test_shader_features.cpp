@@ -31,6 +31,7 @@ TEST(ShaderFeatures, WhittedKeepsTheCheckerAndOnePointLightAndFoldsTextures) {
   EXPECT_EQ(d.at("DIPTYCH_SCENE_TEXTURES"), "0");
   EXPECT_EQ(d.at("DIPTYCH_SCENE_NORMAL_MAPS"), "0");
   EXPECT_EQ(d.at("DIPTYCH_SCENE_CHECKER"), "1");
+  EXPECT_EQ(d.at("DIPTYCH_SCENE_REMAP"), "0");  // a lecture checker: no glTF inputs to re-map
   EXPECT_EQ(d.at("DIPTYCH_SCENE_IRIDESCENCE"), "0");
   EXPECT_EQ(d.at("DIPTYCH_SCENE_MODEL"), std::to_string(int(ShadingModel::Lecture)));
   EXPECT_EQ(d.at("DIPTYCH_SCENE_LIGHT_TYPE"), std::to_string(int(LightType::Point)));
@@ -66,6 +67,24 @@ TEST(ShaderFeatures, AFilmIsKeptOnlyForAGltfMaterialWithAStrength) {
   EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_IRIDESCENCE"), "1");
   scene.materials[0].iridescenceFactor = 0.f;
   EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_IRIDESCENCE"), "0");
+}
+
+// Gate 8 (remapsPerTexel) is kept where a material takes its lecture coefficients per texel: a
+// metallic-roughness texture, or under the lecture's model a glTF metal with a colour texture or
+// a checker, which has no texture at all.
+TEST(ShaderFeatures, TheRemapIsKeptOnlyForAMaterialRemappedPerTexel) {
+  Scene scene = sample("whitted.json");
+  Material& m = scene.materials.at(0);
+  m.checker = Checker{};
+  m.fromGltfPbr = true;
+  m.metallicFactor = 0.f;  // a dielectric: C = colour x texel carries the checker
+  EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_REMAP"), "0");
+  m.metallicFactor = 1.f;
+  EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_REMAP"), "1");
+  EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_TEXTURES"), "0");
+  m.checker.reset();
+  m.metallicRoughnessTexture = 0;
+  EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_REMAP"), "1");
 }
 
 TEST(ShaderFeatures, TheDefaultMaterialCountsOnlyWhereAMeshUsesIt) {
