@@ -3,7 +3,8 @@
 
 usage: plot_error_vs_time.py results.json METRIC OUT_PREFIX
 Writes OUT_PREFIX.svg and OUT_PREFIX.png: one point per variant (total frame ms, log scale, vs the
-metric), the reference's time as a vertical line, and the Pareto front (variants no other
+metric), the reference's time and the all-exact frame's (`exact_variant`) as vertical lines,
+and the Pareto front (variants no other
 variant beats in both time and error) joined and highlighted. A variant whose compiled frame is an
 earlier one's ("same_frame_as") is no point of its own: that point's label counts it.
 
@@ -11,7 +12,7 @@ The error axis is logarithmic: a default run's errors span three decades (FLIP 2
 hybrid-exact to 0.08 for raster), and on a linear axis every accurate variant sat on the zero
 line. An error of exactly 0 (a variant that is the reference's image) is drawn at the axis floor
 (symlog, linear below the smallest positive error). Labels are placed so that none covers another
-label or a point (a greedy search over offsets around each point, nearest first, then farther
+label, a point or the Pareto front's line (a greedy search over offsets around each point, nearest first, then farther
 out with a leader line); the script says on stderr how many it could not place clear, and with
 --check-labels it always says and exits non-zero if any.
 """
@@ -44,12 +45,25 @@ def _overlaps(box, boxes):
     return any(box.overlaps(b) for b in boxes)
 
 
-def place_labels(fig, ax, points, labels, fontsize=7):
+def _polyline_samples(ax, vertices, per_segment=40):
+    """Display-space points along a polyline given in data coordinates."""
+    out = []
+    shown = [ax.transData.transform(v) for v in vertices]
+    for (x0, y0), (x1, y1) in zip(shown, shown[1:]):
+        for k in range(per_segment + 1):
+            f = k / per_segment
+            out.append((x0 + f * (x1 - x0), y0 + f * (y1 - y0)))
+    return out
+
+
+def place_labels(fig, ax, points, labels, lines=(), fontsize=7):
     """Annotates each point (x, y in data coordinates) with its label where it covers no placed
-    label, no point and stays inside the axes. Returns how many labels could not be placed clear
-    (those keep their nearest position)."""
+    label, no point and no line of `lines` (polylines in data coordinates), and stays inside the
+    axes. Returns how many labels could not be placed clear (those keep their nearest
+    position)."""
     renderer = fig.canvas.get_renderer()
     axes_box = ax.get_window_extent(renderer)
+    line_points = [p for line in lines for p in _polyline_samples(ax, line)]
     # Each marker as a small box in display coordinates (s=46 points^2: ~7 points across).
     radius = 4.0 * fig.dpi / 72.0
     point_boxes = []
@@ -75,7 +89,8 @@ def place_labels(fig, ax, points, labels, fontsize=7):
             box = _text_box(a, renderer)
             others = point_boxes[:i] + point_boxes[i + 1:]
             inside = axes_box.contains(box.x0, box.y0) and axes_box.contains(box.x1, box.y1)
-            if inside and not _overlaps(box, placed) and not _overlaps(box, others):
+            if inside and not _overlaps(box, placed) and not _overlaps(box, others) and \
+                    not any(box.contains(px, py) for px, py in line_points):
                 chosen = (a, box)
                 break
             a.remove()
@@ -108,13 +123,24 @@ def build(results, metric):
         labels.append(v["name"] + (" (+%d same frame)" % same[v["name"]]
                                    if v["name"] in same else ""))
     front = sorted((v for v in variants if v.get("pareto")), key=lambda v: v["total_ms"])
+    step = []  # the front's staircase, which the labels keep clear of
     if len(front) > 1:
         ax.step([v["total_ms"] for v in front], [v["metrics"].get(metric, 0.0) for v in front],
                 where="post", color="#d62728", linewidth=1.2, label="Pareto front")
+        for a, b in zip(front, front[1:]):
+            ea, eb = a["metrics"].get(metric, 0.0), b["metrics"].get(metric, 0.0)
+            step += [(a["total_ms"], ea), (b["total_ms"], ea), (b["total_ms"], eb)]
     ref_ms = results["reference"]["ms"]
     if ref_ms > 0:
         ax.axvline(ref_ms, color="grey", linestyle="--", linewidth=1,
                    label="reference %s (%.0f ms)" % (results["reference"]["spec"], ref_ms))
+    # The all-exact frame's time too (`vs exact` in the table): a variant left of this line saves
+    # time against the exact producers it replaces.
+    exact_name = next((v["exact_variant"] for v in variants if "exact_variant" in v), None)
+    exact = next((v for v in variants if v["name"] == exact_name), None)
+    if exact is not None and exact["total_ms"] > 0:
+        ax.axvline(exact["total_ms"], color="#d62728", linestyle=":", linewidth=1,
+                   label="all-exact frame %s (%.0f ms)" % (exact_name, exact["total_ms"]))
     ax.set_xscale("log")
     # Milliseconds as plain numbers (60, 70, 100), not 6x10^1; the in-between ticks are labelled
     # too where the times span less than a decade (most runs), else they would crowd.
@@ -139,9 +165,9 @@ def build(results, metric):
     ax.set_title("Error against run time: %s" % results["scene"].split("/")[-1])
     ax.grid(True, which="both", alpha=0.3)
     # Below the axes: inside, it would cover points or their labels.
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, fontsize=8, frameon=False)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, fontsize=8, frameon=False)
     fig.tight_layout()
-    return fig, ax, place_labels(fig, ax, points, labels)
+    return fig, ax, place_labels(fig, ax, points, labels, lines=[step] if step else [])
 
 
 def main():
