@@ -28,7 +28,8 @@ import matplotlib.text  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
 # Offsets (points) tried for a label, nearest first: right, left, above, below and the diagonals
-# next to the marker, then rings farther out in 16 directions (those get a leader line back).
+# next to the marker, then rings farther out in 16 directions (all but the side-by-side ones get
+# a leader line back to their point).
 _NEAR = [(6, 0), (-6, 0), (0, 6), (0, -6), (6, 6), (-6, 6), (6, -6), (-6, -6)]
 _OFFSETS = _NEAR + [(round(r * math.cos(a * math.pi / 8)), round(r * math.sin(a * math.pi / 8)))
                     for r in (16, 26, 38, 52, 70) for a in range(16)]
@@ -79,7 +80,9 @@ def place_labels(fig, ax, points, labels, lines=(), fontsize=7):
         (x, y), label = points[i], labels[i]
         chosen = None
         for dx, dy in _OFFSETS:
-            far = max(abs(dx), abs(dy)) > 8
+            # Beside the point (right or left) a label needs no line; anywhere else, with three
+            # points within a label's width, a thin leader says which point it names.
+            far = dy != 0
             ha = "left" if dx > 0 else "right" if dx < 0 else "center"
             va = "bottom" if dy > 0 else "top" if dy < 0 else "center"
             a = ax.annotate(label, (x, y), textcoords="offset points", xytext=(dx, dy),
