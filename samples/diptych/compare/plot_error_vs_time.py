@@ -12,7 +12,7 @@ The error axis is logarithmic: a default run's errors span three decades (FLIP 2
 hybrid-exact to 0.08 for raster), and on a linear axis every accurate variant sat on the zero
 line. An error of exactly 0 (a variant that is the reference's image) is drawn at the axis floor
 (symlog, linear below the smallest positive error). Labels are placed so that none covers another
-label, a point or the Pareto front's line (a greedy search over offsets around each point, nearest first, then farther
+label, a point, the Pareto front's line or a vertical time line (a greedy search over offsets around each point, nearest first, then farther
 out with a leader line); the script says on stderr how many it could not place clear, and with
 --check-labels it always says and exits non-zero if any.
 """
@@ -82,7 +82,7 @@ def place_labels(fig, ax, points, labels, lines=(), fontsize=7):
         for dx, dy in _OFFSETS:
             # Beside the point (right or left) a label needs no line; anywhere else, with three
             # points within a label's width, a thin leader says which point it names.
-            far = dy != 0
+            far = dy != 0 or abs(dx) > 8
             ha = "left" if dx > 0 else "right" if dx < 0 else "center"
             va = "bottom" if dy > 0 else "top" if dy < 0 else "center"
             a = ax.annotate(label, (x, y), textcoords="offset points", xytext=(dx, dy),
@@ -170,7 +170,13 @@ def build(results, metric):
     # Below the axes: inside, it would cover points or their labels.
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, fontsize=8, frameon=False)
     fig.tight_layout()
-    return fig, ax, place_labels(fig, ax, points, labels, lines=[step] if step else [])
+    # The labels keep clear of the front's staircase and of the two vertical time lines.
+    lines = [step] if step else []
+    y0, y1 = ax.get_ylim()
+    for ms in (ref_ms, exact["total_ms"] if exact is not None else 0):
+        if ms > 0:
+            lines.append([(ms, y0), (ms, y1)])
+    return fig, ax, place_labels(fig, ax, points, labels, lines=lines)
 
 
 def main():
