@@ -72,5 +72,17 @@ assert fixed > 0, fixed
 fig2, ax2, _ = plot.build(dict(results, variants=[v for v in variants if v["name"] != "reference-self"]),
                           "flip_mean")
 assert ax2.get_yscale() == "log", ax2.get_yscale()
+# A time or an error that is not a number (results.json writes NaN and infinities as null) is
+# no point: the title names the variant, and the plot is still drawn.
+broken = [dict(v) for v in variants if v["name"] in ("hybrid-exact", "raster", "reference-self",
+                                                      "clustered-variant-0")]
+broken[1] = dict(broken[1], metrics={"flip_mean": None})
+broken[2] = dict(broken[2], total_ms=0.0)
+broken[3] = dict(broken[3], metrics={"flip_mean": float("inf")})
+fig3, ax3, _ = plot.build(dict(results, variants=broken), "flip_mean")
+title = ax3.get_title().replace("\n", " ")
+for v in broken[1:]:
+    assert v["name"] in title.split(": ", 2)[-1], (v["name"], title)
+assert len(ax3.texts) == 1, [t.get_text() for t in ax3.texts]
 print("labels clear: %d; at one fixed offset %d pairs overlap" % (len(shown), fixed))
 ]=] "${SOURCE_DIR}/samples/diptych/compare/plot_error_vs_time.py")

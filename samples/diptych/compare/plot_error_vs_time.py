@@ -19,6 +19,7 @@ out with a leader line); the script says on stderr how many it could not place c
 import json
 import math
 import sys
+import textwrap
 
 import matplotlib
 
@@ -117,15 +118,22 @@ def build(results, metric):
     variants = [v for v in results["variants"] if "same_frame_as" not in v]
     fig, ax = plt.subplots(figsize=(9, 5.5), dpi=110)
     points, labels = [], []
+    unplotted = []  # a time or an error that is not a finite number has no place on the axes
     for v in variants:
-        t, e = v["total_ms"], v["metrics"].get(metric, 0.0)
+        # results.json writes a NaN or an infinity as null (nlohmann::json).
+        t, e = v.get("total_ms"), v["metrics"].get(metric, 0.0)
+        t, e = (float("nan") if x is None else float(x) for x in (t, e))
+        if not (math.isfinite(t) and t > 0 and math.isfinite(e) and e >= 0):
+            unplotted.append(v["name"])
+            continue
         ax.scatter([t], [e], s=46, zorder=3,
                    color="#d62728" if v.get("pareto") else "#1f77b4",
                    edgecolor="black", linewidth=0.5)
         points.append((t, e))
         labels.append(v["name"] + (" (+%d same frame)" % same[v["name"]]
                                    if v["name"] in same else ""))
-    front = sorted((v for v in variants if v.get("pareto")), key=lambda v: v["total_ms"])
+    front = sorted((v for v in variants if v.get("pareto") and (v["total_ms"], v["metrics"].get(
+        metric, 0.0)) in points), key=lambda v: v["total_ms"])
     step = []  # the front's staircase, which the labels keep clear of
     if len(front) > 1:
         ax.step([v["total_ms"] for v in front], [v["metrics"].get(metric, 0.0) for v in front],
@@ -165,7 +173,12 @@ def build(results, metric):
             ax.set_ylim(min(positive) / 3.0, top)
     ax.set_xlabel("frame time, ms (sum of per-pass medians, log scale)")
     ax.set_ylabel(metric + " against the reference (log scale)")
-    ax.set_title("Error against run time: %s" % results["scene"].split("/")[-1])
+    title = "Error against run time: %s" % results["scene"].split("/")[-1]
+    if unplotted:  # said on the plot, not dropped silently
+        title += "\n" + "\n".join(textwrap.wrap(
+            "not plotted (time not positive, or time or error not finite): " + ", ".join(unplotted),
+            110))
+    ax.set_title(title, fontsize=10 if unplotted else None)
     ax.grid(True, which="both", alpha=0.3)
     # Below the axes: inside, it would cover points or their labels.
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, fontsize=8, frameon=False)
