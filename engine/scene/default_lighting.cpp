@@ -1,6 +1,7 @@
 #include "engine/scene/default_lighting.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "engine/core/error.h"
@@ -61,6 +62,21 @@ bool sceneIsUnlit(const Scene& scene) {
   const Environment& env = scene.environment;
   if (env.intensity <= 0.f) return true;
   return env.type == EnvironmentType::Color && env.color == vec3(0.f);
+}
+
+std::optional<std::string> darkEnvironmentHint(const Scene& scene,
+                                               const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if ((ext != ".gltf" && ext != ".glb") || scene.lights.empty()) return std::nullopt;
+  const Environment& env = scene.environment;
+  if (!(env.intensity <= 0.f || (env.type == EnvironmentType::Color && env.color == vec3(0.f))))
+    return std::nullopt;
+  return file.filename().string() + ": lit by its own " + std::to_string(scene.lights.size()) +
+         (scene.lights.size() == 1 ? " light" : " lights") +
+         " and no environment, so the background and what mirrors and glass show of it are "
+         "black (a viewer would add image-based light): --env FILE.hdr gives it one";
 }
 
 Environment proceduralSky(int width) {

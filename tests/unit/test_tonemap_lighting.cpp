@@ -111,6 +111,25 @@ TEST(DefaultLighting, SceneWithItsOwnLightOrEnvironmentIsNeverChanged) {
   EXPECT_TRUE(withSky.lights.empty());
 }
 
+// A glTF file with its own lights and no environment is left as it is, and says so once,
+// naming --env; JSON scenes (their authors chose the environment), files with an environment
+// and unlit files (default lighting) get no hint.
+TEST(DefaultLighting, AGltfFileWithLightsAndNoEnvironmentIsToldAboutEnv) {
+  Scene lit = unlitScene();
+  lit.lights.push_back(Light{});
+  const auto hint = darkEnvironmentHint(lit, "models/Suzanne.GLB");
+  ASSERT_TRUE(hint);
+  EXPECT_NE(hint->find("Suzanne.GLB: lit by its own 1 light and no environment"), std::string::npos)
+      << *hint;
+  EXPECT_NE(hint->find("--env"), std::string::npos) << *hint;
+  EXPECT_TRUE(darkEnvironmentHint(lit, "lamp.gltf"));
+  EXPECT_FALSE(darkEnvironmentHint(lit, "cornell.json"));
+  Scene withSky = lit;
+  withSky.environment.color = vec3(0.5f);
+  EXPECT_FALSE(darkEnvironmentHint(withSky, "lamp.gltf"));
+  EXPECT_FALSE(darkEnvironmentHint(unlitScene(), "helmet.glb"));
+}
+
 TEST(DefaultLighting, CommandLineLightReplacesTheDefault) {
   Scene scene = unlitScene();
   LightingOptions options;
