@@ -141,6 +141,10 @@ class TextureTable {
     return texture(index, texCoord, extensions, at, false);
   }
   const std::string& file() const { return file_; }
+  // A recovery made while reading `place` (Scene::warnings: the program prints them).
+  void warn(const std::string& place, const std::string& what) {
+    scene_.warnings.push_back(file_ + ": " + place + ": " + what);
+  }
 
   int texture(int index, int texCoord, const tinygltf::ExtensionMap& extensions,
               const std::string& place, bool srgb) {
@@ -265,8 +269,14 @@ Material convertMaterial(const tinygltf::Material& src, const std::string& place
   const float metallic = std::clamp(float(pbr.metallicFactor) * textured.y, 0.f, 1.f);
   const float roughness = std::clamp(float(pbr.roughnessFactor) * textured.x, 0.f, 1.f);
 
-  if (const tinygltf::Value* ext = extension(src, "KHR_materials_ior"))
+  if (const tinygltf::Value* ext = extension(src, "KHR_materials_ior")) {
     m.ior = valueNumber(*ext, "ior", 1.5f);
+    // The extension's schema has a minimum of 1; below it (but positive: validate.cpp) the value
+    // is used as given (a bubble in water is n < 1 relative to its outside), and said.
+    if (m.ior > 0.f && m.ior < 1.f)
+      textures.warn(place + ".extensions.KHR_materials_ior.ior",
+                    formatBound(m.ior) + " is below the extension's minimum of 1; used as given");
+  }
   float transmission = 0.f;
   if (const tinygltf::Value* ext = extension(src, "KHR_materials_transmission"))
     transmission = std::clamp(valueNumber(*ext, "transmissionFactor", 0.f), 0.f, 1.f);
