@@ -1,7 +1,6 @@
 #include "engine/scene/default_lighting.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 #include "engine/core/error.h"
@@ -57,24 +56,22 @@ Light directional(const std::string& name, const vec3& towardLight, vec3 color, 
 
 }  // namespace
 
+namespace {
+bool environmentIsBlack(const Environment& env) {
+  return env.intensity <= 0.f || (env.type == EnvironmentType::Color && env.color == vec3(0.f));
+}
+}  // namespace
+
 bool sceneIsUnlit(const Scene& scene) {
-  if (!scene.lights.empty()) return false;
-  const Environment& env = scene.environment;
-  if (env.intensity <= 0.f) return true;
-  return env.type == EnvironmentType::Color && env.color == vec3(0.f);
+  return scene.lights.empty() && environmentIsBlack(scene.environment);
 }
 
-std::optional<std::string> darkEnvironmentHint(const Scene& scene,
-                                               const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  if ((ext != ".gltf" && ext != ".glb") || scene.lights.empty()) return std::nullopt;
-  const Environment& env = scene.environment;
-  if (!(env.intensity <= 0.f || (env.type == EnvironmentType::Color && env.color == vec3(0.f))))
+std::optional<std::string> darkEnvironmentHint(const Scene& scene) {
+  if (!isGltfPath(scene.sourcePath) || scene.lights.empty() ||
+      !environmentIsBlack(scene.environment))
     return std::nullopt;
-  return file.filename().string() + ": lit by its own " + std::to_string(scene.lights.size()) +
-         (scene.lights.size() == 1 ? " light" : " lights") +
+  return std::filesystem::path(scene.sourcePath).filename().string() + ": lit by its own " +
+         std::to_string(scene.lights.size()) + (scene.lights.size() == 1 ? " light" : " lights") +
          " and no environment, so the background and what mirrors and glass show of it are "
          "black (a viewer would add image-based light): --env FILE.hdr gives it one";
 }

@@ -3,7 +3,6 @@
 // models (DamagedHelmet, ...) have no KHR_lights_punctual light and no environment; rendered as
 // they are, only emission shows. The program (not the loaders: tests and library users see the
 // file as it is) adds a documented default, or what the user gives with --env / --light.
-#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -20,13 +19,13 @@ struct LightingOptions {
 // True when the scene has no light and its environment is black: nothing but emission shows.
 bool sceneIsUnlit(const Scene& scene);
 
-// One line for a glTF file (.gltf/.glb) that brings its own lights but no environment: it is
+// One line for a scene loaded from a glTF file (Scene::sourcePath .gltf/.glb) that brings its
+// own lights but no environment: it is
 // left as it is (applyLighting), so its background, mirror reflections and transmission show
 // black, and a file made for a viewer with image-based light (IridescenceSuzanne's one 2-lux
 // light) renders dark; the line names --env. Nothing for JSON scenes, whose authors chose their
 // environment, or where the environment is not black.
-std::optional<std::string> darkEnvironmentHint(const Scene& scene,
-                                               const std::filesystem::path& file);
+std::optional<std::string> darkEnvironmentHint(const Scene& scene);
 
 // The procedural sky: an equirect image (width x width/2) with a zenith-to-horizon gradient
 // above the horizon and a dim ground below (radiance values in docs/materials.md).

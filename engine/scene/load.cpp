@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cctype>
 
 #include "engine/core/error.h"
 #include "engine/scene/camera_math.h"
@@ -12,12 +13,24 @@
 
 namespace diptych {
 
-Scene loadScene(const std::filesystem::path& path) {
+namespace {
+std::string lowerExtension(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+}  // namespace
+
+bool isGltfPath(const std::filesystem::path& path) {
+  const std::string ext = lowerExtension(path);
+  return ext == ".gltf" || ext == ".glb";
+}
+
+Scene loadScene(const std::filesystem::path& path) {
+  const std::string ext = lowerExtension(path);
   Scene scene;
-  if (ext == ".gltf" || ext == ".glb")
+  if (isGltfPath(path))
     scene = loadGltfUnvalidated(path);
   else if (ext == ".json")
     scene = loadJsonSceneUnvalidated(path);

@@ -13,6 +13,9 @@ namespace diptych {
 // the result (validateScene) and frames a camera from the bounds when the scene has none.
 Scene loadScene(const std::filesystem::path& path);
 
+// Whether loadScene reads `path` as glTF 2.0: its extension is .gltf or .glb, in any case.
+bool isGltfPath(const std::filesystem::path& path);
+
 // The individual loaders, unvalidated: loadScene is what programs should call.
 Scene loadGltfUnvalidated(const std::filesystem::path& path);
 Scene loadJsonSceneUnvalidated(const std::filesystem::path& path);

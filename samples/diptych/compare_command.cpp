@@ -208,7 +208,7 @@ void runCompare(const CompareOptions& o) {
   const FrameSettings frame{width, height,
                             scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
   if (auto line = applyLighting(scene, frame.camera, {})) log().warn("{}", *line);
-  if (auto hint = darkEnvironmentHint(scene, sceneFile)) log().warn("{}", *hint);
+  if (auto hint = darkEnvironmentHint(scene)) log().warn("{}", *hint);
   // One-time costs, measured apart from every frame: context creation, the Embree BVH build, the
   // GL scene upload. Frames (reference and variants alike) are medians after warm-up.
   nlohmann::json oneTime;

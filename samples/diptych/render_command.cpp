@@ -151,7 +151,7 @@ void runRender(const RenderOptions& o) {
   for (const std::string& w : scene.warnings) log().warn("{}", w);
   Camera camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds());
   if (auto line = applyLighting(scene, camera, o.lighting)) log().warn("{}", *line);
-  if (auto hint = darkEnvironmentHint(scene, o.scene)) log().warn("{}", *hint);
+  if (auto hint = darkEnvironmentHint(scene)) log().warn("{}", *hint);
   applyShadingOption(scene, o.shading);
   if (!o.cameraFile.empty()) {  // after the default lighting, which the scene's camera placed
     camera = readCameraFile(o.cameraFile, scene.worldOrigin);

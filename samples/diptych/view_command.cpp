@@ -46,7 +46,7 @@ void runView(const ViewOptions& o) {
   for (const std::string& w : scene.warnings) log().warn("{}", w);
   const Camera camera = scene.hasCamera ? scene.camera : frameBounds(scene.bounds());
   if (auto line = applyLighting(scene, camera, o.lighting)) log().warn("{}", *line);
-  if (auto hint = darkEnvironmentHint(scene, o.scene)) log().warn("{}", *hint);
+  if (auto hint = darkEnvironmentHint(scene)) log().warn("{}", *hint);
   applyShadingOption(scene, o.shading);  // as render does: after the default lighting
   Recipe recipe = o.recipe.empty() ? defaultHybridRecipe() : loadRecipe(o.recipe);
   for (const std::string& text : o.slots)

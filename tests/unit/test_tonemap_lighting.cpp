@@ -115,19 +115,24 @@ TEST(DefaultLighting, SceneWithItsOwnLightOrEnvironmentIsNeverChanged) {
 // naming --env; JSON scenes (their authors chose the environment), files with an environment
 // and unlit files (default lighting) get no hint.
 TEST(DefaultLighting, AGltfFileWithLightsAndNoEnvironmentIsToldAboutEnv) {
+  // The scene as loaded from `path` (loadScene sets Scene::sourcePath).
+  const auto from = [](Scene s, const char* path) {
+    s.sourcePath = path;
+    return s;
+  };
   Scene lit = unlitScene();
   lit.lights.push_back(Light{});
-  const auto hint = darkEnvironmentHint(lit, "models/Suzanne.GLB");
+  const auto hint = darkEnvironmentHint(from(lit, "models/Suzanne.GLB"));
   ASSERT_TRUE(hint);
   EXPECT_NE(hint->find("Suzanne.GLB: lit by its own 1 light and no environment"), std::string::npos)
       << *hint;
   EXPECT_NE(hint->find("--env"), std::string::npos) << *hint;
-  EXPECT_TRUE(darkEnvironmentHint(lit, "lamp.gltf"));
-  EXPECT_FALSE(darkEnvironmentHint(lit, "cornell.json"));
+  EXPECT_TRUE(darkEnvironmentHint(from(lit, "lamp.gltf")));
+  EXPECT_FALSE(darkEnvironmentHint(from(lit, "cornell.json")));
   Scene withSky = lit;
   withSky.environment.color = vec3(0.5f);
-  EXPECT_FALSE(darkEnvironmentHint(withSky, "lamp.gltf"));
-  EXPECT_FALSE(darkEnvironmentHint(unlitScene(), "helmet.glb"));
+  EXPECT_FALSE(darkEnvironmentHint(from(withSky, "lamp.gltf")));
+  EXPECT_FALSE(darkEnvironmentHint(from(unlitScene(), "helmet.glb")));
 }
 
 TEST(DefaultLighting, CommandLineLightReplacesTheDefault) {

@@ -12,9 +12,10 @@ The error axis is logarithmic: a default run's errors span three decades (FLIP 2
 hybrid-exact to 0.08 for raster), and on a linear axis every accurate variant sat on the zero
 line. An error of exactly 0 (a variant that is the reference's image) is drawn at the axis floor
 (symlog, linear below the smallest positive error). Labels are placed so that none covers another
-label, a point, the Pareto front's line or a vertical time line (a greedy search over offsets around each point, nearest first, then farther
-out with a leader line); the script says on stderr how many it could not place clear, and with
---check-labels it always says and exits non-zero if any.
+label, a point, the Pareto front's line or a vertical time line (a greedy search over offsets
+around each point, nearest first, then farther out with a leader line); the script says on stderr
+how many it could not place clear, and with --check-labels it always says and exits non-zero if
+any.
 """
 import json
 import math
@@ -132,8 +133,9 @@ def build(results, metric):
         points.append((t, e))
         labels.append(v["name"] + (" (+%d same frame)" % same[v["name"]]
                                    if v["name"] in same else ""))
-    front = sorted((v for v in variants if v.get("pareto") and (v["total_ms"], v["metrics"].get(
-        metric, 0.0)) in points), key=lambda v: v["total_ms"])
+    plotted = {v["name"] for v in variants} - set(unplotted)
+    front = sorted((v for v in variants if v.get("pareto") and v["name"] in plotted),
+                   key=lambda v: v["total_ms"])
     step = []  # the front's staircase, which the labels keep clear of
     if len(front) > 1:
         ax.step([v["total_ms"] for v in front], [v["metrics"].get(metric, 0.0) for v in front],
