@@ -92,8 +92,9 @@ ShadowArtifacts classifyShadows(const std::vector<float>& approximate,
 // The class map as an RGB image (linear values of a fixed palette; see docs/shadow-bias.md).
 Image shadowClassImage(const ShadowArtifacts& artifacts, int width, int height);
 
-// Radiance error of a reflection/transmission signal over the pixels where the slot contributes
-// (mask true): RMSE and relative RMSE sqrt(sum |a - e|^2 / sum |e|^2), on RGB.
+// Radiance error of a reflection/transmission signal (or the texture_filtering colour) over the
+// pixels where the slot contributes (mask true): RMSE and relative RMSE
+// sqrt(sum |a - e|^2 / sum |e|^2), on RGB.
 struct SignalError {
   long long pixels = 0;
   double rmse = 0, relativeRmse = 0;

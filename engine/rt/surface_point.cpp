@@ -141,6 +141,14 @@ shading::ShadingMaterial withBaseColorSignal(shading::ShadingMaterial m, vec3 ba
   return m;
 }
 
+void applyTextureSignal(SurfacePoint& p, const Scene& scene, const vec4& signal) {
+  if (signal.w < 0.f) return;
+  if (p.resolved.model != shading::SHADING_MODEL_GLTF && remapsPerTexel(scene.material(p.material)))
+    p.resolved = withBaseColorSignal(p.resolved, vec3(signal), signal.w);
+  else
+    p.resolved = shading::withTextureSignal(p.resolved, vec3(signal), signal.w);
+}
+
 vec3 normalMapped(const Texture& map, float scale, const vec3& n, const vec4& tangent, vec2 uv) {
   const vec3 nn = glm::length(n) > 0.f ? glm::normalize(n) : n;
   // Gram-Schmidt: interpolated t and n are no longer orthogonal inside a triangle.

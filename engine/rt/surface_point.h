@@ -91,6 +91,13 @@ vec4 resolvedColorAlpha(const Scene& scene, const Material& material, vec2 uv);
 // metallic and roughness, as resolveMaterial maps its own texel. GL: gl_shade.frag.
 shading::ShadingMaterial withBaseColorSignal(shading::ShadingMaterial m, vec3 base, float alpha);
 
+// The texture_filtering slot's signal (colour and coverage; alpha < 0: none, p keeps its own
+// level-0 lookup) in place of p's own lookup: the colour the material's model reads
+// (shading.glsl withTextureSignal), or on lecture-model materials re-mapped per texel the base
+// colour their coefficients are mapped from (withBaseColorSignal; docs/textures.md). CPU shade
+// and the Whitted reference's texture_samples apply it alike; GL: gl_shade.frag.
+void applyTextureSignal(SurfacePoint& p, const Scene& scene, const vec4& signal);
+
 // A tangent-space normal map applied at uv: n' = normalize(T x + B y + N z) with (x, y, z) =
 // (2 texel - 1) * (scale, scale, 1), T Gram-Schmidt-orthogonalised against n and
 // B = w cross(N, T) (glTF 2.0, 3.9.3 and 3.7.2.1). n is the interpolated normal on the side the

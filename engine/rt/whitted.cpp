@@ -20,7 +20,7 @@ WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, con
 }
 
 vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone,
-                             float* hitDistance) const {
+                             float* hitDistance, const vec4* textureSignal) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
   // Hit::Ng only for an observer: the shading rebuilds the normal (makeSurfacePoint).
   // Depth 1 is the camera ray: it does not see back faces of single-sided materials.
@@ -29,11 +29,12 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, cons
       depth == 1
           ? CameraRays{rt_, scene_, world_}.intersect(ray, h, wantsHitNormal())
           : rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, wantsHitNormal());
-  return radianceAt(ray, depth, seed, found ? &h : nullptr, cone, hitDistance);
+  return radianceAt(ray, depth, seed, found ? &h : nullptr, cone, hitDistance, textureSignal);
 }
 
 vec3 WhittedTracer::radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
-                               const RayCone* cone, float* hitDistance) const {
+                               const RayCone* cone, float* hitDistance,
+                               const vec4* textureSignal) const {
   countRay(ray, depth, hit);
   if (hitDistance)
     *hitDistance =
@@ -41,7 +42,8 @@ vec3 WhittedTracer::radianceAt(const Ray& ray, int depth, std::uint32_t seed, co
   if (!hit) return sampleEnvironment(scene_.environment, ray.direction);
   RayCone at;
   bool coned = false;
-  const SurfacePoint p = surfaceAt(ray, *hit, cone, at, coned);
+  SurfacePoint p = surfaceAt(ray, *hit, cone, at, coned);
+  if (textureSignal) applyTextureSignal(p, scene_, *textureSignal);
   return shade(p, -ray.direction, depth, seed, coned ? &at : nullptr);
 }
 

@@ -66,18 +66,22 @@ class WhittedTracer {
   // RAYTRACING(o, u, depth); the caller offsets o if it leaves a surface.
   // cone: the ray's cone at its origin, used for texture LOD when settings.rayCones is set.
   // hitDistance, when given, receives the distance to the hit (infinity on a miss).
+  // textureSignal, when given: the texture_filtering signal that replaces the hit's own colour
+  // lookup (applyTextureSignal; the Whitted reference's texture_samples at the camera ray's hit).
   vec3 radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone = nullptr,
-                float* hitDistance = nullptr) const;
+                float* hitDistance = nullptr, const vec4* textureSignal = nullptr) const;
   // The rest of RAYTRACING(o, u, depth) once the ray's closest hit is known (hit: null on a
   // miss), for callers that trace many rays at once (RtScene::intersectRays); depth <= maxDepth.
   // radiance() is trace + this.
   vec3 radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
-                  const RayCone* cone = nullptr, float* hitDistance = nullptr) const;
+                  const RayCone* cone = nullptr, float* hitDistance = nullptr,
+                  const vec4* textureSignal = nullptr) const;
   // Whether hits passed to radianceAt need Hit::Ng (an observer reads it).
   bool wantsHitNormal() const { return bool(observer_); }
   // radianceAt for a tile of up to kMaxTile rays (hits[i] null: a miss; seeds[i], cones[i]
   // each; cones empty: none) into out[i], with the direct light's shadow rays of all the tile's
-  // points traced as one coherent Embree stream (neighbouring pixels aimed at the same lights)
+  // points traced as one coherent Embree stream (neighbouring pixels aimed at the same lights;
+  // textureSignal empty, or textureSignal[i] as radiance()'s for ray i)
   // instead of one rtcOccluded1 each (engine/rt/whitted_tile.cpp): the same arithmetic, up to
   // the rounding of Embree's packet kernels (see there). Their reflected and transmitted rays
   // are traced ray by ray, as radiance() does. depth: 1..maxDepth (else an Error), as for
@@ -85,7 +89,8 @@ class WhittedTracer {
   static constexpr std::size_t kMaxTile = 64;
   void radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                     std::span<const std::uint32_t> seeds, int depth,
-                    std::span<const RayCone* const> cones, std::span<vec3> out) const;
+                    std::span<const RayCone* const> cones, std::span<vec3> out,
+                    std::span<const vec4> textureSignal = {}) const;
   // traced() of each ray (all of one depth, any number): their closest hits found by Embree
   // streams (RtScene::intersectRays) of kMaxTile rays, then radianceTile and attenuated().
   void tracedTile(std::span<const SecondaryRay> rays, std::span<vec3> out) const;

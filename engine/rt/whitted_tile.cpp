@@ -40,10 +40,12 @@ struct PendingLight {
 
 void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                                  std::span<const std::uint32_t> seeds, int depth,
-                                 std::span<const RayCone* const> cone, std::span<vec3> out) const {
+                                 std::span<const RayCone* const> cone, std::span<vec3> out,
+                                 std::span<const vec4> textureSignal) const {
   const std::size_t n = rays.size(), lights = lights_.size();
   DIPTYCH_CHECK(n <= kMaxTile && hits.size() == n && seeds.size() == n && out.size() >= n &&
-                    (cone.empty() || cone.size() == n),
+                    (cone.empty() || cone.size() == n) &&
+                    (textureSignal.empty() || textureSignal.size() == n),
                 "WhittedTracer::radianceTile: tile sizes disagree");
   // radianceAt's contract: the hits were traced at a depth the recursion reaches (radiance()
   // returns 0 beyond maxDepth without tracing, so a caller past it traced rays for nothing).
@@ -85,8 +87,9 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
     }
     const RayCone* c = cone.empty() ? nullptr : cone[i];
     // In place (guaranteed copy elision): an assignment would copy the ~250-byte point.
-    const SurfacePoint& p = *::new (static_cast<void*>(point(i)))
-                                SurfacePoint(surfaceAt(ray, *hits[i], c, cones[i], coned[i]));
+    SurfacePoint& p = *::new (static_cast<void*>(point(i)))
+                          SurfacePoint(surfaceAt(ray, *hits[i], c, cones[i], coned[i]));
+    if (!textureSignal.empty()) applyTextureSignal(p, scene_, textureSignal[i]);
     shaded[i] = true;
     // direct()'s tests (lightTerm); the shadow rays go to the stream instead of rtcOccluded1.
     const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};

@@ -8,7 +8,6 @@
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/environment.h"
-#include "engine/scene/gltf_pbr.h"
 #include "engine/shading/shading.h"
 #include "passes/common/exact_hits.h"
 #include "passes/raster/gbuffer_surface.h"
@@ -16,24 +15,6 @@
 #include "passes/slots.h"
 
 namespace diptych {
-namespace {
-
-// The texture_filtering slot's colour and coverage replace shade's own level-0 lookup (a = -1:
-// none there): the colour the material's model reads (shading.glsl textureSignalColor). On
-// lecture-model materials re-mapped per texel (remapsPerTexel: glTF materials shaded with the
-// lecture's model) the signal is the base colour, and the coefficients are mapped from it
-// (withBaseColorSignal; docs/textures.md).
-void applyAlbedo(SurfacePoint& sp, const Scene& scene, const CpuFloatRow& albedo, int x) {
-  const float a = albedo(x, 3);
-  if (a < 0.f) return;
-  if (sp.resolved.model != shading::SHADING_MODEL_GLTF &&
-      remapsPerTexel(scene.material(sp.material)))
-    sp.resolved = withBaseColorSignal(sp.resolved, albedo.rgb(x), a);
-  else
-    sp.resolved = shading::withTextureSignal(sp.resolved, albedo.rgb(x), a);
-}
-
-}  // namespace
 
 ParamSchema ShadePass::schema() {
   return {ParamSpec::choice("domain", "auto", {"auto", "gl", "cpu"},
@@ -104,7 +85,8 @@ void ShadePass::execute(PassContext& c) {
       // the ~250-byte point went through a stack temporary and was copied (perf, issue 14).
       // SurfacePoint is trivially destructible, so the slot's old value needs no destructor.
       ::new (&points[x]) SurfacePoint(makeSurfacePoint(scene, world.geometry(), *hit, eyes[x]));
-      if (albedoRow) applyAlbedo(points[x], scene, albedoRow, x);
+      // The texture_filtering signal replaces shade's own level-0 lookup (a < 0: none there).
+      if (albedoRow) applyTextureSignal(points[x], scene, vec4(albedoRow.rgb(x), albedoRow(x, 3)));
     }
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance;

@@ -3,17 +3,21 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <span>
 #include <vector>
 
 #include "engine/graph/render_world.h"
+#include "engine/graph/scene_needs.h"
 #include "engine/rt/camera_rays.h"
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/ray_cone.h"
 #include "engine/rt/whitted.h"
+#include "passes/rt/rt_whitted.h"
 #include "passes/rt/sdf_steps.h"
+#include "passes/rt/texture_supersample.h"
 
 namespace diptych {
 namespace {
@@ -46,12 +50,22 @@ ParamSchema RtDistributedPass::schema(int defaultSpp) {
                             "texture level at traced hits: level 0, or ray cones (RTG ch. 20)")};
 }
 
+ParamSchema RtWhittedPass::schema() {
+  ParamSchema s = RtDistributedPass::schema(1);
+  s.push_back(ParamSpec::integer(
+      "texture_samples", 1, 1, 64,
+      "N: each pixel's texture colour averaged over N x N sub-pixel rays (texture_supersample's "
+      "signal: the texture_filtering slot's exact answer); 1: the pixel centre's lookup"));
+  return s;
+}
+
 void RtDistributedPass::setup(PassBuilder& b) {
   b.needs(SceneNeed::Geometry);
   spp_ = stratifiedSampleCount(b.params().integer("spp"));
   maxDepth_ = b.params().integer("depth");
   areaSamples_ = b.params().integer("area_samples");
   rayCones_ = b.params().string("texture_lod") == "cone";
+  if (!thinLens_) textureSamples_ = b.params().integer("texture_samples");
   color_ = b.write("color", {Format::RGBA32F, b.frame().width, b.frame().height},
                    vec4(0.f, 0.f, 0.f, 1.f));
   sdfSteps_ = writeSdfSteps(b);
@@ -74,6 +88,16 @@ void RtDistributedPass::execute(PassContext& c) {
   const RayCone* cone = rayCones_ ? &primaryCone : nullptr;
   const PinholeFrame pinhole(camera, frame.width, frame.height);
   const bool lens = camera.aperture > 0.f;
+  // rt_whitted's texture_samples: row y's texture signal (texture_supersample's), traced first.
+  const bool textureSignal =
+      textureSamples_ > 1 && sceneSatisfies(world.scene(), SceneNeed::TexturedMaterial);
+  std::atomic<std::int64_t> textureRays = 0;
+  const auto textureRow = [&](int y, std::vector<vec4>& signal) {
+    signal.resize(textureSignal ? std::size_t(frame.width) : 0);
+    if (textureSignal)
+      textureRays += supersampleTextureRow(world.scene(), world.geometry(), world.rtScene(),
+                                           pinhole, nullptr, textureSamples_, y, signal);
+  };
   // The primary ray of pixel x's sample s (its seed in `seed`), as below.
   const auto sampleRay = [&](int x, int y, int s, std::span<const int> lensStratum,
                              std::uint32_t& seed) {
@@ -98,6 +122,9 @@ void RtDistributedPass::execute(PassContext& c) {
     tbb::parallel_for(0, frame.height, [&](int y) {
       std::vector<int> lensStratum(std::size_t(spp_), 0);
       std::vector<vec3> sum(std::size_t(frame.width), vec3(0.f));
+      std::vector<vec4> signal;
+      textureRow(y, signal);
+      vec4 signalOf[kPrimaryTile];
       Ray rays[kPrimaryTile];
       std::uint32_t seeds[kPrimaryTile];
       int pixelOf[kPrimaryTile];
@@ -110,8 +137,11 @@ void RtDistributedPass::execute(PassContext& c) {
         const RayCone* cones[kPrimaryTile];
         vec3 colors[kPrimaryTile];
         std::fill_n(cones, filled, cone);
+        for (std::size_t i = 0; i < filled && textureSignal; ++i)
+          signalOf[i] = signal[std::size_t(pixelOf[i])];
         tracer.radianceTile({rays, filled}, {found, filled}, {seeds, filled}, 1,
-                            {cones, cone ? filled : 0}, {colors, filled});
+                            {cones, cone ? filled : 0}, {colors, filled},
+                            {signalOf, textureSignal ? filled : 0});
         for (std::size_t i = 0; i < filled; ++i) sum[std::size_t(pixelOf[i])] += colors[i];
         filled = 0;
       };
@@ -131,12 +161,14 @@ void RtDistributedPass::execute(PassContext& c) {
         out.setF(x, y, 3, 1.f);
       }
     });
-    c.count("rays", double(tracer.raysTraced()));
+    c.count("rays", double(tracer.raysTraced() + textureRays.load()));
     c.count("samples", double(spp_) * frame.width * frame.height);
     return;
   }
   tbb::parallel_for(0, frame.height, [&](int y) {
     std::vector<int> lensStratum(std::size_t(spp_), 0);
+    std::vector<vec4> signal;
+    textureRow(y, signal);
     for (int x = 0; x < frame.width; ++x) {
       const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
       // The same pixel pattern and seeds as rt_whitted, so that the two differ only by the lens.
@@ -147,7 +179,8 @@ void RtDistributedPass::execute(PassContext& c) {
       for (int s = 0; s < spp_; ++s) {
         std::uint32_t seed;
         const Ray ray = sampleRay(x, y, s, lensStratum, seed);
-        sum += tracer.radiance(ray, 1, seed, cone);
+        sum += tracer.radiance(ray, 1, seed, cone, nullptr,
+                               textureSignal ? &signal[std::size_t(x)] : nullptr);
       }
       storeSdfPixel(steps, x, y);
       const vec3 color = sum / float(spp_);
@@ -155,7 +188,7 @@ void RtDistributedPass::execute(PassContext& c) {
       out.setF(x, y, 3, 1.f);
     }
   });
-  c.count("rays", double(tracer.raysTraced()));
+  c.count("rays", double(tracer.raysTraced() + textureRays.load()));
   c.count("samples", double(spp_) * frame.width * frame.height);
 }
 

@@ -30,6 +30,7 @@ class RtDistributedPass : public Pass {
   bool thinLens_ = true;
   int spp_ = 16, maxDepth_ = 5, areaSamples_ = 16;
   bool rayCones_ = false;
+  int textureSamples_ = 1;  // rt_whitted's texture_samples (rt_whitted.h)
   ResourceId color_ = kNoResource;
   ResourceId sdfSteps_ = kNoResource;  // passes/rt/sdf_steps.h; only with SDF objects
 };

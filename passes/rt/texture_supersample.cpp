@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "engine/graph/render_world.h"
 #include "engine/rt/camera_rays.h"
@@ -44,17 +45,20 @@ void TextureSupersamplePass::execute(PassContext& c) {
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
   std::atomic<std::int64_t> rays = 0;
   tbb::parallel_for(0, frame.height, [&](int y) {
-    rays += supersampleRow(world.scene(), world.geometry(), rt, pinhole, hits, samples_, y, out);
+    thread_local std::vector<vec4> row;  // per thread, reused row after row
+    row.resize(std::size_t(frame.width));
+    rays += supersampleTextureRow(world.scene(), world.geometry(), rt, pinhole, &hits, samples_, y,
+                                  row);
+    for (int x = 0; x < frame.width; ++x)
+      for (int ch = 0; ch < 4; ++ch) out.setF(x, y, ch, row[std::size_t(x)][ch]);
   });
   // The rays traced: N^2 per covered pixel; the uncovered ones trace none.
   c.count("rays", double(rays));
 }
 
-std::int64_t TextureSupersamplePass::supersampleRow(const Scene& scene,
-                                                    const WorldGeometry& geometry,
-                                                    const RtScene& rt, const PinholeFrame& pinhole,
-                                                    const CpuImage& hits, int n, int y,
-                                                    CpuImage& out) {
+std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geometry,
+                                   const RtScene& rt, const PinholeFrame& pinhole,
+                                   const CpuImage* hits, int n, int y, std::span<vec4> out) {
   // The row's sub-pixel rays, pixel by pixel in stratum order, go to Embree in coherent streams
   // of kStreamRays (RtScene::intersectRays, as rt_distributed's primary rays): one traversal
   // setup per packet of neighbouring rays instead of one rtcIntersect1 per ray. Each pixel sums
@@ -73,8 +77,7 @@ std::int64_t TextureSupersamplePass::supersampleRow(const Scene& scene,
   vec4 sum(0.f);
   const auto finish = [&] {
     if (pixel < 0) return;
-    const vec4 albedo = count > 0 ? sum / float(count) : vec4(-1.f);
-    for (int ch = 0; ch < 4; ++ch) out.setF(pixel, y, ch, albedo[ch]);
+    out[std::size_t(pixel)] = count > 0 ? sum / float(count) : vec4(-1.f);
   };
   const auto flush = [&] {
     CameraRays{rt, scene, geometry}.intersectRays({rays, filled}, {tileHits, filled},
@@ -95,10 +98,10 @@ std::int64_t TextureSupersamplePass::supersampleRow(const Scene& scene,
     }
     filled = 0;
   };
-  for (int x = 0; x < out.desc.width; ++x) {
+  for (int x = 0; x < int(out.size()); ++x) {
     // Coverage only: lifting a texel onto its analytic shape never changes whether it is one.
-    if (hits.u(x, y, 0) == 0u) {
-      for (int ch = 0; ch < 4; ++ch) out.setF(x, y, ch, -1.f);
+    if (hits && hits->u(x, y, 0) == 0u) {
+      out[std::size_t(x)] = vec4(-1.f);
       continue;
     }
     for (int j = 0; j < n; ++j)

@@ -9,6 +9,7 @@
 // equal to the Whitted reference). Counter "rays": the sub-pixel rays traced, N^2 per pixel
 // whose centre is covered (uncovered pixels trace none).
 #include <cstdint>
+#include <span>
 
 #include "engine/graph/pass.h"
 #include "engine/rt/rt_scene.h"
@@ -16,6 +17,15 @@
 #include "passes/slots.h"
 
 namespace diptych {
+
+// Row y of the signal into out[x] (out.size(): the frame's width) from N x N sub-pixel rays per
+// pixel, traced as coherent Embree streams; returns the number of rays traced. hits: the
+// G-buffer's hits, whose uncovered pixels get -1 and trace nothing; null: every pixel is traced
+// (the Whitted reference's texture_samples, which has no G-buffer: a pixel none of whose rays
+// hit gets -1).
+std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geometry,
+                                   const RtScene& rt, const PinholeFrame& pinhole,
+                                   const CpuImage* hits, int n, int y, std::span<vec4> out);
 
 class TextureSupersamplePass : public Pass {
  public:
@@ -30,11 +40,6 @@ class TextureSupersamplePass : public Pass {
                              const PinholeFrame& pinhole, int n, int x, int y);
 
  private:
-  // Row y of the signal from N x N sub-pixel rays per pixel covered in `hits`, traced as streams;
-  // returns the number of rays traced.
-  static std::int64_t supersampleRow(const Scene& scene, const WorldGeometry& geometry,
-                                     const RtScene& rt, const PinholeFrame& pinhole,
-                                     const CpuImage& hits, int n, int y, CpuImage& out);
   int samples_ = 4;  // N
   SlotIo io_;
 };

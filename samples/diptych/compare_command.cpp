@@ -16,6 +16,7 @@
 #include "engine/gl/context.h"
 #include "engine/graph/device_info.h"
 #include "engine/graph/export.h"
+#include "engine/graph/scene_needs.h"
 #include "engine/metrics/metrics.h"
 #include "engine/metrics/signal_metrics.h"
 #include "engine/scene/camera_math.h"
@@ -43,6 +44,9 @@ struct CompareOptions {
   std::string scene, variants, reference = "whitted", out = "out", size = "640x480",
                                metric = "flip_mean", context = "auto", shading;
   int frames = 3, warmup = 1, rounds = 1;
+  // N: each pixel's texture colour over N x N sub-pixel rays in the reference and the
+  // all-exact texture producer (the texture_filtering slot's exact answer; docs/compare.md).
+  int textureSamples = kExactTextureSamples;
 };
 
 // The median over timing rounds of a variant's frame and of each pass, and its speed-up paired
@@ -139,7 +143,10 @@ nlohmann::json signalErrors(const Scene& scene, const GraphRun& run, const Recip
       {"reflection",
        [](const Material& m) { return shading::materialHasReflection(m) ? 1.f : 0.f; }},
       {"transmission",
-       [](const Material& m) { return shading::materialHasTransmission(m) ? 1.f : 0.f; }}};
+       [](const Material& m) { return shading::materialHasTransmission(m) ? 1.f : 0.f; }},
+      // The filtered colour where a colour texture is read (SceneNeed::TexturedMaterial's test).
+      {"texture_filtering",
+       [](const Material& m) { return !m.checker && m.colorTexture >= 0 ? 1.f : 0.f; }}};
   for (const auto& [slot, pick] : radianceSlots) {
     auto [mine, ref] = signalPair(slot);
     if (!mine || !(mine->desc == ref->desc)) continue;
@@ -178,11 +185,16 @@ void runCompare(const CompareOptions& o) {
   if (o.rounds < 1) throw InputError("--rounds", "", "need at least one timing round");
   const auto [width, height] = parseSize(o.size, 8192);
   const PassRegistry& registry = builtinPasses();
-  const ReferenceSpec reference = parseReference(o.reference, registry);
+  if (o.textureSamples < 1 || o.textureSamples > 64)
+    throw InputError("--texture-samples", std::to_string(o.textureSamples),
+                     "expected a whole number of samples per axis in 1..64");
+  ReferenceSpec reference = parseReference(o.reference, registry);
+  reference.textureSamples = o.textureSamples;
   std::vector<Variant> variants =
       o.variants.empty() ? defaultVariants(registry) : loadVariants(o.variants, registry);
   std::vector<Recipe> recipes;
-  for (const Variant& v : variants) recipes.push_back(v.build(registry));  // errors before any work
+  for (const Variant& v : variants)  // errors before any work
+    recipes.push_back(v.build(registry, o.textureSamples));
 
   checkShadingOption(o.shading);
   Scene scene = loadScene(sceneFile);
@@ -193,16 +205,17 @@ void runCompare(const CompareOptions& o) {
   if (o.variants.empty() && analytic) {
     for (const Variant& v : geometryVariants()) {
       variants.push_back(v);
-      recipes.push_back(v.build(registry));
+      recipes.push_back(v.build(registry, o.textureSamples));
     }
   }
   // And the surface-detail axis where it has bump maps; their exact answer, the reference, is
   // the displaced surface (docs/materials.md#bump-vs-normal-maps).
   const bool bumped = hasBumpMaps(scene);
+  const bool textured = sceneSatisfies(scene, SceneNeed::TexturedMaterial);
   if (o.variants.empty() && bumped) {
     for (const Variant& v : surfaceDetailVariants()) {
       variants.push_back(v);
-      recipes.push_back(v.build(registry));
+      recipes.push_back(v.build(registry, o.textureSamples));
     }
   }
   const FrameSettings frame{width, height,
@@ -231,8 +244,12 @@ void runCompare(const CompareOptions& o) {
   int step = 0;
 
   // The reference, cached by scene contents + settings.
-  progress("compare", step, steps,
-           "reference " + reference.text + (bumped ? " on the displaced surfaces" : ""));
+  progress(
+      "compare", step, steps,
+      "reference " + reference.text + (bumped ? " on the displaced surfaces" : "") +
+          (textured && reference.passType == "rt_whitted" && o.textureSamples > 1
+               ? fmt::format(", each pixel's texture colour over {0} x {0} rays", o.textureSamples)
+               : ""));
   const auto cached = dir / "cache" / ("reference-" + cacheKey(scene, reference, frame) + ".exr");
   Image referenceImage;
   double referenceMs = 0;
@@ -292,8 +309,8 @@ void runCompare(const CompareOptions& o) {
   }
   progress("compare", ++step, steps, "exact slot signals");
 
-  // Exact slot signals on the shared G-buffer: the all-exact hybrid.
-  const Recipe exactRecipe = defaultHybridRecipe();
+  // Exact slot signals on the shared G-buffer: the all-exact hybrid, its texture producer at N.
+  const Recipe exactRecipe = exactHybridRecipe(o.textureSamples);
   auto signalOutputs = [](const Recipe& r) {
     std::vector<std::string> outs = {r.outputs.front(), "gbuffer.hits"};
     for (const std::string& slot : techniqueSlotNames())
@@ -504,7 +521,10 @@ void runCompare(const CompareOptions& o) {
         {"cached", referenceCached},
         // The time too, from the run that cached the image; with rounds it is this run's.
         {"ms_cached", referenceCached && o.rounds == 1},
-        {"surfaces", bumped ? "displaced" : "as authored"}}},
+        {"surfaces", bumped ? "displaced" : "as authored"},
+        // Where the scene has colour textures: the footprint each pixel's texture colour is
+        // averaged over, in the reference and the exact texture producer (null: none).
+        {"texture_samples", textured ? nlohmann::json(o.textureSamples) : nlohmann::json()}}},
       {"frames", o.frames},
       {"warmup", o.warmup},
       {"rounds", o.rounds},
@@ -517,7 +537,7 @@ void runCompare(const CompareOptions& o) {
            "reference and variants alike: per pass, median of {} frames after {} warm-up frames "
            "(steady_clock); total = sum of per-pass medians{}. One-time costs (context, BVH "
            "build, scene upload; each recipe's first frame) are reported apart, never inside a "
-           "frame{}",
+           "frame{}{}",
            o.frames, o.warmup,
            o.rounds > 1 ? fmt::format("; {} timing rounds (reference, then every variant, in "
                                       "turn): medians over rounds, speed-ups paired per round",
@@ -530,7 +550,16 @@ void runCompare(const CompareOptions& o) {
                ? "; NO WARM-UP: the first frame's unrecorded first-use work (a GL driver "
                  "compiling programs at their first draw) is inside these medians, so the times "
                  "are not steady-state figures"
-               : "")}};
+               : "",
+           !textured ? ""
+           : reference.passType == "rt_whitted"
+               ? fmt::format("; texture colour in the reference and the exact texture producer: "
+                             "each pixel's footprint mean over {0} x {0} rays (--texture-samples)",
+                             o.textureSamples)
+               : fmt::format("; texture colour in the exact texture producer: each pixel's "
+                             "footprint mean over {0} x {0} rays (--texture-samples); the "
+                             "reference's own samples integrate each pixel",
+                             o.textureSamples))}};
   std::vector<std::string> stepFiles;
   if (sdfSteps)
     header["sdf_steps"] =
@@ -561,6 +590,11 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--variants", o->variants,
                   "Variants: a .json file or comma-separated default names");
   cmd->add_option("--reference", o->reference, "whitted | distributed:SPP | path:SPP")
+      ->capture_default_str();
+  cmd->add_option("--texture-samples", o->textureSamples,
+                  "N: on scenes with colour textures, each pixel's texture colour averaged over "
+                  "N x N sub-pixel rays in the reference and the exact texture producer (the "
+                  "texture_filtering slot's exact answer); 1: the pixel centre's lookup")
       ->capture_default_str();
   cmd->add_option("--frames", o->frames, "Measured frames per variant (median)")
       ->capture_default_str();

@@ -17,8 +17,17 @@
 
 namespace diptych::cli {
 
-Recipe Variant::build(const PassRegistry& registry) const {
-  Recipe recipe = recipeFile.empty() ? defaultHybridRecipe() : loadRecipe(recipeFile);
+Recipe exactHybridRecipe(int textureSamples) {
+  Recipe recipe = defaultHybridRecipe();
+  for (RecipePass& pass : recipe.passes)
+    if (pass.type == "texture_supersample") pass.params["samples"] = textureSamples;
+  return recipe;
+}
+
+Recipe Variant::build(const PassRegistry& registry, int exactTextureSamples) const {
+  Recipe recipe = !recipeFile.empty()       ? loadRecipe(recipeFile)
+                  : exactTextureSamples > 0 ? exactHybridRecipe(exactTextureSamples)
+                                            : defaultHybridRecipe();
   for (const std::string& s : slots) applySlotOverride(recipe, parseSlotOverride(s), registry);
   return recipe;
 }
@@ -162,6 +171,7 @@ Recipe ReferenceSpec::recipe() const {
   r.file = "<reference " + text + ">";
   nlohmann::json params = nlohmann::json::object();
   if (passType != "rt_whitted") params["spp"] = spp;
+  if (passType == "rt_whitted" && textureSamples > 1) params["texture_samples"] = textureSamples;
   r.passes = {{.name = "reference", .type = passType, .params = params, .place = "--reference"}};
   r.outputs = {"reference.color"};
   if (passType == "rt_path") r.outputs.push_back("reference.variance");  // per-pixel variance

@@ -14,6 +14,14 @@
 
 namespace diptych::cli {
 
+// N of the texture_filtering slot's exact answer when measuring against it (compare's default
+// --texture-samples, sweep's exact frame): each pixel's texture colour over N x N sub-pixel rays.
+// The built-in hybrid recipe itself uses N = 1 (the pixel centre), its cheap form.
+inline constexpr int kExactTextureSamples = 4;
+
+// The built-in hybrid recipe with its texture_supersample at N = textureSamples.
+Recipe exactHybridRecipe(int textureSamples);
+
 struct Variant {
   std::string name;
   std::string recipeFile;          // empty: the built-in hybrid recipe
@@ -24,7 +32,10 @@ struct Variant {
   // "flat", "bump", "normal_map" or "displaced": how bump-mapped materials are rendered, the
   // "surface detail" axis (engine/shading/surface_detail.h); empty: as the scene says (bump).
   std::string surfaceDetail;
-  Recipe build(const PassRegistry& registry) const;  // recipe with the overrides applied
+  // The recipe with the overrides applied. exactTextureSamples > 0: the built-in recipe's
+  // texture_supersample (the texture_filtering slot's exact producer) takes N = that many
+  // samples per axis before the overrides (compare's --texture-samples).
+  Recipe build(const PassRegistry& registry, int exactTextureSamples = 0) const;
 };
 
 std::vector<Variant> defaultVariants(const PassRegistry& registry);
@@ -49,6 +60,9 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
 struct ReferenceSpec {
   std::string text, passType;
   int spp = 1;
+  // rt_whitted's texture_samples (passes/rt/rt_whitted.h): > 1 averages each pixel's texture
+  // colour over N x N sub-pixel rays, the texture_filtering slot's exact answer.
+  int textureSamples = 1;
   Recipe recipe() const;
 };
 ReferenceSpec parseReference(const std::string& text, const PassRegistry& registry);

@@ -23,6 +23,7 @@
 #include "passes/registry.h"
 #include "passes/slots.h"
 #include "samples/diptych/compare/runner.h"
+#include "samples/diptych/compare/variants.h"
 #include "samples/diptych/parse_size.h"
 
 namespace diptych::cli {
@@ -246,7 +247,9 @@ nlohmann::json runSweep(const SweepOptions& o) {
       state = std::make_unique<StateReference>();
       state->scene = std::make_unique<Scene>(sceneAt(scene, point, o.light));
       state->world = std::make_unique<RenderWorld>(*state->scene, context.get());
-      const Recipe exactRecipe = defaultHybridRecipe();
+      // The texture_filtering slot's exact answer is the footprint's mean, not the built-in
+      // recipe's pixel-centre lookup (against which point sampling would look best).
+      const Recipe exactRecipe = exactHybridRecipe(kExactTextureSamples);
       state->exactSignal = slotSignal(exactRecipe, base.slot);
       state->exact =
           runGraph(exactRecipe, *state->world, frame, {"gbuffer.hits", state->exactSignal}, 0, 1);
