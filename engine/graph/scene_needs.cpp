@@ -96,11 +96,13 @@ bool sceneSatisfies(const Scene& s, SceneNeed need) {
     case SceneNeed::EnvironmentMap:
       return s.environment.type != EnvironmentType::Color;
     case SceneNeed::TexturedMaterial:
-      return anyUsedMaterial(s, [&](const Material& m) {
-        return !m.checker && m.colorTexture >= 0 && m.colorTexture < int(s.textures.size());
-      });
+      return anyUsedMaterial(s, [&](const Material& m) { return readsColorTexture(s, m); });
   }
   return false;
+}
+
+bool readsColorTexture(const Scene& scene, const Material& m) {
+  return !m.checker && m.colorTexture >= 0 && m.colorTexture < int(scene.textures.size());
 }
 
 }  // namespace diptych

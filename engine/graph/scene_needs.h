@@ -20,5 +20,8 @@ enum class SceneNeed {
 const char* sceneNeedName(SceneNeed need);
 const char* missingReason(SceneNeed need);  // "scene has no transmissive materials"
 bool sceneSatisfies(const Scene& scene, SceneNeed need);
+// A material with a colour texture (and no checker, which replaces it): what TexturedMaterial
+// asks of a used material, and the pixels the texture_filtering signal is measured on.
+bool readsColorTexture(const Scene& scene, const Material& material);
 
 }  // namespace diptych

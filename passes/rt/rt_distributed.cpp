@@ -50,15 +50,6 @@ ParamSchema RtDistributedPass::schema(int defaultSpp) {
                             "texture level at traced hits: level 0, or ray cones (RTG ch. 20)")};
 }
 
-ParamSchema RtWhittedPass::schema() {
-  ParamSchema s = RtDistributedPass::schema(1);
-  s.push_back(ParamSpec::integer(
-      "texture_samples", 1, 1, 64,
-      "N: each pixel's texture colour averaged over N x N sub-pixel rays (texture_supersample's "
-      "signal: the texture_filtering slot's exact answer); 1: the pixel centre's lookup"));
-  return s;
-}
-
 void RtDistributedPass::setup(PassBuilder& b) {
   b.needs(SceneNeed::Geometry);
   spp_ = stratifiedSampleCount(b.params().integer("spp"));
@@ -66,6 +57,12 @@ void RtDistributedPass::setup(PassBuilder& b) {
   areaSamples_ = b.params().integer("area_samples");
   rayCones_ = b.params().string("texture_lod") == "cone";
   if (!thinLens_) textureSamples_ = b.params().integer("texture_samples");
+  // Each sample would take its pixel's mean, which the samples already integrate: the texture
+  // filtered twice, and a silhouette's colours bled onto the other side.
+  if (textureSamples_ > 1 && spp_ > 1)
+    b.params().fail("texture_samples", "texture_samples > 1 needs spp 1: with " +
+                                           std::to_string(spp_) +
+                                           " samples a pixel already integrates its texture");
   color_ = b.write("color", {Format::RGBA32F, b.frame().width, b.frame().height},
                    vec4(0.f, 0.f, 0.f, 1.f));
   sdfSteps_ = writeSdfSteps(b);
@@ -88,16 +85,10 @@ void RtDistributedPass::execute(PassContext& c) {
   const RayCone* cone = rayCones_ ? &primaryCone : nullptr;
   const PinholeFrame pinhole(camera, frame.width, frame.height);
   const bool lens = camera.aperture > 0.f;
-  // rt_whitted's texture_samples: row y's texture signal (texture_supersample's), traced first.
+  // rt_whitted's texture_samples (rt_whitted.h): each pixel's texture signal, traced first.
   const bool textureSignal =
       textureSamples_ > 1 && sceneSatisfies(world.scene(), SceneNeed::TexturedMaterial);
   std::atomic<std::int64_t> textureRays = 0;
-  const auto textureRow = [&](int y, std::vector<vec4>& signal) {
-    signal.resize(textureSignal ? std::size_t(frame.width) : 0);
-    if (textureSignal)
-      textureRays += supersampleTextureRow(world.scene(), world.geometry(), world.rtScene(),
-                                           pinhole, nullptr, textureSamples_, y, signal);
-  };
   // The primary ray of pixel x's sample s (its seed in `seed`), as below.
   const auto sampleRay = [&](int x, int y, int s, std::span<const int> lensStratum,
                              std::uint32_t& seed) {
@@ -122,8 +113,10 @@ void RtDistributedPass::execute(PassContext& c) {
     tbb::parallel_for(0, frame.height, [&](int y) {
       std::vector<int> lensStratum(std::size_t(spp_), 0);
       std::vector<vec3> sum(std::size_t(frame.width), vec3(0.f));
-      std::vector<vec4> signal;
-      textureRow(y, signal);
+      std::vector<vec4> signal(textureSignal ? std::size_t(frame.width) : 0);
+      if (textureSignal)
+        textureRays += whittedTextureRow(world.scene(), world.geometry(), rt, pinhole,
+                                         textureSamples_, y, signal);
       vec4 signalOf[kPrimaryTile];
       Ray rays[kPrimaryTile];
       std::uint32_t seeds[kPrimaryTile];
@@ -167,20 +160,24 @@ void RtDistributedPass::execute(PassContext& c) {
   }
   tbb::parallel_for(0, frame.height, [&](int y) {
     std::vector<int> lensStratum(std::size_t(spp_), 0);
-    std::vector<vec4> signal;
-    textureRow(y, signal);
     for (int x = 0; x < frame.width; ++x) {
       const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
       // The same pixel pattern and seeds as rt_whitted, so that the two differ only by the lens.
       // A pinhole (rt_whitted) never reads the lens sample: skip its shuffle and strata.
       if (lens) shuffle(lensStratum, pcgHash(pixel ^ 0x4c454e53u));  // "LENS"
       beginSdfPixel();
+      // Inside the pixel's step count, whose sum is RtScene::sdfStepStats (sdf_steps.h); ray by
+      // ray, as this loop traces: the streams' signal up to Embree's packet rounding.
+      const vec4 signal = textureSignal ? TextureSupersamplePass::singleRayPixel(
+                                              world.scene(), world.geometry(), world.rtScene(),
+                                              pinhole, textureSamples_, x, y)
+                                        : vec4(-1.f);
+      if (textureSignal) textureRays += std::int64_t(textureSamples_) * textureSamples_;
       vec3 sum(0.f);
       for (int s = 0; s < spp_; ++s) {
         std::uint32_t seed;
         const Ray ray = sampleRay(x, y, s, lensStratum, seed);
-        sum += tracer.radiance(ray, 1, seed, cone, nullptr,
-                               textureSignal ? &signal[std::size_t(x)] : nullptr);
+        sum += tracer.radiance(ray, 1, seed, cone, nullptr, textureSignal ? &signal : nullptr);
       }
       storeSdfPixel(steps, x, y);
       const vec3 color = sum / float(spp_);

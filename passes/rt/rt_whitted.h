@@ -1,4 +1,9 @@
 #pragma once
+#include <cstdint>
+#include <span>
+
+#include "engine/rt/rt_scene.h"
+#include "engine/scene/camera_math.h"
 #include "passes/rt/rt_distributed.h"
 
 namespace diptych {
@@ -14,7 +19,9 @@ namespace diptych {
 // signal, supersampleTextureRow), applied at the camera ray's hit as the hybrid's shade applies
 // that producer's signal (applyTextureSignal), so that rt_whitted with N equals the all-exact
 // hybrid with texture_supersample:samples=N; 1 (the default): the pixel centre's own lookup.
-// Nothing is traced for it on a scene without colour-textured materials (SceneNeed).
+// Only pixels whose centre ray hits trace the N x N rays; nothing is traced for it on a scene
+// without colour-textured materials (SceneNeed), and it needs spp 1 (an error otherwise: with
+// more samples each pixel already integrates its texture).
 // Params: rt_distributed's, with spp 1 by default, and texture_samples. Outputs: color RGBA32F,
 // and sdf_steps where the scene has SDF objects (passes/rt/sdf_steps.h).
 class RtWhittedPass : public RtDistributedPass {
@@ -22,5 +29,11 @@ class RtWhittedPass : public RtDistributedPass {
   RtWhittedPass() : RtDistributedPass(false) {}
   static ParamSchema schema();
 };
+
+// Row y of rt_whitted's texture signal into out (the frame's width): its pixel-centre rays traced
+// (coherent streams) for coverage, then supersampleTextureRow over the covered pixels (-1
+// elsewhere). Returns the rays traced, both kinds.
+std::int64_t whittedTextureRow(const Scene& scene, const WorldGeometry& geometry, const RtScene& rt,
+                               const PinholeFrame& pinhole, int n, int y, std::span<vec4> out);
 
 }  // namespace diptych

@@ -25,7 +25,7 @@ float stratum(int x, int i, int n) {
 }  // namespace
 
 ParamSchema TextureSupersamplePass::schema() {
-  return {ParamSpec::integer("samples", 4, 1, 64,
+  return {ParamSpec::integer("samples", kDefaultSamples, 1, 64,
                              "N: N x N stratified sub-pixel rays per pixel (1: the pixel centre)")};
 }
 
@@ -45,10 +45,15 @@ void TextureSupersamplePass::execute(PassContext& c) {
   const PinholeFrame pinhole(frame.camera, frame.width, frame.height);
   std::atomic<std::int64_t> rays = 0;
   tbb::parallel_for(0, frame.height, [&](int y) {
-    thread_local std::vector<vec4> row;  // per thread, reused row after row
+    // Per thread, reused row after row.
+    thread_local std::vector<vec4> row;
+    thread_local std::vector<std::uint8_t> covered;
     row.resize(std::size_t(frame.width));
-    rays += supersampleTextureRow(world.scene(), world.geometry(), rt, pinhole, &hits, samples_, y,
-                                  row);
+    covered.resize(std::size_t(frame.width));
+    // Coverage only: lifting a texel onto its analytic shape never changes whether it is one.
+    for (int x = 0; x < frame.width; ++x) covered[std::size_t(x)] = hits.u(x, y, 0) != 0u;
+    rays += supersampleTextureRow(world.scene(), world.geometry(), rt, pinhole, covered, samples_,
+                                  y, row);
     for (int x = 0; x < frame.width; ++x)
       for (int ch = 0; ch < 4; ++ch) out.setF(x, y, ch, row[std::size_t(x)][ch]);
   });
@@ -58,7 +63,8 @@ void TextureSupersamplePass::execute(PassContext& c) {
 
 std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geometry,
                                    const RtScene& rt, const PinholeFrame& pinhole,
-                                   const CpuImage* hits, int n, int y, std::span<vec4> out) {
+                                   std::span<const std::uint8_t> covered, int n, int y,
+                                   std::span<vec4> out) {
   // The row's sub-pixel rays, pixel by pixel in stratum order, go to Embree in coherent streams
   // of kStreamRays (RtScene::intersectRays, as rt_distributed's primary rays): one traversal
   // setup per packet of neighbouring rays instead of one rtcIntersect1 per ray. Each pixel sums
@@ -99,8 +105,7 @@ std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geom
     filled = 0;
   };
   for (int x = 0; x < int(out.size()); ++x) {
-    // Coverage only: lifting a texel onto its analytic shape never changes whether it is one.
-    if (hits && hits->u(x, y, 0) == 0u) {
+    if (!covered.empty() && !covered[std::size_t(x)]) {
       out[std::size_t(x)] = vec4(-1.f);
       continue;
     }

@@ -5,9 +5,9 @@
 // (its magnification filter) at the point it hits (resolvedColorAt: colour and alpha only).
 // Sub-rays that miss the scene are left out of the mean; a pixel whose centre misses (no G-buffer
 // hit) gets -1, and shade then uses its own lookup. N = 1 traces the pixel centre only: the
-// reference's own lookup (the built-in hybrid recipe uses it so that the all-exact hybrid stays
-// equal to the Whitted reference). Counter "rays": the sub-pixel rays traced, N^2 per pixel
-// whose centre is covered (uncovered pixels trace none).
+// Whitted reference's own lookup at its default texture_samples 1 (the built-in hybrid recipe
+// uses it so that the all-exact hybrid stays equal to that reference). Counter "rays": the
+// sub-pixel rays traced, N^2 per pixel whose centre is covered (uncovered pixels trace none).
 #include <cstdint>
 #include <span>
 
@@ -19,16 +19,18 @@
 namespace diptych {
 
 // Row y of the signal into out[x] (out.size(): the frame's width) from N x N sub-pixel rays per
-// pixel, traced as coherent Embree streams; returns the number of rays traced. hits: the
-// G-buffer's hits, whose uncovered pixels get -1 and trace nothing; null: every pixel is traced
-// (the Whitted reference's texture_samples, which has no G-buffer: a pixel none of whose rays
-// hit gets -1).
+// pixel, traced as coherent Embree streams; returns the number of rays traced. covered[x] false:
+// pixel x gets -1 and traces nothing (the G-buffer's uncovered pixels, or the Whitted
+// reference's pixels whose centre ray misses: texture_samples); covered empty: every pixel is
+// traced. A pixel none of whose rays hit gets -1.
 std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geometry,
                                    const RtScene& rt, const PinholeFrame& pinhole,
-                                   const CpuImage* hits, int n, int y, std::span<vec4> out);
+                                   std::span<const std::uint8_t> covered, int n, int y,
+                                   std::span<vec4> out);
 
 class TextureSupersamplePass : public Pass {
  public:
+  static constexpr int kDefaultSamples = 4;  // N, where a recipe does not set it
   static ParamSchema schema();
   Domain domain() const override { return Domain::Cpu; }
   void setup(PassBuilder& builder) override;

@@ -146,7 +146,7 @@ nlohmann::json signalErrors(const Scene& scene, const GraphRun& run, const Recip
        [](const Material& m) { return shading::materialHasTransmission(m) ? 1.f : 0.f; }},
       // The filtered colour where a colour texture is read (SceneNeed::TexturedMaterial's test).
       {"texture_filtering",
-       [](const Material& m) { return !m.checker && m.colorTexture >= 0 ? 1.f : 0.f; }}};
+       [&](const Material& m) { return readsColorTexture(scene, m) ? 1.f : 0.f; }}};
   for (const auto& [slot, pick] : radianceSlots) {
     auto [mine, ref] = signalPair(slot);
     if (!mine || !(mine->desc == ref->desc)) continue;
@@ -522,9 +522,15 @@ void runCompare(const CompareOptions& o) {
         // The time too, from the run that cached the image; with rounds it is this run's.
         {"ms_cached", referenceCached && o.rounds == 1},
         {"surfaces", bumped ? "displaced" : "as authored"},
-        // Where the scene has colour textures: the footprint each pixel's texture colour is
-        // averaged over, in the reference and the exact texture producer (null: none).
-        {"texture_samples", textured ? nlohmann::json(o.textureSamples) : nlohmann::json()}}},
+        // The footprint each pixel's texture colour is averaged over, N x N rays (rt_whitted's
+        // texture_samples; null: no colour textures, or a reference whose own samples
+        // integrate the pixel).
+        {"texture_samples", textured && reference.passType == "rt_whitted"
+                                ? nlohmann::json(o.textureSamples)
+                                : nlohmann::json()}}},
+      // The same N in the exact texture producer (texture_supersample) of every variant that
+      // keeps it; null on a scene without colour textures, where the slot is culled.
+      {"exact_texture_samples", textured ? nlohmann::json(o.textureSamples) : nlohmann::json()},
       {"frames", o.frames},
       {"warmup", o.warmup},
       {"rounds", o.rounds},

@@ -17,17 +17,22 @@
 
 namespace diptych::cli {
 
-Recipe exactHybridRecipe(int textureSamples) {
-  Recipe recipe = defaultHybridRecipe();
+namespace {
+void setTextureSamples(Recipe& recipe, int textureSamples) {
   for (RecipePass& pass : recipe.passes)
     if (pass.type == "texture_supersample") pass.params["samples"] = textureSamples;
+}
+}  // namespace
+
+Recipe exactHybridRecipe(int textureSamples) {
+  Recipe recipe = defaultHybridRecipe();
+  setTextureSamples(recipe, textureSamples);
   return recipe;
 }
 
 Recipe Variant::build(const PassRegistry& registry, int exactTextureSamples) const {
-  Recipe recipe = !recipeFile.empty()       ? loadRecipe(recipeFile)
-                  : exactTextureSamples > 0 ? exactHybridRecipe(exactTextureSamples)
-                                            : defaultHybridRecipe();
+  Recipe recipe = recipeFile.empty() ? defaultHybridRecipe() : loadRecipe(recipeFile);
+  if (exactTextureSamples > 0) setTextureSamples(recipe, exactTextureSamples);
   for (const std::string& s : slots) applySlotOverride(recipe, parseSlotOverride(s), registry);
   return recipe;
 }

@@ -11,13 +11,14 @@
 #include "engine/graph/recipe.h"
 #include "engine/graph/registry.h"
 #include "engine/scene/scene.h"
+#include "passes/rt/texture_supersample.h"
 
 namespace diptych::cli {
 
 // N of the texture_filtering slot's exact answer when measuring against it (compare's default
 // --texture-samples, sweep's exact frame): each pixel's texture colour over N x N sub-pixel rays.
 // The built-in hybrid recipe itself uses N = 1 (the pixel centre), its cheap form.
-inline constexpr int kExactTextureSamples = 4;
+inline constexpr int kExactTextureSamples = TextureSupersamplePass::kDefaultSamples;
 
 // The built-in hybrid recipe with its texture_supersample at N = textureSamples.
 Recipe exactHybridRecipe(int textureSamples);
@@ -32,9 +33,10 @@ struct Variant {
   // "flat", "bump", "normal_map" or "displaced": how bump-mapped materials are rendered, the
   // "surface detail" axis (engine/shading/surface_detail.h); empty: as the scene says (bump).
   std::string surfaceDetail;
-  // The recipe with the overrides applied. exactTextureSamples > 0: the built-in recipe's
-  // texture_supersample (the texture_filtering slot's exact producer) takes N = that many
-  // samples per axis before the overrides (compare's --texture-samples).
+  // The recipe with the overrides applied. exactTextureSamples > 0: the recipe's (built-in or
+  // file) texture_supersample, the texture_filtering slot's exact producer, takes N = that many
+  // samples per axis before the overrides (compare's --texture-samples); an override of the
+  // slot sets its own.
   Recipe build(const PassRegistry& registry, int exactTextureSamples = 0) const;
 };
 
