@@ -217,6 +217,25 @@ if(rc EQUAL 0 OR NOT count EQUAL 1 OR NOT err MATCHES "bad_param.txt: line 2: .*
   message(FATAL_ERROR "[bad_param] exit ${rc}, stderr: ${err}")
 endif()
 
+# On a textured scene the hybrid reference takes each pixel's texture colour over its footprint
+# (as compare does): anisotropic filtering measures closer to it than bilinear; against the pixel
+# centre's lookup bilinear, that lookup itself, would measure 0 (docs/viewer.md).
+file(WRITE "${WORK_DIR}/textures.txt" "frames 1
+slot texture_filtering=texture_bilinear
+screenshot bilinear
+slot texture_filtering=texture_anisotropic
+screenshot anisotropic
+quit
+")
+run_view(textures ${SOURCE_DIR}/samples/scenes/textures.json --size 160x120 --script textures.txt)
+expect_python("textures against the footprint" [=[
+import json, sys
+rb, ra = (json.load(open(f))["figures"]["rmse"] for f in sys.argv[1:3])
+print("rmse bilinear", rb, "anisotropic", ra)
+if not (rb > 0.03 and ra < 0.6 * rb):  # measured 0.084 and 0.026 at 160x120
+    sys.exit(f"rmse bilinear {rb}, anisotropic {ra} against the footprint")
+]=] "${WORK_DIR}/bilinear.json" "${WORK_DIR}/anisotropic.json")
+
 # Bad input: one error line, before any window (no display needed).
 file(WRITE "${WORK_DIR}/bad.txt" "frames 1\nzoom 3\n")
 expect_failure(bad_script EXPECT "bad.txt: line 2: unknown command 'zoom'"

@@ -67,15 +67,20 @@ Session::Session(Scene& scene, std::string scenePath, gl::GlContext& context, Re
       referenceText_(reference) {
   snapFov(sceneCamera_);  // a glTF camera's radians may have no exact float degrees
   camera_ = sceneCamera_;
+  // The hybrid and Whitted references take each pixel's texture colour over its footprint, the
+  // texture_filtering slot's exact answer, as compare's do (docs/compare.md): against the pixel
+  // centre's lookup the texture filters' error would favour the aliased point sample.
   if (reference == "hybrid") {
-    referenceRecipe_ = defaultHybridRecipe();
+    referenceRecipe_ = cli::exactHybridRecipe(cli::kExactTextureSamples);
   } else if (reference.ends_with(".json")) {
     referenceRecipe_ = loadRecipe(reference);
   } else {
     std::string text = reference;
     progressiveReference_ = text == "path" || text.starts_with("path:");
     if (text == "path") text = "path:1";
-    referenceRecipe_ = cli::parseReference(text, builtinPasses()).recipe();
+    cli::ReferenceSpec spec = cli::parseReference(text, builtinPasses());
+    spec.textureSamples = cli::kExactTextureSamples;
+    referenceRecipe_ = spec.recipe();
     if (progressiveReference_) referenceRecipe_.outputs = {"reference.color"};
   }
   // Both recipes must compile for this scene before a window frame is spent on them.
