@@ -80,12 +80,12 @@ class WhittedTracer {
   bool wantsHitNormal() const { return bool(observer_); }
   // radianceAt for a tile of up to kMaxTile rays (hits[i] null: a miss; seeds[i], cones[i]
   // each; cones empty: none) into out[i], with the direct light's shadow rays of all the tile's
-  // points traced as one coherent Embree stream (neighbouring pixels aimed at the same lights;
-  // textureSignal empty, or textureSignal[i] as radiance()'s for ray i)
+  // points traced as one coherent Embree stream (neighbouring pixels aimed at the same lights)
   // instead of one rtcOccluded1 each (engine/rt/whitted_tile.cpp): the same arithmetic, up to
   // the rounding of Embree's packet kernels (see there). Their reflected and transmitted rays
   // are traced ray by ray, as radiance() does. depth: 1..maxDepth (else an Error), as for
-  // radianceAt: radiance() traces nothing beyond maxDepth.
+  // radianceAt: radiance() traces nothing beyond maxDepth. textureSignal: empty, or one per ray
+  // (radiance()'s textureSignal).
   static constexpr std::size_t kMaxTile = 64;
   void radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                     std::span<const std::uint32_t> seeds, int depth,
