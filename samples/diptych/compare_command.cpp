@@ -212,6 +212,8 @@ void runCompare(const CompareOptions& o) {
   // the displaced surface (docs/materials.md#bump-vs-normal-maps).
   const bool bumped = hasBumpMaps(scene);
   const bool textured = sceneSatisfies(scene, SceneNeed::TexturedMaterial);
+  // rt_whitted takes --texture-samples; distributed and path references integrate the pixel.
+  const bool referenceFootprint = textured && reference.passType == "rt_whitted";
   if (o.variants.empty() && bumped) {
     for (const Variant& v : surfaceDetailVariants()) {
       variants.push_back(v);
@@ -247,7 +249,7 @@ void runCompare(const CompareOptions& o) {
   progress(
       "compare", step, steps,
       "reference " + reference.text + (bumped ? " on the displaced surfaces" : "") +
-          (textured && reference.passType == "rt_whitted" && o.textureSamples > 1
+          (referenceFootprint && o.textureSamples > 1
                ? fmt::format(", each pixel's texture colour over {0} x {0} rays", o.textureSamples)
                : ""));
   const auto cached = dir / "cache" / ("reference-" + cacheKey(scene, reference, frame) + ".exr");
@@ -525,9 +527,8 @@ void runCompare(const CompareOptions& o) {
         // The footprint each pixel's texture colour is averaged over, N x N rays (rt_whitted's
         // texture_samples; null: no colour textures, or a reference whose own samples
         // integrate the pixel).
-        {"texture_samples", textured && reference.passType == "rt_whitted"
-                                ? nlohmann::json(o.textureSamples)
-                                : nlohmann::json()}}},
+        {"texture_samples",
+         referenceFootprint ? nlohmann::json(o.textureSamples) : nlohmann::json()}}},
       // The same N in the exact texture producer (texture_supersample) of every variant that
       // keeps it; null on a scene without colour textures, where the slot is culled.
       {"exact_texture_samples", textured ? nlohmann::json(o.textureSamples) : nlohmann::json()},
@@ -558,7 +559,7 @@ void runCompare(const CompareOptions& o) {
                  "are not steady-state figures"
                : "",
            !textured ? ""
-           : reference.passType == "rt_whitted"
+           : referenceFootprint
                ? fmt::format("; texture colour in the reference and the exact texture producer: "
                              "each pixel's footprint mean over {0} x {0} rays (--texture-samples)",
                              o.textureSamples)
