@@ -20,7 +20,8 @@ WhittedTracer::WhittedTracer(const Scene& scene, const WorldGeometry& world, con
 }
 
 vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone,
-                             float* hitDistance, const vec4* textureSignal) const {
+                             float* hitDistance, const vec4* textureSignal,
+                             const SecondarySignals* secondarySignals) const {
   if (depth > settings_.maxDepth) return vec3(0.f);
   // Hit::Ng only for an observer: the shading rebuilds the normal (makeSurfacePoint).
   // Depth 1 is the camera ray: it does not see back faces of single-sided materials.
@@ -29,12 +30,14 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, cons
       depth == 1
           ? CameraRays{rt_, scene_, world_}.intersect(ray, h, wantsHitNormal())
           : rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, wantsHitNormal());
-  return radianceAt(ray, depth, seed, found ? &h : nullptr, cone, hitDistance, textureSignal);
+  return radianceAt(ray, depth, seed, found ? &h : nullptr, cone, hitDistance, textureSignal,
+                    secondarySignals);
 }
 
 vec3 WhittedTracer::radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
                                const RayCone* cone, float* hitDistance,
-                               const vec4* textureSignal) const {
+                               const vec4* textureSignal,
+                               const SecondarySignals* secondarySignals) const {
   countRay(ray, depth, hit);
   if (hitDistance)
     *hitDistance =
@@ -44,7 +47,7 @@ vec3 WhittedTracer::radianceAt(const Ray& ray, int depth, std::uint32_t seed, co
   bool coned = false;
   SurfacePoint p = surfaceAt(ray, *hit, cone, at, coned);
   if (textureSignal) applyTextureSignal(p, scene_, *textureSignal);
-  return shade(p, -ray.direction, depth, seed, coned ? &at : nullptr);
+  return shade(p, -ray.direction, depth, seed, coned ? &at : nullptr, secondarySignals);
 }
 
 void WhittedTracer::countRay(const Ray& ray, int depth, const Hit* hit) const {
@@ -98,19 +101,24 @@ vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t s
 }
 
 vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
-                          const RayCone* cone) const {
-  return shadeGiven(p, v, depth, seed, cone, direct(p, v, seed));
+                          const RayCone* cone, const SecondarySignals* secondarySignals) const {
+  return shadeGiven(p, v, depth, seed, cone, direct(p, v, seed), secondarySignals);
 }
 
 vec3 WhittedTracer::shadeGiven(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
-                               const RayCone* cone, const vec3& directSum) const {
+                               const RayCone* cone, const vec3& directSum,
+                               const SecondarySignals* secondarySignals) const {
   const shading::ShadingMaterial& m = p.resolved;
   vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + directSum;
   // The material's model says whether the signals exist (hasReflection, hasTransmission: as for
   // the hybrid's rt_reflection and rt_transmission); secondaryTerms weights them.
-  const vec3 trans = shading::hasTransmission(m) ? transmitted(p, v, depth, seed, cone) : vec3(0.f);
-  const vec3 refl =
-      shading::hasReflection(m, false) ? reflected(p, v, depth, seed, cone) : vec3(0.f);
+  const SecondarySignals* s = secondarySignals;
+  const vec3 trans = shading::hasTransmission(m)
+                         ? transmitted(p, v, depth, seed, cone, s ? &s->transmission : nullptr)
+                         : vec3(0.f);
+  const vec3 refl = shading::hasReflection(m, false)
+                        ? reflected(p, v, depth, seed, cone, s ? &s->reflection : nullptr)
+                        : vec3(0.f);
   return rad + shading::secondaryTerms(m, p.shadingNormal, v, refl, trans);
 }
 
@@ -158,20 +166,25 @@ vec3 WhittedTracer::attenuated(const SecondaryRay& s, const vec3& radiance, floa
 vec3 WhittedTracer::traced(const SecondaryRay& s) const {
   float distance = 0.f;
   const vec3 l = radiance(s.ray, s.depth, s.seed, s.hasCone ? &s.cone : nullptr,
-                          s.inside ? &distance : nullptr);
+                          s.inside ? &distance : nullptr,
+                          s.textureSignal.w >= 0.f ? &s.textureSignal : nullptr);
   return attenuated(s, l, distance);
 }
 
 vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
-                              const RayCone* cone) const {
+                              const RayCone* cone, const vec4* textureSignal) const {
   SecondaryRay s;
-  return secondaryRay(p, v, depth, seed, cone, true, s) ? traced(s) : vec3(0.f);
+  if (!secondaryRay(p, v, depth, seed, cone, true, s)) return vec3(0.f);
+  if (textureSignal) s.textureSignal = *textureSignal;
+  return traced(s);
 }
 
 vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
-                                const RayCone* cone) const {
+                                const RayCone* cone, const vec4* textureSignal) const {
   SecondaryRay s;
-  return secondaryRay(p, v, depth, seed, cone, false, s) ? traced(s) : vec3(0.f);
+  if (!secondaryRay(p, v, depth, seed, cone, false, s)) return vec3(0.f);
+  if (textureSignal) s.textureSignal = *textureSignal;
+  return traced(s);
 }
 
 }  // namespace diptych

@@ -31,6 +31,14 @@ struct RayTreeEvent {
   std::optional<Hit> hit;
 };
 
+// The texture footprint of a point's two secondary hits (passes/rt/texture_supersample.h,
+// footprint signals): the colour and coverage that replace the reflected or the transmitted ray's
+// own lookup at its hit (applyTextureSignal). w < 0: none, the hit's own lookup.
+struct SecondarySignals {
+  vec4 reflection{-1.f};
+  vec4 transmission{-1.f};
+};
+
 struct WhittedSettings {
   int maxDepth = 5;      // the lecture's max
   int areaSamples = 16;  // stratified shadow rays per area light
@@ -54,6 +62,9 @@ class WhittedTracer {
     bool hasCone = false;
     bool inside = false;  // travels inside the point's volume: Beer-Lambert over its length
     int material = -1;    // the point's
+    // Replaces the colour lookup at the ray's hit (applyTextureSignal); w < 0: none. Set by the
+    // caller (a footprint signal, SecondarySignals); secondaryRay leaves it at none.
+    vec4 textureSignal{-1.f};
   };
   bool secondaryRay(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
                     const RayCone* cone, bool reflection, SecondaryRay& out) const;
@@ -68,14 +79,18 @@ class WhittedTracer {
   // hitDistance, when given, receives the distance to the hit (infinity on a miss).
   // textureSignal, when given: the texture_filtering signal that replaces the hit's own colour
   // lookup (applyTextureSignal; the Whitted reference's texture_samples at the camera ray's hit).
+  // secondarySignals, when given: those of the hit's own reflected and transmitted rays (the
+  // reference's texture_samples at the camera hit's secondary hits).
   vec3 radiance(const Ray& ray, int depth, std::uint32_t seed, const RayCone* cone = nullptr,
-                float* hitDistance = nullptr, const vec4* textureSignal = nullptr) const;
+                float* hitDistance = nullptr, const vec4* textureSignal = nullptr,
+                const SecondarySignals* secondarySignals = nullptr) const;
   // The rest of RAYTRACING(o, u, depth) once the ray's closest hit is known (hit: null on a
   // miss), for callers that trace many rays at once (RtScene::intersectRays); depth <= maxDepth.
   // radiance() is trace + this.
   vec3 radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
                   const RayCone* cone = nullptr, float* hitDistance = nullptr,
-                  const vec4* textureSignal = nullptr) const;
+                  const vec4* textureSignal = nullptr,
+                  const SecondarySignals* secondarySignals = nullptr) const;
   // Whether hits passed to radianceAt need Hit::Ng (an observer reads it).
   bool wantsHitNormal() const { return bool(observer_); }
   // radianceAt for a tile of up to kMaxTile rays (hits[i] null: a miss; seeds[i], cones[i]
@@ -85,25 +100,27 @@ class WhittedTracer {
   // the rounding of Embree's packet kernels (see there). Their reflected and transmitted rays
   // are traced ray by ray, as radiance() does. depth: 1..maxDepth (else an Error), as for
   // radianceAt: radiance() traces nothing beyond maxDepth. textureSignal: empty, or one per ray
-  // (radiance()'s textureSignal).
+  // (radiance()'s textureSignal); secondarySignals: empty, or one per ray (radiance()'s).
   static constexpr std::size_t kMaxTile = 64;
   void radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                     std::span<const std::uint32_t> seeds, int depth,
                     std::span<const RayCone* const> cones, std::span<vec3> out,
-                    std::span<const vec4> textureSignal = {}) const;
+                    std::span<const vec4> textureSignal = {},
+                    std::span<const SecondarySignals> secondarySignals = {}) const;
   // traced() of each ray (all of one depth, any number): their closest hits found by Embree
   // streams (RtScene::intersectRays) of kMaxTile rays, then radianceTile and attenuated().
   void tracedTile(std::span<const SecondaryRay> rays, std::span<vec3> out) const;
   // EVALUAMILREC at a known surface point seen from direction v (unit, toward the viewer); cone:
-  // the cone's width at the point and its spread.
+  // the cone's width at the point and its spread; secondarySignals: radiance()'s.
   vec3 shade(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
-             const RayCone* cone = nullptr) const;
+             const RayCone* cone = nullptr,
+             const SecondarySignals* secondarySignals = nullptr) const;
   // The secondary radiances of EVALUAMILREC, without their k M factors: L_in(p, r) and
-  // L_in(p, t). Each returns 0 when depth >= maxDepth.
+  // L_in(p, t). Each returns 0 when depth >= maxDepth. textureSignal: SecondaryRay's.
   vec3 reflected(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
-                 const RayCone* cone = nullptr) const;
+                 const RayCone* cone = nullptr, const vec4* textureSignal = nullptr) const;
   vec3 transmitted(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
-                   const RayCone* cone = nullptr) const;
+                   const RayCone* cone = nullptr, const vec4* textureSignal = nullptr) const;
 
   std::uint64_t raysTraced() const { return rays_.total(); }
   // Called for every RAYTRACING call (not shadow rays), for inspecting or testing the ray tree.
@@ -128,7 +145,8 @@ class WhittedTracer {
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit, const RayCone* cone, RayCone& at,
                          bool& coned) const;
   vec3 shadeGiven(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
-                  const RayCone* cone, const vec3& directSum) const;
+                  const RayCone* cone, const vec3& directSum,
+                  const SecondarySignals* secondarySignals = nullptr) const;
   const Scene& scene_;
   const WorldGeometry& world_;
   const RtScene& rt_;

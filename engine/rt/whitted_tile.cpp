@@ -41,11 +41,13 @@ struct PendingLight {
 void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                                  std::span<const std::uint32_t> seeds, int depth,
                                  std::span<const RayCone* const> cone, std::span<vec3> out,
-                                 std::span<const vec4> textureSignal) const {
+                                 std::span<const vec4> textureSignal,
+                                 std::span<const SecondarySignals> secondarySignals) const {
   const std::size_t n = rays.size(), lights = lights_.size();
   DIPTYCH_CHECK(n <= kMaxTile && hits.size() == n && seeds.size() == n && out.size() >= n &&
                     (cone.empty() || cone.size() == n) &&
-                    (textureSignal.empty() || textureSignal.size() == n),
+                    (textureSignal.empty() || textureSignal.size() == n) &&
+                    (secondarySignals.empty() || secondarySignals.size() == n),
                 "WhittedTracer::radianceTile: tile sizes disagree");
   // radianceAt's contract: the hits were traced at a depth the recursion reaches (radiance()
   // returns 0 beyond maxDepth without tracing, so a caller past it traced rays for nothing).
@@ -128,7 +130,8 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
     // level they were slower (the tiles of the deeper levels hold a few rays each: 127.4 against
     // 120.8 CPU ms for the Whitted reference, docs/ray-tracing.md).
     out[i] = shadeGiven(*point(i), -rays[i].direction, depth, seeds[i],
-                        coned[i] ? &cones[i] : nullptr, directSum[i]);
+                        coned[i] ? &cones[i] : nullptr, directSum[i],
+                        secondarySignals.empty() ? nullptr : &secondarySignals[i]);
   }
 }
 
@@ -144,13 +147,18 @@ void WhittedTracer::tracedTile(std::span<const SecondaryRay> rays, std::span<vec
     rt_.intersectRays({traced, n}, {hits, n}, {found, n}, wantsHitNormal());
     std::uint32_t seeds[kMaxTile];
     const RayCone* cones[kMaxTile];
+    vec4 signals[kMaxTile];
+    bool signalled = false;  // any footprint signal in the tile (else none is passed)
     vec3 radiance[kMaxTile];
     for (std::size_t i = 0; i < n; ++i) {
       DIPTYCH_CHECK(s[i].depth == s[0].depth, "WhittedTracer::tracedTile: rays of two depths");
       seeds[i] = s[i].seed;
       cones[i] = s[i].hasCone ? &s[i].cone : nullptr;
+      signals[i] = s[i].textureSignal;
+      signalled = signalled || s[i].textureSignal.w >= 0.f;
     }
-    radianceTile({traced, n}, {found, n}, {seeds, n}, s[0].depth, {cones, n}, {radiance, n});
+    radianceTile({traced, n}, {found, n}, {seeds, n}, s[0].depth, {cones, n}, {radiance, n},
+                 {signals, signalled ? n : 0});
     for (std::size_t i = 0; i < n; ++i) {
       // radiance()'s hitDistance.
       const float distance = found[i] ? hits[i].t * glm::length(traced[i].direction)

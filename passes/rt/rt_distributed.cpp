@@ -114,10 +114,12 @@ void RtDistributedPass::execute(PassContext& c) {
       std::vector<int> lensStratum(std::size_t(spp_), 0);
       std::vector<vec3> sum(std::size_t(frame.width), vec3(0.f));
       std::vector<vec4> signal(textureSignal ? std::size_t(frame.width) : 0);
+      std::vector<SecondarySignals> secondary(signal.size());
       if (textureSignal)
         textureRays += whittedTextureRow(world.scene(), world.geometry(), rt, pinhole,
-                                         textureSamples_, y, signal);
+                                         textureSamples_, y, signal, tracer, secondary);
       vec4 signalOf[kPrimaryTile];
+      SecondarySignals secondaryOf[kPrimaryTile];
       Ray rays[kPrimaryTile];
       std::uint32_t seeds[kPrimaryTile];
       int pixelOf[kPrimaryTile];
@@ -130,11 +132,14 @@ void RtDistributedPass::execute(PassContext& c) {
         const RayCone* cones[kPrimaryTile];
         vec3 colors[kPrimaryTile];
         std::fill_n(cones, filled, cone);
-        for (std::size_t i = 0; i < filled && textureSignal; ++i)
+        for (std::size_t i = 0; i < filled && textureSignal; ++i) {
           signalOf[i] = signal[std::size_t(pixelOf[i])];
+          secondaryOf[i] = secondary[std::size_t(pixelOf[i])];
+        }
         tracer.radianceTile({rays, filled}, {found, filled}, {seeds, filled}, 1,
                             {cones, cone ? filled : 0}, {colors, filled},
-                            {signalOf, textureSignal ? filled : 0});
+                            {signalOf, textureSignal ? filled : 0},
+                            {secondaryOf, textureSignal ? filled : 0});
         for (std::size_t i = 0; i < filled; ++i) sum[std::size_t(pixelOf[i])] += colors[i];
         filled = 0;
       };
@@ -172,12 +177,23 @@ void RtDistributedPass::execute(PassContext& c) {
                                               world.scene(), world.geometry(), world.rtScene(),
                                               pinhole, textureSamples_, x, y)
                                         : vec4(-1.f);
-      if (textureSignal) textureRays += std::int64_t(textureSamples_) * textureSamples_;
+      SecondarySignals secondary;
+      if (textureSignal) {
+        textureRays += std::int64_t(textureSamples_) * textureSamples_;
+        // The secondary hits' footprint (its colours are singleRayPixel's, unused here).
+        const std::uint8_t one = 1;
+        vec4 colour;
+        const SecondaryFootprint footprint{tracer, true, true, {&secondary, 1}};
+        textureRays += supersampleTextureRow(world.scene(), world.geometry(), world.rtScene(),
+                                             pinhole, {&one, 1}, textureSamples_, y, {&colour, 1},
+                                             &footprint, x);
+      }
       vec3 sum(0.f);
       for (int s = 0; s < spp_; ++s) {
         std::uint32_t seed;
         const Ray ray = sampleRay(x, y, s, lensStratum, seed);
-        sum += tracer.radiance(ray, 1, seed, cone, nullptr, textureSignal ? &signal : nullptr);
+        sum += tracer.radiance(ray, 1, seed, cone, nullptr, textureSignal ? &signal : nullptr,
+                               textureSignal ? &secondary : nullptr);
       }
       storeSdfPixel(steps, x, y);
       const vec3 color = sum / float(spp_);

@@ -2,16 +2,19 @@
 
 #include <tbb/parallel_for.h>
 
+#include <atomic>
 #include <bit>
 #include <vector>
 
 #include "engine/core/check.h"
+#include "engine/graph/scene_needs.h"
 #include "engine/graph/render_world.h"
 #include "engine/rt/ray_cone.h"
 #include "engine/rt/whitted.h"
 #include "engine/shading/shading.h"
 #include "passes/common/exact_hits.h"
 #include "passes/rt/sdf_steps.h"
+#include "passes/rt/texture_supersample.h"
 
 namespace diptych {
 
@@ -22,13 +25,19 @@ ParamSchema RtSecondaryPass::schema() {
           ParamSpec::integer("area_samples", 16, 1, 4096,
                              "stratified shadow rays per area light at each hit"),
           ParamSpec::choice("texture_lod", "level0", {"level0", "cone"},
-                            "texture level at traced hits: level 0, or ray cones (RTG ch. 20)")};
+                            "texture level at traced hits: level 0, or ray cones (RTG ch. 20)"),
+          ParamSpec::integer("texture_samples", 1, 1, 64,
+                             "N: the texture colour at each secondary hit averaged over the "
+                             "pixel's footprint, N x N sub-pixel rays followed to their own "
+                             "secondary hits (the Whitted reference's texture_samples); 1: the "
+                             "hit's own lookup")};
 }
 
 void RtSecondaryPass::setup(PassBuilder& b) {
   maxDepth_ = b.params().integer("depth");
   areaSamples_ = b.params().integer("area_samples");
   rayCones_ = b.params().string("texture_lod") == "cone";
+  textureSamples_ = b.params().integer("texture_samples");
   io_ = slotIo(b, kind_ == Kind::Reflection ? "reflection" : "transmission");
   sdfSteps_ = writeSdfSteps(b);
 }
@@ -60,7 +69,31 @@ void RtSecondaryPass::execute(PassContext& c) {
       "rt_secondary: the signal is not RGBA32F of the frame's size");
   DIPTYCH_CHECK(exact.width() == frame.width && exact.height() == frame.height,
                 "rt_secondary: the hits are not of the frame's size");
+  // texture_samples (rt_secondary.h): the footprint of each candidate pixel's secondary hit.
+  const bool footprint =
+      textureSamples_ > 1 && sceneSatisfies(scene, SceneNeed::TexturedMaterial);
+  std::atomic<std::int64_t> footprintRays = 0;
   tbb::parallel_for(0, frame.height, [&](int y) {
+    // The row's footprint signals (with SDF objects: one pixel's at a time). Per row, not per
+    // thread: tracedTile below must not find them rewritten by a row stolen in its wait.
+    std::vector<SecondarySignals> signals;
+    std::vector<vec4> colors;  // the camera hits' own: not used here
+    std::vector<std::uint8_t> traced;
+    const SurfaceHit* hit = exact.row(y);
+    const auto isCandidate = [&](int x) {
+      return hit[x].instance >= 0 && candidate[std::size_t(hit[x].instance)];
+    };
+    if (footprint) {
+      signals.resize(std::size_t(frame.width));
+      colors.resize(std::size_t(frame.width));
+      traced.resize(std::size_t(frame.width));
+      if (!steps) {
+        for (int x = 0; x < frame.width; ++x) traced[std::size_t(x)] = isCandidate(x);
+        const SecondaryFootprint rowFootprint{tracer, reflection, !reflection, signals};
+        footprintRays += supersampleTextureRow(scene, world.geometry(), world.rtScene(), pinhole,
+                                               traced, textureSamples_, y, colors, &rowFootprint);
+      }
+    }
     // The row's address once (per-texel setF recomputes the stride and the index).
     std::uint32_t* row = out.row(y);
     const auto store = [&](int x, const vec3& radiance) {
@@ -84,11 +117,10 @@ void RtSecondaryPass::execute(PassContext& c) {
       for (std::size_t i = 0; i < filled; ++i) store(pixel[i], radiance[i]);
       filled = 0;
     };
-    const SurfaceHit* hit = exact.row(y);
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
       beginSdfPixel();
-      if (hit[x].instance >= 0 && candidate[std::size_t(hit[x].instance)]) {
+      if (isCandidate(x)) {
         const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
         const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction);
         // Per point, as Whitted decides (a texture may make this texel rough or not metal).
@@ -100,9 +132,24 @@ void RtSecondaryPass::execute(PassContext& c) {
           const RayCone cone{spread * glm::length(p.position - eye.origin), spread};
           const RayCone* c = rayCones_ ? &cone : nullptr;
           if (steps) {
-            radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c)
-                                  : tracer.transmitted(p, -eye.direction, 1, seed, c);
+            // The pixel's footprint inside its step count, as its rays below.
+            const vec4* signal = nullptr;
+            if (footprint) {
+              const std::uint8_t one = 1;
+              const SecondaryFootprint pixelFootprint{tracer, reflection, !reflection,
+                                                      {signals.data(), 1}};
+              footprintRays += supersampleTextureRow(scene, world.geometry(), world.rtScene(),
+                                                     pinhole, {&one, 1}, textureSamples_, y,
+                                                     {colors.data(), 1}, &pixelFootprint, x);
+              signal = reflection ? &signals[0].reflection : &signals[0].transmission;
+            }
+            radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c, signal)
+                                  : tracer.transmitted(p, -eye.direction, 1, seed, c, signal);
           } else if (tracer.secondaryRay(p, -eye.direction, 1, seed, c, reflection, rays[filled])) {
+            if (footprint) {
+              const SecondarySignals& s = signals[std::size_t(x)];
+              rays[filled].textureSignal = reflection ? s.reflection : s.transmission;
+            }
             pixel[filled] = x;
             if (++filled == kTile) flush();
             continue;  // stored by flush
@@ -114,7 +161,7 @@ void RtSecondaryPass::execute(PassContext& c) {
     }
     if (filled > 0) flush();
   });
-  c.count("rays", double(tracer.raysTraced()));
+  c.count("rays", double(tracer.raysTraced() + footprintRays.load()));
 }
 
 }  // namespace diptych

@@ -5,6 +5,12 @@
 // with the same shading as everything else. Other pixels get 0. The family of rt_reflection.h
 // and rt_transmission.h. Where the scene has SDF objects they also write sdf_steps
 // (passes/rt/sdf_steps.h), the sphere-tracing steps of each pixel's secondary ray tree.
+// `texture_samples` N > 1 makes them the exact answer for textures seen in a mirror or through
+// glass too: the colour at each pixel's secondary hit is the mean over its footprint, N x N
+// sub-pixel rays each followed to its own mirror or refracted hit (SecondaryFootprint,
+// passes/rt/texture_supersample.h), as the Whitted reference's texture_samples does; 1 (the
+// default): the hit's own lookup (level 0, or a ray cone's level with texture_lod=cone). Nothing
+// is traced for it on a scene without colour-textured materials.
 #include "engine/graph/pass.h"
 #include "passes/slots.h"
 
@@ -21,7 +27,7 @@ class RtSecondaryPass : public Pass {
 
  private:
   Kind kind_;
-  int maxDepth_ = 5, areaSamples_ = 16;
+  int maxDepth_ = 5, areaSamples_ = 16, textureSamples_ = 1;
   bool rayCones_ = false;
   SlotIo io_;
   ResourceId sdfSteps_ = kNoResource;  // passes/rt/sdf_steps.h; only with SDF objects

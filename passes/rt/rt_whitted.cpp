@@ -19,7 +19,8 @@ ParamSchema RtWhittedPass::schema() {
 }
 
 std::int64_t whittedTextureRow(const Scene& scene, const WorldGeometry& geometry, const RtScene& rt,
-                               const PinholeFrame& pinhole, int n, int y, std::span<vec4> out) {
+                               const PinholeFrame& pinhole, int n, int y, std::span<vec4> out,
+                               const WhittedTracer& tracer, std::span<SecondarySignals> secondary) {
   // Coverage as the reference sees it: a pixel whose centre ray misses shows the environment, so
   // its footprint is not traced (a plane to the horizon leaves much of the frame sky).
   constexpr std::size_t kTile = WhittedTracer::kMaxTile;
@@ -36,8 +37,9 @@ std::int64_t whittedTextureRow(const Scene& scene, const WorldGeometry& geometry
     camera.intersectRays({rays, count}, {hits, count}, {found, count}, false);
     for (std::size_t i = 0; i < count; ++i) covered[x0 + i] = found[i] != nullptr;
   }
+  const SecondaryFootprint footprint{tracer, true, true, secondary};
   return std::int64_t(out.size()) +
-         supersampleTextureRow(scene, geometry, rt, pinhole, covered, n, y, out);
+         supersampleTextureRow(scene, geometry, rt, pinhole, covered, n, y, out, &footprint);
 }
 
 }  // namespace diptych

@@ -3,6 +3,7 @@
 #include <span>
 
 #include "engine/rt/rt_scene.h"
+#include "engine/rt/whitted.h"
 #include "engine/scene/camera_math.h"
 #include "passes/rt/rt_distributed.h"
 
@@ -19,6 +20,10 @@ namespace diptych {
 // signal, supersampleTextureRow), applied at the camera ray's hit as the hybrid's shade applies
 // that producer's signal (applyTextureSignal), so that rt_whitted with N equals the all-exact
 // hybrid with texture_supersample:samples=N; 1 (the default): the pixel centre's own lookup.
+// N > 1 also filters the textures the camera hit sees in its mirror or through its glass: the
+// colour at its reflected and refracted rays' hits is the mean over the same N x N rays, each
+// followed to its own secondary hit (SecondaryFootprint, texture_supersample.h), as rt_reflection
+// and rt_transmission with texture_samples N do. Deeper hits keep their own lookup.
 // Only pixels whose centre ray hits trace the N x N rays; nothing is traced for it on a scene
 // without colour-textured materials (SceneNeed), and it needs spp 1 (an error otherwise: with
 // more samples each pixel already integrates its texture).
@@ -30,10 +35,12 @@ class RtWhittedPass : public RtDistributedPass {
   static ParamSchema schema();
 };
 
-// Row y of rt_whitted's texture signal into out (the frame's width): its pixel-centre rays traced
+// Row y of rt_whitted's texture signal into out (the frame's width), and its secondary hits' into
+// secondary (the same size; tracer: the one that shades them): its pixel-centre rays traced
 // (coherent streams) for coverage, then supersampleTextureRow over the covered pixels (-1
-// elsewhere). Returns the rays traced, both kinds.
+// elsewhere). Returns the rays traced, all kinds.
 std::int64_t whittedTextureRow(const Scene& scene, const WorldGeometry& geometry, const RtScene& rt,
-                               const PinholeFrame& pinhole, int n, int y, std::span<vec4> out);
+                               const PinholeFrame& pinhole, int n, int y, std::span<vec4> out,
+                               const WhittedTracer& tracer, std::span<SecondarySignals> secondary);
 
 }  // namespace diptych

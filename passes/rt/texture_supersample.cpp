@@ -5,12 +5,14 @@
 #include <atomic>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "engine/graph/render_world.h"
 #include "engine/rt/camera_rays.h"
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
+#include "engine/shading/shading.h"
 #include "passes/common/hits_texel.h"
 
 namespace diptych {
@@ -21,6 +23,80 @@ namespace {
 float stratum(int x, int i, int n) {
   return float(x) + (float(i) + 0.5f) / float(n);
 }
+
+// A mean colour and coverage being summed.
+struct Mean {
+  vec4 sum{0.f};
+  int count = 0;
+  vec4 value() const { return count > 0 ? sum / float(count) : vec4(-1.f); }
+};
+
+// SecondaryFootprint's rays: queued per camera stream, traced in streams of kStreamRays, their
+// hits' colours summed into the pixel's mean of their kind.
+class SecondaryRays {
+ public:
+  SecondaryRays(const Scene& scene, const WorldGeometry& geometry, const RtScene& rt,
+                const SecondaryFootprint& footprint, std::size_t pixels)
+      : scene_(scene), geometry_(geometry), rt_(rt), footprint_(footprint) {
+    thread_local std::vector<Mean> means;  // per thread, reused row after row
+    means.assign(2 * pixels, Mean{});
+    means_ = &means;
+  }
+  // The secondary rays of sub-pixel ray `ray`'s hit h, for pixel i of the row.
+  void cast(const Ray& ray, const Hit& h, std::size_t i) {
+    const Material& m = scene_.material(geometry_.meshes[std::size_t(h.instance)].material);
+    const bool reflective = footprint_.reflection && shading::materialHasReflection(m);
+    const bool transmissive = footprint_.transmission && shading::materialHasTransmission(m);
+    if (!reflective && !transmissive) return;
+    const SurfacePoint p =
+        makeSurfacePoint(scene_, geometry_, {h.instance, h.primitive, h.u, h.v, h.analytic},
+                         ray.direction);
+    // Per point, as the tracer decides (a texture may make this texel rough or not metal).
+    if (reflective && shading::hasReflection(p.resolved, false)) queue(p, ray, true, i);
+    if (transmissive && shading::hasTransmission(p.resolved)) queue(p, ray, false, i);
+  }
+  // Traces what is queued.
+  void flush() {
+    if (filled_ == 0) return;
+    Hit hits[kTile];
+    const Hit* found[kTile];
+    rt_.intersectRays({rays_, filled_}, {hits, filled_}, {found, filled_}, false);
+    traced_ += std::int64_t(filled_);
+    for (std::size_t k = 0; k < filled_; ++k) {
+      const Hit* h = found[k];
+      if (!h) continue;
+      Mean& mean = (*means_)[owner_[k]];
+      mean.sum +=
+          resolvedColorAt(scene_, geometry_, {h->instance, h->primitive, h->u, h->v, h->analytic});
+      ++mean.count;
+    }
+    filled_ = 0;
+  }
+  // Pixel i's signals, once every ray is flushed.
+  SecondarySignals signals(std::size_t i) const {
+    return {(*means_)[2 * i].value(), (*means_)[2 * i + 1].value()};
+  }
+  std::int64_t traced() const { return traced_; }
+
+ private:
+  static constexpr std::size_t kTile = RtScene::kStreamRays;
+  void queue(const SurfacePoint& p, const Ray& ray, bool reflection, std::size_t i) {
+    WhittedTracer::SecondaryRay s;
+    if (!footprint_.tracer.secondaryRay(p, -ray.direction, 1, 0u, nullptr, reflection, s)) return;
+    rays_[filled_] = s.ray;
+    owner_[filled_] = 2 * i + (reflection ? 0 : 1);
+    if (++filled_ == kTile) flush();
+  }
+  const Scene& scene_;
+  const WorldGeometry& geometry_;
+  const RtScene& rt_;
+  const SecondaryFootprint& footprint_;
+  std::vector<Mean>* means_;
+  Ray rays_[kTile];
+  std::size_t owner_[kTile];
+  std::size_t filled_ = 0;
+  std::int64_t traced_ = 0;
+};
 
 }  // namespace
 
@@ -64,7 +140,8 @@ void TextureSupersamplePass::execute(PassContext& c) {
 std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geometry,
                                    const RtScene& rt, const PinholeFrame& pinhole,
                                    std::span<const std::uint8_t> covered, int n, int y,
-                                   std::span<vec4> out) {
+                                   std::span<vec4> out, const SecondaryFootprint* secondary,
+                                   int x0) {
   // The row's sub-pixel rays, pixel by pixel in stratum order, go to Embree in coherent streams
   // of kStreamRays (RtScene::intersectRays, as rt_distributed's primary rays): one traversal
   // setup per packet of neighbouring rays instead of one rtcIntersect1 per ray. Each pixel sums
@@ -78,6 +155,8 @@ std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geom
   const Hit* found[kTile];
   std::size_t filled = 0;
   std::int64_t traced = 0;
+  std::optional<SecondaryRays> footprint;
+  if (secondary) footprint.emplace(scene, geometry, rt, *secondary, out.size());
   // The pixel whose rays are being summed; its rays may straddle two streams.
   int pixel = -1, count = 0;
   vec4 sum(0.f);
@@ -100,6 +179,7 @@ std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geom
         sum +=
             resolvedColorAt(scene, geometry, {h->instance, h->primitive, h->u, h->v, h->analytic});
         ++count;
+        if (footprint) footprint->cast(rays[i], *h, std::size_t(pixelOf[i]));
       }
     }
     filled = 0;
@@ -111,13 +191,18 @@ std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geom
     }
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        rays[filled] = pinhole.ray(stratum(x, i, n), stratum(y, j, n));
+        rays[filled] = pinhole.ray(stratum(x0 + x, i, n), stratum(y, j, n));
         pixelOf[filled] = x;
         if (++filled == kTile) flush();
       }
   }
   if (filled > 0) flush();
   finish();
+  if (footprint) {
+    footprint->flush();
+    for (std::size_t x = 0; x < out.size(); ++x) secondary->out[x] = footprint->signals(x);
+    traced += footprint->traced();
+  }
   return traced;
 }
 

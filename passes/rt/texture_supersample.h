@@ -13,20 +13,36 @@
 
 #include "engine/graph/pass.h"
 #include "engine/rt/rt_scene.h"
+#include "engine/rt/whitted.h"
 #include "engine/scene/camera_math.h"
 #include "passes/slots.h"
 
 namespace diptych {
 
-// Row y of the signal into out[x] (out.size(): the frame's width) from N x N sub-pixel rays per
-// pixel, traced as coherent Embree streams; returns the number of rays traced. covered[x] false:
-// pixel x gets -1 and traces nothing (the G-buffer's uncovered pixels, or the Whitted
-// reference's pixels whose centre ray misses: texture_samples); covered empty: every pixel is
-// traced. A pixel none of whose rays hit gets -1.
+// The footprint of the camera hits' secondary hits, beside the camera hits' own (the texture_samples
+// of rt_whitted, rt_reflection and rt_transmission; docs/textures.md): each sub-pixel ray's point
+// casts the mirror and refracted rays its own shading would (WhittedTracer::secondaryRay at depth
+// 1), and the mean colour and coverage at what they hit (level 0, as the camera hits') is the
+// signal that replaces the lookup at the pixel's own secondary hit (SecondaryRay::textureSignal).
+// Sub-rays whose point casts no such ray, and secondary rays that miss, are left out; a pixel
+// with none left gets -1 for that kind. Rays deeper than the camera hit's own are not filtered.
+struct SecondaryFootprint {
+  const WhittedTracer& tracer;
+  bool reflection = true, transmission = true;  // the kinds traced
+  std::span<SecondarySignals> out;              // out[i] as supersampleTextureRow's out[i]
+};
+
+// Row y of the signal into out[i], pixel x0 + i (the whole row: out.size() is the frame's width
+// and x0 0), from N x N sub-pixel rays per pixel, traced as coherent Embree streams; returns the
+// number of rays traced (with `secondary`, its rays too). covered[i] false: that pixel gets -1
+// and traces nothing (the G-buffer's uncovered pixels, or the Whitted reference's pixels whose
+// centre ray misses: texture_samples); covered empty: every pixel is traced. A pixel none of
+// whose rays hit gets -1.
 std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geometry,
                                    const RtScene& rt, const PinholeFrame& pinhole,
                                    std::span<const std::uint8_t> covered, int n, int y,
-                                   std::span<vec4> out);
+                                   std::span<vec4> out,
+                                   const SecondaryFootprint* secondary = nullptr, int x0 = 0);
 
 class TextureSupersamplePass : public Pass {
  public:

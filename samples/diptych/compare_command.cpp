@@ -220,6 +220,16 @@ void runCompare(const CompareOptions& o) {
       recipes.push_back(v.build(registry, o.textureSamples));
     }
   }
+  // And the texture-LOD axis at traced hits where colour textures can be seen in a mirror or
+  // through glass: level 0 and ray cones against the footprint.
+  if (o.variants.empty() && textured) {
+    for (const Variant& v :
+         textureLodVariants(sceneSatisfies(scene, SceneNeed::ReflectiveMaterial),
+                            sceneSatisfies(scene, SceneNeed::TransmissiveMaterial))) {
+      variants.push_back(v);
+      recipes.push_back(v.build(registry, o.textureSamples));
+    }
+  }
   const FrameSettings frame{width, height,
                             scene.hasCamera ? scene.camera : frameBounds(scene.bounds())};
   if (auto line = applyLighting(scene, frame.camera, {})) log().warn("{}", *line);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <set>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -19,8 +20,12 @@ namespace diptych::cli {
 
 namespace {
 void setTextureSamples(Recipe& recipe, int textureSamples) {
-  for (RecipePass& pass : recipe.passes)
+  for (RecipePass& pass : recipe.passes) {
     if (pass.type == "texture_supersample") pass.params["samples"] = textureSamples;
+    // The exact producers of textures seen in a mirror or through glass (rt_secondary.h).
+    if (pass.type == "rt_reflection" || pass.type == "rt_transmission")
+      pass.params["texture_samples"] = textureSamples;
+  }
 }
 }  // namespace
 
@@ -64,6 +69,19 @@ std::vector<Variant> geometryVariants() {
   std::vector<Variant> out;
   for (int segments : {16, 64, 256})
     out.push_back({"geometry-" + std::to_string(segments), "", {}, segments});
+  return out;
+}
+
+std::vector<Variant> textureLodVariants(bool reflective, bool transmissive) {
+  std::vector<Variant> out;
+  for (const auto& [slot, kind, wanted] :
+       {std::tuple{"reflection", "rt_reflection", reflective},
+        std::tuple{"transmission", "rt_transmission", transmissive}}) {
+    if (!wanted) continue;
+    const std::string swap = std::string(slot) + "=" + kind;
+    out.push_back({std::string(slot) + "-level0", "", {swap}});
+    out.push_back({std::string(slot) + "-cone", "", {swap + ":texture_lod=cone"}});
+  }
   return out;
 }
 
@@ -152,6 +170,7 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
   std::vector<Variant> all = defaultVariants(registry);
   for (const Variant& v : geometryVariants()) all.push_back(v);
   for (const Variant& v : surfaceDetailVariants()) all.push_back(v);
+  for (const Variant& v : textureLodVariants(true, true)) all.push_back(v);
   std::vector<Variant> out;
   std::size_t start = 0;
   while (start <= spec.size()) {

@@ -35,8 +35,9 @@ struct Variant {
   std::string surfaceDetail;
   // The recipe with the overrides applied. exactTextureSamples > 0: the recipe's (built-in or
   // file) texture_supersample, the texture_filtering slot's exact producer, takes N = that many
-  // samples per axis before the overrides (compare's --texture-samples); an override of the
-  // slot sets its own.
+  // samples per axis before the overrides (compare's --texture-samples), and so do its
+  // rt_reflection and rt_transmission (their texture_samples: the footprint of the textures seen
+  // in a mirror or through glass); an override of the slot sets its own.
   Recipe build(const PassRegistry& registry, int exactTextureSamples = 0) const;
 };
 
@@ -44,6 +45,11 @@ std::vector<Variant> defaultVariants(const PassRegistry& registry);
 // The geometry axis, added to the defaults when the scene has analytic quadrics: the all-exact
 // hybrid with them tessellated at 16, 64 and 256 segments.
 std::vector<Variant> geometryVariants();
+// The texture-LOD axis at traced hits, added to the defaults where the scene has colour textures
+// and mirrors (reflective) or glass (transmissive): rt_reflection / rt_transmission with the
+// secondary hits' own level-0 lookup, and with ray cones (texture_lod=cone), both measured
+// against the exact producers' footprint (--texture-samples).
+std::vector<Variant> textureLodVariants(bool reflective, bool transmissive);
 // The surface-detail axis, added to the defaults when the scene has bump maps: the all-exact
 // hybrid with them flat, bump-mapped, normal-mapped (baked from the same height) and displaced.
 std::vector<Variant> surfaceDetailVariants();
