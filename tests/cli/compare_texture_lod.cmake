@@ -1,0 +1,89 @@
+# diptych compare measures the texture LOD at traced hits against each pixel's footprint (issue 9:
+# "ray-cone LOD lowers the error of traced reflections of a distant texture against level 0").
+# With --texture-samples N the reference (rt_whitted) and the all-exact hybrid (rt_reflection's
+# texture_samples) take the colour at the mirror's reflected hit as the mean over N x N sub-pixel
+# rays, each followed to its own reflected hit (passes/rt/texture_supersample.h,
+# SecondaryFootprint). On samples/scenes/textures.json (a mirror reflecting a checkered plane to
+# the horizon):
+#  - hybrid-exact is the reference's frame, and the texture-LOD axis joins the default variants;
+#  - ray cones measure closer to the footprint than the level-0 lookup (FLIP and the reflection
+#    signal), and with --texture-samples 1 the level-0 lookup is the exact producer itself.
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
+set(variants hybrid-exact,reflection-level0,reflection-cone)
+expect_success(compare-lod ARGS compare "${SOURCE_DIR}/samples/scenes/textures.json"
+               --variants ${variants} --size 200x150 --frames 1 --warmup 0 --out footprint
+               FILES footprint/results.json)
+expect_success(compare-lod-centre ARGS compare "${SOURCE_DIR}/samples/scenes/textures.json"
+               --variants ${variants} --size 200x150 --frames 1 --warmup 0 --texture-samples 1
+               --out centre FILES centre/results.json)
+expect_failure(reflection-texture-samples-range ARGS render
+               "${SOURCE_DIR}/samples/scenes/textures.json" --size 32x24
+               --slot reflection=rt_reflection:texture_samples=65 EXPECT "texture_samples")
+
+# The ray-by-ray path (a scene with an SDF object: each pixel's footprint rays inside its
+# sphere-tracing step count): rt_whitted's texture_samples equals the hybrid whose rt_reflection
+# takes the same N, and differs from the level-0 reflection.
+file(WRITE "${WORK_DIR}/sdf-mirror.json" [=[
+{"camera": {"position": [0, 1.2, 6], "target": [0, 0.6, 0], "fov": 45},
+ "environment": {"color": [0.5, 0.7, 0.9]},
+ "materials": {"ground": {"kd": 0.85, "ka": 0.3, "checker_texture": {"texels": 512, "cells": 128,
+                "a": [0.9, 0.9, 0.85], "b": [0.08, 0.1, 0.12]}},
+               "mirror": {"color": [0.05, 0.05, 0.05], "kd": 0.1, "kps": 0.9,
+                          "mirror_color": [1, 1, 1]},
+               "stone": {"color": [0.8, 0.6, 0.4], "kd": 0.9, "ka": 0.1}},
+ "lights": [{"type": "directional", "direction": [-0.3, -1, -0.5], "intensity": 1.2}],
+ "objects": [{"type": "plane", "size": [400, 400], "material": "ground",
+              "transform": {"translate": [0, 0, -190]}},
+             {"type": "sphere", "radius": 1.0, "material": "mirror",
+              "transform": {"translate": [-0.6, 1.0, 0]}},
+             {"type": "sdf", "material": "stone", "resolution": 32,
+              "shape": {"type": "sphere", "radius": 0.5}, "transform": {"translate": [1.4, 0.5, 1]}}]}
+]=])
+file(WRITE "${WORK_DIR}/whitted3.json"
+     [=[{"passes": [{"name": "r", "type": "rt_whitted", "params": {"texture_samples": 3}}], "outputs": ["r.color"]}]=])
+foreach(run "ref3;--recipe;whitted3.json"
+        "hyb3;--slot;texture_filtering=texture_supersample:samples=3;--slot;reflection=rt_reflection:texture_samples=3"
+        "level0;--slot;texture_filtering=texture_supersample:samples=3")
+  list(POP_FRONT run name)
+  expect_success(sdf-mirror-${name} ARGS render sdf-mirror.json ${run} --size 96x72
+                 --frames 1 --warmup 0 --out ${name}.exr FILES ${name}.exr)
+endforeach()
+foreach(image hyb3 level0)
+  execute_process(COMMAND ${DIPTYCH} diff ${image}.exr ref3.exr --metrics flip --json
+                  WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc OUTPUT_FILE ${image}.json)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "diff ${image} ref3 failed: ${rc}")
+  endif()
+endforeach()
+
+expect_python("texture LOD at traced hits against the footprint" [=[
+import json, sys
+def load(path):
+    r = json.load(open(path))
+    return r, {v["name"]: v for v in r["variants"]}
+footprint, v4 = load(sys.argv[1])
+centre, v1 = load(sys.argv[2])
+flip = lambda vs, n: vs[n]["metrics"]["flip_mean"]
+signal = lambda vs, n: vs[n]["signals"]["reflection"]["relative_rmse"]
+for name, vs in (("4", v4), ("1", v1)):
+    print(f"texture-samples {name}:", {n: (flip(vs, n), signal(vs, n)) for n in vs})
+# The mirror's reflection of the far ground is the same footprint on both sides.
+if not (flip(v4, "hybrid-exact") < 1e-4 and signal(v4, "hybrid-exact") == 0):
+    sys.exit("hybrid-exact is not the reference's frame at --texture-samples 4")
+# Measured at 200x150: FLIP level 0 0.0043, cones 0.0019; reflection signal relative RMSE
+# 0.21 and 0.086.
+if not (flip(v4, "reflection-cone") < 0.8 * flip(v4, "reflection-level0")
+        and signal(v4, "reflection-cone") < 0.7 * signal(v4, "reflection-level0")):
+    sys.exit("ray cones are not closer to the footprint than the level-0 lookup")
+# Against the point sample the level-0 lookup is the exact producer, and cones count as error
+# (measured 0.22).
+if not (signal(v1, "reflection-level0") == 0 and signal(v1, "reflection-cone") > 0.02):
+    sys.exit("--texture-samples 1 did not make the level-0 lookup the exact reflection")
+same = json.load(open(sys.argv[3]))["metrics"]["flip_mean"]
+apart = json.load(open(sys.argv[4]))["metrics"]["flip_mean"]
+print("SDF scene: hybrid N=3 vs rt_whitted N=3", same, "; level-0 reflection vs N=3", apart)
+# Measured 3.8e-8 against 0.0054.
+if not (same < 1e-4 and apart > 20 * same and apart > 1e-3):
+    sys.exit(f"the secondary footprint on the ray-by-ray path: {same} (same), {apart} (apart)")
+]=] "${WORK_DIR}/footprint/results.json" "${WORK_DIR}/centre/results.json"
+    "${WORK_DIR}/hyb3.json" "${WORK_DIR}/level0.json")
