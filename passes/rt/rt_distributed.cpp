@@ -180,13 +180,24 @@ void RtDistributedPass::execute(PassContext& c) {
       SecondarySignals secondary;
       if (textureSignal) {
         textureRays += std::int64_t(textureSamples_) * textureSamples_;
-        // The secondary hits' footprint (its colours are singleRayPixel's, unused here).
-        const std::uint8_t one = 1;
-        vec4 colour;
-        const SecondaryFootprint footprint{tracer, true, true, {&secondary, 1}};
-        textureRays += supersampleTextureRow(world.scene(), world.geometry(), world.rtScene(),
-                                             pinhole, {&one, 1}, textureSamples_, y, {&colour, 1},
-                                             &footprint, x);
+        // The secondary hits' footprint where the centre's own reach a colour texture (its
+        // colours are singleRayPixel's, unused here).
+        const Ray centre = pinhole.ray(float(x) + 0.5f, float(y) + 0.5f);
+        Hit h;
+        std::int64_t rays = 1;
+        const std::uint8_t kinds =
+            CameraRays{world.rtScene(), world.scene(), world.geometry()}.intersect(centre, h, false)
+                ? texturedSecondariesAt(tracer, world.scene(), world.geometry(), world.rtScene(),
+                                        centre, h, rays)
+                : 0;
+        if (kinds) {
+          vec4 colour;
+          const SecondaryFootprint footprint{tracer, {&kinds, 1}, {&secondary, 1}};
+          rays += supersampleTextureRow(world.scene(), world.geometry(), world.rtScene(), pinhole,
+                                        {&kinds, 1}, textureSamples_, y, {&colour, 1}, &footprint,
+                                        x);
+        }
+        textureRays += rays;
       }
       vec3 sum(0.f);
       for (int s = 0; s < spp_; ++s) {

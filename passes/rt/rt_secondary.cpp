@@ -78,20 +78,35 @@ void RtSecondaryPass::execute(PassContext& c) {
     // thread: tracedTile below must not find them rewritten by a row stolen in its wait.
     std::vector<SecondarySignals> signals;
     std::vector<vec4> colors;  // the camera hits' own: not used here
-    std::vector<std::uint8_t> traced;
+    std::vector<std::uint8_t> kinds;
     const SurfaceHit* hit = exact.row(y);
     const auto isCandidate = [&](int x) {
       return hit[x].instance >= 0 && candidate[std::size_t(hit[x].instance)];
     };
+    const std::uint8_t kind =
+        reflection ? SecondaryFootprint::kReflected : SecondaryFootprint::kTransmitted;
+    std::int64_t rowFootprintRays = 0;
+    // The pixel's footprint is traced where its own secondary ray, from point p, reaches a
+    // colour texture: its kind bit, else 0.
+    const auto texturedAt = [&](const SurfacePoint& p, const Ray& eye) {
+      return texturedSecondaries(tracer, scene, world.geometry(), world.rtScene(), p,
+                                 eye.direction, kind, rowFootprintRays);
+    };
     if (footprint) {
       signals.resize(std::size_t(frame.width));
       colors.resize(std::size_t(frame.width));
-      traced.resize(std::size_t(frame.width));
+      kinds.assign(std::size_t(frame.width), 0);
       if (!steps) {
-        for (int x = 0; x < frame.width; ++x) traced[std::size_t(x)] = isCandidate(x);
-        const SecondaryFootprint rowFootprint{tracer, reflection, !reflection, signals};
-        footprintRays += supersampleTextureRow(scene, world.geometry(), world.rtScene(), pinhole,
-                                               traced, textureSamples_, y, colors, &rowFootprint);
+        for (int x = 0; x < frame.width; ++x) {
+          if (!isCandidate(x)) continue;
+          const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
+          kinds[std::size_t(x)] =
+              texturedAt(makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction), eye);
+        }
+        const SecondaryFootprint rowFootprint{tracer, kinds, signals};
+        rowFootprintRays += supersampleTextureRow(scene, world.geometry(), world.rtScene(),
+                                                  pinhole, kinds, textureSamples_, y, colors,
+                                                  &rowFootprint);
       }
     }
     // The row's address once (per-texel setF recomputes the stride and the index).
@@ -134,13 +149,12 @@ void RtSecondaryPass::execute(PassContext& c) {
           if (steps) {
             // The pixel's footprint inside its step count, as its rays below.
             const vec4* signal = nullptr;
-            if (footprint) {
-              const std::uint8_t one = 1;
-              const SecondaryFootprint pixelFootprint{tracer, reflection, !reflection,
-                                                      {signals.data(), 1}};
-              footprintRays += supersampleTextureRow(scene, world.geometry(), world.rtScene(),
-                                                     pinhole, {&one, 1}, textureSamples_, y,
-                                                     {colors.data(), 1}, &pixelFootprint, x);
+            const std::uint8_t textured = footprint ? texturedAt(p, eye) : 0;
+            if (textured) {
+              const SecondaryFootprint pixelFootprint{tracer, {&textured, 1}, {signals.data(), 1}};
+              rowFootprintRays += supersampleTextureRow(
+                  scene, world.geometry(), world.rtScene(), pinhole, {&textured, 1},
+                  textureSamples_, y, {colors.data(), 1}, &pixelFootprint, x);
               signal = reflection ? &signals[0].reflection : &signals[0].transmission;
             }
             radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c, signal)
@@ -160,6 +174,7 @@ void RtSecondaryPass::execute(PassContext& c) {
       storeSdfPixel(steps, x, y);
     }
     if (filled > 0) flush();
+    footprintRays += rowFootprintRays;
   });
   c.count("rays", double(tracer.raysTraced() + footprintRays.load()));
 }

@@ -23,9 +23,12 @@ std::int64_t whittedTextureRow(const Scene& scene, const WorldGeometry& geometry
                                const WhittedTracer& tracer, std::span<SecondarySignals> secondary) {
   // Coverage as the reference sees it: a pixel whose centre ray misses shows the environment, so
   // its footprint is not traced (a plane to the horizon leaves much of the frame sky).
+  // And the secondary rays that reach a colour texture, whose footprint is traced too.
   constexpr std::size_t kTile = WhittedTracer::kMaxTile;
-  thread_local std::vector<std::uint8_t> covered;  // per thread, reused row after row
+  thread_local std::vector<std::uint8_t> covered, kinds;  // per thread, reused row after row
   covered.resize(out.size());
+  kinds.assign(out.size(), 0);
+  std::int64_t traced = std::int64_t(out.size());
   const CameraRays camera{rt, scene, geometry};
   for (std::size_t x0 = 0; x0 < out.size(); x0 += kTile) {
     const std::size_t count = std::min(kTile, out.size() - x0);
@@ -35,10 +38,14 @@ std::int64_t whittedTextureRow(const Scene& scene, const WorldGeometry& geometry
     for (std::size_t i = 0; i < count; ++i)
       rays[i] = pinhole.ray(float(x0 + i) + 0.5f, float(y) + 0.5f);
     camera.intersectRays({rays, count}, {hits, count}, {found, count}, false);
-    for (std::size_t i = 0; i < count; ++i) covered[x0 + i] = found[i] != nullptr;
+    for (std::size_t i = 0; i < count; ++i) {
+      covered[x0 + i] = found[i] != nullptr;
+      if (const Hit* h = found[i])
+        kinds[x0 + i] = texturedSecondariesAt(tracer, scene, geometry, rt, rays[i], *h, traced);
+    }
   }
-  const SecondaryFootprint footprint{tracer, true, true, secondary};
-  return std::int64_t(out.size()) +
+  const SecondaryFootprint footprint{tracer, kinds, secondary};
+  return traced +
          supersampleTextureRow(scene, geometry, rt, pinhole, covered, n, y, out, &footprint);
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/graph/render_world.h"
+#include "engine/graph/scene_needs.h"
 #include "engine/rt/camera_rays.h"
 #include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
@@ -44,9 +45,13 @@ class SecondaryRays {
   }
   // The secondary rays of sub-pixel ray `ray`'s hit h, for pixel i of the row.
   void cast(const Ray& ray, const Hit& h, std::size_t i) {
+    const std::uint8_t kinds = footprint_.kinds[i];
+    if (kinds == 0) return;
     const Material& m = scene_.material(geometry_.meshes[std::size_t(h.instance)].material);
-    const bool reflective = footprint_.reflection && shading::materialHasReflection(m);
-    const bool transmissive = footprint_.transmission && shading::materialHasTransmission(m);
+    const bool reflective =
+        (kinds & SecondaryFootprint::kReflected) && shading::materialHasReflection(m);
+    const bool transmissive =
+        (kinds & SecondaryFootprint::kTransmitted) && shading::materialHasTransmission(m);
     if (!reflective && !transmissive) return;
     const SurfacePoint p =
         makeSurfacePoint(scene_, geometry_, {h.instance, h.primitive, h.u, h.v, h.analytic},
@@ -99,6 +104,42 @@ class SecondaryRays {
 };
 
 }  // namespace
+
+std::uint8_t texturedSecondaries(const WhittedTracer& tracer, const Scene& scene,
+                                 const WorldGeometry& geometry, const RtScene& rt,
+                                 const SurfacePoint& p, const vec3& direction,
+                                 std::uint8_t wanted, std::int64_t& rays) {
+  std::uint8_t out = 0;
+  for (const bool reflection : {true, false}) {
+    const std::uint8_t kind =
+        reflection ? SecondaryFootprint::kReflected : SecondaryFootprint::kTransmitted;
+    if (!(wanted & kind)) continue;
+    // As WhittedTracer::shadeGiven decides whether the point casts the ray.
+    if (reflection ? !shading::hasReflection(p.resolved, false)
+                   : !shading::hasTransmission(p.resolved))
+      continue;
+    WhittedTracer::SecondaryRay s;
+    if (!tracer.secondaryRay(p, -direction, 1, 0u, nullptr, reflection, s)) continue;
+    Hit h;
+    ++rays;
+    if (rt.intersect(s.ray, 0.f, std::numeric_limits<float>::infinity(), h, false) &&
+        readsColorTexture(scene, scene.material(geometry.meshes[std::size_t(h.instance)].material)))
+      out |= kind;
+  }
+  return out;
+}
+
+std::uint8_t texturedSecondariesAt(const WhittedTracer& tracer, const Scene& scene,
+                                   const WorldGeometry& geometry, const RtScene& rt,
+                                   const Ray& ray, const Hit& h, std::int64_t& rays) {
+  const Material& m = scene.material(geometry.meshes[std::size_t(h.instance)].material);
+  if (!shading::materialHasReflection(m) && !shading::materialHasTransmission(m)) return 0;
+  const SurfacePoint p = makeSurfacePoint(
+      scene, geometry, {h.instance, h.primitive, h.u, h.v, h.analytic}, ray.direction);
+  return texturedSecondaries(tracer, scene, geometry, rt, p, ray.direction,
+                             SecondaryFootprint::kReflected | SecondaryFootprint::kTransmitted,
+                             rays);
+}
 
 ParamSchema TextureSupersamplePass::schema() {
   return {ParamSpec::integer("samples", kDefaultSamples, 1, 64,

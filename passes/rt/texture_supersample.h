@@ -26,11 +26,28 @@ namespace diptych {
 // signal that replaces the lookup at the pixel's own secondary hit (SecondaryRay::textureSignal).
 // Sub-rays whose point casts no such ray, and secondary rays that miss, are left out; a pixel
 // with none left gets -1 for that kind. Rays deeper than the camera hit's own are not filtered.
+// Only the kinds a pixel asks for are traced (kinds[i], bit kReflected / kTransmitted; the
+// callers ask where the pixel's own secondary ray reaches a colour texture: texturedSecondaries).
 struct SecondaryFootprint {
+  static constexpr std::uint8_t kReflected = 1, kTransmitted = 2;
   const WhittedTracer& tracer;
-  bool reflection = true, transmission = true;  // the kinds traced
-  std::span<SecondarySignals> out;              // out[i] as supersampleTextureRow's out[i]
+  std::span<const std::uint8_t> kinds;  // kinds[i] for out[i]
+  std::span<SecondarySignals> out;      // out[i] as supersampleTextureRow's out[i]
 };
+
+// The kinds (SecondaryFootprint::kReflected, kTransmitted, of `wanted`) of the secondary rays
+// that point p, seen along `direction`, casts at depth 1 and that hit a colour-textured material
+// (readsColorTexture): where the footprint changes the pixel. One ray each, traced here and
+// added to `rays`.
+std::uint8_t texturedSecondaries(const WhittedTracer& tracer, const Scene& scene,
+                                 const WorldGeometry& geometry, const RtScene& rt,
+                                 const SurfacePoint& p, const vec3& direction,
+                                 std::uint8_t wanted, std::int64_t& rays);
+// Both kinds at the camera ray's hit h (rt_whitted's camera hits): texturedSecondaries where its
+// material casts either ray, without building its surface point elsewhere.
+std::uint8_t texturedSecondariesAt(const WhittedTracer& tracer, const Scene& scene,
+                                   const WorldGeometry& geometry, const RtScene& rt,
+                                   const Ray& ray, const Hit& h, std::int64_t& rays);
 
 // Row y of the signal into out[i], pixel x0 + i (the whole row: out.size() is the frame's width
 // and x0 0), from N x N sub-pixel rays per pixel, traced as coherent Embree streams; returns the

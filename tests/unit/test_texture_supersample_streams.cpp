@@ -107,9 +107,10 @@ TEST(TextureSupersampleStreams, SecondaryFootprintOfOneSampleIsTheCentreRaysRefl
   const WhittedTracer tracer(scene, geometry, rt, {});
   std::vector<vec4> colours(kW);
   std::vector<SecondarySignals> signals(kW);
+  const std::vector<std::uint8_t> kinds(kW, SecondaryFootprint::kReflected);
   int reflected = 0, different = 0;
   for (int y = 0; y < kH; ++y) {
-    const SecondaryFootprint footprint{tracer, true, false, signals};
+    const SecondaryFootprint footprint{tracer, kinds, signals};
     supersampleTextureRow(scene, geometry, rt, pinhole, {}, 1, y, colours, &footprint);
     for (int x = 0; x < kW; ++x) {
       vec4 expected(-1.f);
