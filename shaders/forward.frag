@@ -32,6 +32,31 @@ layout(binding = UNIT_BLEND_FIRST) uniform sampler2D uFirst;
 layout(location = 0, index = 0) out vec4 outColor;
 layout(location = 0, index = 1) out vec4 outTransmit;
 
+// The uv of the ray through window position `fragCoord` on the plane of triangle (p0, p1, p2);
+// false for a ray in that plane.
+bool uvAlongPixelRay(vec2 fragCoord, vec3 p0, vec3 p1, vec3 p2, vec2 t0, vec2 t1, vec2 t2,
+                     out vec2 uv) {
+  vec2 b;
+  if (!rayTriangleBarycentrics(uEye, pixelRayDirectionAt(fragCoord), p0, p1, p2, b)) return false;
+  uv = (1.0 - b.x - b.y) * t0 + b.x * t1 + b.y * t2;
+  return true;
+}
+
+// The texture level of detail a rasterizer gives this fragment (GL 4.5 core, 8.14.1): from the
+// uv derivatives, here the uv of the next pixels' rays on the same triangle's plane minus the
+// pixel's own, which is what dFdx and dFdy of the perspective-correct uv are on a planar
+// triangle, without the 2 x 2 quad (some of its fragments may be discarded above). Returned in
+// uv units, log2 max(|du/dx|, |du/dy|): sceneMaterialTexture adds each texture's log2 size (GL's
+// lambda for square textures; non-square ones by the mean of the two sizes). Below -1e38: level 0.
+float forwardUvLod(vec3 p0, vec3 p1, vec3 p2, vec2 t0, vec2 t1, vec2 t2, vec2 uv) {
+  vec2 ux, uy;
+  if (!uvAlongPixelRay(gl_FragCoord.xy + vec2(1.0, 0.0), p0, p1, p2, t0, t1, t2, ux) ||
+      !uvAlongPixelRay(gl_FragCoord.xy + vec2(0.0, 1.0), p0, p1, p2, t0, t1, t2, uy))
+    return -3.0e38;
+  float rho = max(length(ux - uv), length(uy - uv));
+  return rho > 0.0 && !isinf(rho) ? log2(rho) : -3.0e38;
+}
+
 void main() {
   // The visibility tests that need no ray/triangle work come first, so that llvmpipe skips the
   // rest of the shader for blocks whose fragments are all discarded (docs/benchmarks.md).
@@ -75,7 +100,14 @@ void main() {
   n = sceneDetailNormal(uMaterial, n, tg, p0, p1, p2, t0, t1, t2, uv);
   // As makeSurfacePoint(): the shading normal goes to the side the ray arrives from.
   if (dot(face, dir) > 0.0) n = -n;
+  // Textures filtered by their own samplers at the fragment's level of detail, as every raster
+  // draw of a GPU engine is (the mirrored scene of a planar mirror, the scene behind glass, a
+  // dynamic cube map's faces); the texture_filtering slot filters only the G-buffer's pixels.
+#if DIPTYCH_SCENE_TEXTURES
+  ShadingMaterial m = sceneMaterialLod(uMaterial, uv, forwardUvLod(p0, p1, p2, t0, t1, t2, uv));
+#else
   ShadingMaterial m = sceneMaterial(uMaterial, uv);
+#endif
 
   vec3 v = safeNormalize(-dir);
   vec3 radiance = emittedAndAmbient(m, uAmbient);

@@ -6,9 +6,12 @@ uniform mat4 uInverseViewProjection;
 uniform vec3 uEye;
 uniform vec2 uViewportSize;
 
-vec3 pixelRayDirection() {
-  vec2 ndc = 2.0 * gl_FragCoord.xy / uViewportSize - 1.0;
+// The ray through window position `fragCoord` (a pixel centre is gl_FragCoord.xy).
+vec3 pixelRayDirectionAt(vec2 fragCoord) {
+  vec2 ndc = 2.0 * fragCoord / uViewportSize - 1.0;
   // Depth 0.5 is a finite point for reversed-Z infinite projections (depth 0 is at infinity).
   vec4 h = uInverseViewProjection * vec4(ndc, 0.5, 1.0);
   return h.xyz / h.w - uEye;
 }
+
+vec3 pixelRayDirection() { return pixelRayDirectionAt(gl_FragCoord.xy); }
