@@ -146,6 +146,7 @@ bool WhittedTracer::secondaryRay(const SurfacePoint& p, const vec3& v, int depth
   // travels inside the material's volume, to the next hit: Beer-Lambert over that length. A
   // thin-walled material (thickness 0) has no volume. Nested volumes are not tracked.
   out.material = p.material;
+  out.textureSignal = vec4(-1.f);  // the caller's to set (a footprint signal)
   out.inside = shading::hasVolumeAttenuation(scene_.material(p.material)) &&
                glm::dot(direction, p.faceNormal) < 0.f;
   // In place (copy elision), not assigned: copying the returned Ray reloaded its just-stored

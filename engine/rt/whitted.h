@@ -31,8 +31,8 @@ struct RayTreeEvent {
   std::optional<Hit> hit;
 };
 
-// The texture footprint of a point's two secondary hits (passes/rt/texture_supersample.h,
-// footprint signals): the colour and coverage that replace the reflected or the transmitted ray's
+// The texture footprint of a point's two secondary hits (a caller's, e.g. the passes'
+// texture_samples): the colour and coverage that replace the reflected or the transmitted ray's
 // own lookup at its hit (applyTextureSignal). w < 0: none, the hit's own lookup.
 struct SecondarySignals {
   vec4 reflection{-1.f};
@@ -63,7 +63,7 @@ class WhittedTracer {
     bool inside = false;  // travels inside the point's volume: Beer-Lambert over its length
     int material = -1;    // the point's
     // Replaces the colour lookup at the ray's hit (applyTextureSignal); w < 0: none. Set by the
-    // caller (a footprint signal, SecondarySignals); secondaryRay leaves it at none.
+    // caller (a footprint signal, SecondarySignals); secondaryRay sets it to none.
     vec4 textureSignal{-1.f};
   };
   bool secondaryRay(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,

@@ -190,13 +190,9 @@ void RtDistributedPass::execute(PassContext& c) {
                 ? texturedSecondariesAt(tracer, world.scene(), world.geometry(), world.rtScene(),
                                         centre, h, rays)
                 : 0;
-        if (kinds) {
-          vec4 colour;
-          const SecondaryFootprint footprint{tracer, {&kinds, 1}, {&secondary, 1}};
-          rays += supersampleTextureRow(world.scene(), world.geometry(), world.rtScene(), pinhole,
-                                        {&kinds, 1}, textureSamples_, y, {&colour, 1}, &footprint,
-                                        x);
-        }
+        secondary = secondaryFootprintPixel(tracer, world.scene(), world.geometry(),
+                                            world.rtScene(), pinhole, textureSamples_, x, y,
+                                            kinds, rays);
         textureRays += rays;
       }
       vec3 sum(0.f);

@@ -74,8 +74,7 @@ void RtSecondaryPass::execute(PassContext& c) {
       textureSamples_ > 1 && sceneSatisfies(scene, SceneNeed::TexturedMaterial);
   std::atomic<std::int64_t> footprintRays = 0;
   tbb::parallel_for(0, frame.height, [&](int y) {
-    // The row's footprint signals (with SDF objects: one pixel's at a time). Per row, not per
-    // thread: tracedTile below must not find them rewritten by a row stolen in its wait.
+    // The row's footprint signals (stream path; empty without texture_samples).
     std::vector<SecondarySignals> signals;
     std::vector<vec4> colors;  // the camera hits' own: not used here
     std::vector<std::uint8_t> kinds;
@@ -92,22 +91,19 @@ void RtSecondaryPass::execute(PassContext& c) {
       return texturedSecondaries(tracer, scene, world.geometry(), world.rtScene(), p,
                                  eye.direction, kind, rowFootprintRays);
     };
-    if (footprint) {
+    if (footprint && !steps) {  // with SDF objects: pixel by pixel below
       signals.resize(std::size_t(frame.width));
       colors.resize(std::size_t(frame.width));
       kinds.assign(std::size_t(frame.width), 0);
-      if (!steps) {
-        for (int x = 0; x < frame.width; ++x) {
-          if (!isCandidate(x)) continue;
-          const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
-          kinds[std::size_t(x)] =
-              texturedAt(makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction), eye);
-        }
-        const SecondaryFootprint rowFootprint{tracer, kinds, signals};
-        rowFootprintRays += supersampleTextureRow(scene, world.geometry(), world.rtScene(),
-                                                  pinhole, kinds, textureSamples_, y, colors,
-                                                  &rowFootprint);
+      for (int x = 0; x < frame.width; ++x) {
+        if (!isCandidate(x)) continue;
+        const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
+        kinds[std::size_t(x)] =
+            texturedAt(makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction), eye);
       }
+      const SecondaryFootprint rowFootprint{tracer, kinds, signals};
+      rowFootprintRays += supersampleTextureRow(scene, world.geometry(), world.rtScene(), pinhole,
+                                                kinds, textureSamples_, y, colors, &rowFootprint);
     }
     // The row's address once (per-texel setF recomputes the stride and the index).
     std::uint32_t* row = out.row(y);
@@ -148,17 +144,14 @@ void RtSecondaryPass::execute(PassContext& c) {
           const RayCone* c = rayCones_ ? &cone : nullptr;
           if (steps) {
             // The pixel's footprint inside its step count, as its rays below.
-            const vec4* signal = nullptr;
-            const std::uint8_t textured = footprint ? texturedAt(p, eye) : 0;
-            if (textured) {
-              const SecondaryFootprint pixelFootprint{tracer, {&textured, 1}, {signals.data(), 1}};
-              rowFootprintRays += supersampleTextureRow(
-                  scene, world.geometry(), world.rtScene(), pinhole, {&textured, 1},
-                  textureSamples_, y, {colors.data(), 1}, &pixelFootprint, x);
-              signal = reflection ? &signals[0].reflection : &signals[0].transmission;
-            }
-            radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c, signal)
-                                  : tracer.transmitted(p, -eye.direction, 1, seed, c, signal);
+            const SecondarySignals s =
+                footprint ? secondaryFootprintPixel(tracer, scene, world.geometry(),
+                                                    world.rtScene(), pinhole, textureSamples_, x,
+                                                    y, texturedAt(p, eye), rowFootprintRays)
+                          : SecondarySignals{};
+            const vec4& signal = reflection ? s.reflection : s.transmission;
+            radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c, &signal)
+                                  : tracer.transmitted(p, -eye.direction, 1, seed, c, &signal);
           } else if (tracer.secondaryRay(p, -eye.direction, 1, seed, c, reflection, rays[filled])) {
             if (footprint) {
               const SecondarySignals& s = signals[std::size_t(x)];

@@ -38,11 +38,7 @@ class SecondaryRays {
  public:
   SecondaryRays(const Scene& scene, const WorldGeometry& geometry, const RtScene& rt,
                 const SecondaryFootprint& footprint, std::size_t pixels)
-      : scene_(scene), geometry_(geometry), rt_(rt), footprint_(footprint) {
-    thread_local std::vector<Mean> means;  // per thread, reused row after row
-    means.assign(2 * pixels, Mean{});
-    means_ = &means;
-  }
+      : scene_(scene), geometry_(geometry), rt_(rt), footprint_(footprint), means_(2 * pixels) {}
   // The secondary rays of sub-pixel ray `ray`'s hit h, for pixel i of the row.
   void cast(const Ray& ray, const Hit& h, std::size_t i) {
     const std::uint8_t kinds = footprint_.kinds[i];
@@ -70,7 +66,7 @@ class SecondaryRays {
     for (std::size_t k = 0; k < filled_; ++k) {
       const Hit* h = found[k];
       if (!h) continue;
-      Mean& mean = (*means_)[owner_[k]];
+      Mean& mean = means_[owner_[k]];
       mean.sum +=
           resolvedColorAt(scene_, geometry_, {h->instance, h->primitive, h->u, h->v, h->analytic});
       ++mean.count;
@@ -79,7 +75,7 @@ class SecondaryRays {
   }
   // Pixel i's signals, once every ray is flushed.
   SecondarySignals signals(std::size_t i) const {
-    return {(*means_)[2 * i].value(), (*means_)[2 * i + 1].value()};
+    return {means_[2 * i].value(), means_[2 * i + 1].value()};
   }
   std::int64_t traced() const { return traced_; }
 
@@ -96,7 +92,7 @@ class SecondaryRays {
   const WorldGeometry& geometry_;
   const RtScene& rt_;
   const SecondaryFootprint& footprint_;
-  std::vector<Mean>* means_;
+  std::vector<Mean> means_;  // pixel i's: [2 i] reflected, [2 i + 1] transmitted
   Ray rays_[kTile];
   std::size_t owner_[kTile];
   std::size_t filled_ = 0;
@@ -126,6 +122,19 @@ std::uint8_t texturedSecondaries(const WhittedTracer& tracer, const Scene& scene
         readsColorTexture(scene, scene.material(geometry.meshes[std::size_t(h.instance)].material)))
       out |= kind;
   }
+  return out;
+}
+
+SecondarySignals secondaryFootprintPixel(const WhittedTracer& tracer, const Scene& scene,
+                                         const WorldGeometry& geometry, const RtScene& rt,
+                                         const PinholeFrame& pinhole, int n, int x, int y,
+                                         std::uint8_t kinds, std::int64_t& rays) {
+  SecondarySignals out;
+  if (kinds == 0) return out;
+  vec4 colour;  // the camera hits' own signal: not asked for here
+  const SecondaryFootprint footprint{tracer, {&kinds, 1}, {&out, 1}};
+  rays += supersampleTextureRow(scene, geometry, rt, pinhole, {&kinds, 1}, n, y, {&colour, 1},
+                                &footprint, x);
   return out;
 }
 

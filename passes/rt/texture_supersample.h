@@ -43,6 +43,13 @@ std::uint8_t texturedSecondaries(const WhittedTracer& tracer, const Scene& scene
                                  const WorldGeometry& geometry, const RtScene& rt,
                                  const SurfacePoint& p, const vec3& direction,
                                  std::uint8_t wanted, std::int64_t& rays);
+// Pixel (x, y)'s SecondaryFootprint of the kinds asked (0: none, nothing traced): what
+// supersampleTextureRow gives that pixel, for the ray-by-ray paths (SDF objects), whose pixels
+// trace their rays inside their own step count. Adds the rays it traced to `rays`.
+SecondarySignals secondaryFootprintPixel(const WhittedTracer& tracer, const Scene& scene,
+                                         const WorldGeometry& geometry, const RtScene& rt,
+                                         const PinholeFrame& pinhole, int n, int x, int y,
+                                         std::uint8_t kinds, std::int64_t& rays);
 // Both kinds at the camera ray's hit h (rt_whitted's camera hits): texturedSecondaries where its
 // material casts either ray, without building its surface point elsewhere.
 std::uint8_t texturedSecondariesAt(const WhittedTracer& tracer, const Scene& scene,

@@ -143,5 +143,68 @@ TEST(TextureSupersampleStreams, SecondaryFootprintOfOneSampleIsTheCentreRaysRefl
   EXPECT_LE(different, int(kAllowedDifferent * kW * kH));
 }
 
+// At N = 2 the signal is the mean of the four sub-pixel rays' reflected level-0 lookups, traced
+// here ray by ray in stratum order; and a pixel's footprint alone (secondaryFootprintPixel, the
+// ray-by-ray paths' call, x0 = x) is the row's.
+TEST(TextureSupersampleStreams, SecondaryFootprintIsTheMeanOfTheSubPixelRaysReflectedLookups) {
+  constexpr int n = 2;
+  const auto f = renderSupersampled(1);
+  const Scene& scene = f->scene;
+  const WorldGeometry& geometry = f->world->geometry();
+  const RtScene& rt = f->world->rtScene();
+  const PinholeFrame pinhole(testing::cameraOf(scene), kW, kH);
+  const WhittedTracer tracer(scene, geometry, rt, {});
+  std::vector<vec4> colours(kW);
+  std::vector<SecondarySignals> signals(kW);
+  const std::vector<std::uint8_t> kinds(kW, SecondaryFootprint::kReflected);
+  const auto sameBits = [](const vec4& a, const vec4& b) {
+    for (int ch = 0; ch < 4; ++ch)
+      if (std::bit_cast<std::uint32_t>(a[ch]) != std::bit_cast<std::uint32_t>(b[ch])) return false;
+    return true;
+  };
+  int filtered = 0, different = 0, pixelDifferent = 0;
+  for (int y = 0; y < kH; ++y) {
+    const SecondaryFootprint footprint{tracer, kinds, signals};
+    supersampleTextureRow(scene, geometry, rt, pinhole, {}, n, y, colours, &footprint);
+    for (int x = 0; x < kW; ++x) {
+      vec4 sum(0.f);
+      int count = 0;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const Ray eye = pinhole.ray(float(x) + (float(i) + 0.5f) / n,
+                                      float(y) + (float(j) + 0.5f) / n);
+          Hit hit, far;
+          if (!CameraRays{rt, scene, geometry}.intersect(eye, hit, false)) continue;
+          const SurfacePoint p = makeSurfacePoint(
+              scene, geometry, {hit.instance, hit.primitive, hit.u, hit.v, hit.analytic},
+              eye.direction);
+          WhittedTracer::SecondaryRay s;
+          if (shading::hasReflection(p.resolved, false) &&
+              tracer.secondaryRay(p, -eye.direction, 1, 0u, nullptr, true, s) &&
+              rt.intersect(s.ray, 0.f, std::numeric_limits<float>::infinity(), far, false)) {
+            sum += resolvedColorAt(scene, geometry,
+                                   {far.instance, far.primitive, far.u, far.v, far.analytic});
+            ++count;
+          }
+        }
+      const vec4 expected = count > 0 ? sum / float(count) : vec4(-1.f);
+      filtered += count > 0 ? 1 : 0;
+      if (!sameBits(signals[std::size_t(x)].reflection, expected)) ++different;
+      std::int64_t rays = 0;
+      const SecondarySignals alone = secondaryFootprintPixel(
+          tracer, scene, geometry, rt, pinhole, n, x, y, SecondaryFootprint::kReflected, rays);
+      if (!sameBits(alone.reflection, signals[std::size_t(x)].reflection)) ++pixelDifferent;
+      if (count > 0) {
+        EXPECT_GE(rays, n * n + count) << x << ", " << y;  // camera + reflected rays
+      }
+    }
+  }
+  std::printf("N = %d: %d pixels filtered, %d differ from the ray-by-ray mean, %d alone\n", n,
+              filtered, different, pixelDifferent);
+  EXPECT_GT(filtered, kW * kH / 50);
+  EXPECT_LE(different, int(kAllowedDifferent * kW * kH));
+  EXPECT_LE(pixelDifferent, int(kAllowedDifferent * kW * kH));
+}
+
 }  // namespace
 }  // namespace diptych
