@@ -103,7 +103,8 @@ void main() {
   // Textures filtered by their own samplers at the fragment's level of detail, as every raster
   // draw of a GPU engine is (the mirrored scene of a planar mirror, the scene behind glass, a
   // dynamic cube map's faces); the texture_filtering slot filters only the G-buffer's pixels.
-#if DIPTYCH_SCENE_TEXTURES
+  // FORWARD_TEXTURE_LOD 0 (the producers' texture_lod=level0): level 0, as a ray's hit reads.
+#if DIPTYCH_SCENE_TEXTURES && FORWARD_TEXTURE_LOD
   ShadingMaterial m = sceneMaterialLod(uMaterial, uv, forwardUvLod(p0, p1, p2, t0, t1, t2, uv));
 #else
   ShadingMaterial m = sceneMaterial(uMaterial, uv);

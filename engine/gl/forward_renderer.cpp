@@ -100,13 +100,14 @@ void setCamera(const Program& p, const ForwardView& view, const mat4& viewProjec
 }  // namespace
 
 const Program& ForwardRenderer::surface(const GlShadingBuffers& shading, bool behind,
-                                        bool transmissiveOnly) {
-  const int key = (behind ? 1 : 0) + (transmissiveOnly ? 2 : 0);
+                                        bool transmissiveOnly, bool textureLod) {
+  const int key = (behind ? 1 : 0) + (transmissiveOnly ? 2 : 0) + (textureLod ? 4 : 0);
   Program& p = surfaces_[key];
   if (!p) {
     const std::vector<ShaderDefine> own = {
         {"FORWARD_BEHIND", behind ? "1" : "0"},
-        {"FORWARD_TRANSMISSIVE_ONLY", transmissiveOnly ? "1" : "0"}};
+        {"FORWARD_TRANSMISSIVE_ONLY", transmissiveOnly ? "1" : "0"},
+        {"FORWARD_TEXTURE_LOD", textureLod ? "1" : "0"}};
     p = loadProgram({"forward.vert", "forward.frag"}, withDefines(shading.defines, own));
   }
   return p;
@@ -172,7 +173,8 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
   }
   if (o.clipPlane) glEnable(GL_CLIP_DISTANCE0);
   const bool transmissiveOnly = o.behindVisibility && o.transmissiveFirst;
-  const Program& program = surface(shading, o.behindVisibility != nullptr, transmissiveOnly);
+  const Program& program =
+      surface(shading, o.behindVisibility != nullptr, transmissiveOnly, o.textureLod);
   program.set("uViewProjection", viewProjection);
   setCamera(program, view, viewProjection, width, height);
   program.set("uClipPlane", o.clipPlane.value_or(vec4(0.f, 0.f, 0.f, 1.f)));

@@ -71,6 +71,10 @@ struct ForwardOptions {
   // renderBlendFirst): both tests then read one texel instead of rebuilding the first surface
   // and its material in every fragment.
   const Texture* transmissiveFirst = nullptr;
+  // Colour textures filtered at the fragment's level of detail (GL 4.5 core 8.14.1, as a GPU
+  // engine's raster draws are; docs/forward-producers.md); false: level 0 with the magnification
+  // filter, the lookup of a ray tracer's level-0 hit.
+  bool textureLod = true;
 };
 
 // What a forward render draws: the scene and its uploaded geometry and shading buffers (passes
@@ -97,7 +101,8 @@ class ForwardRenderer {
   void ensureEnvironment(const Scene& scene);
   // forward.frag for (behind, transmissive-only) compiled for the scene on first use: constants
   // instead of uniforms, since llvmpipe would run the visibility-texel path for every fragment.
-  const Program& surface(const GlShadingBuffers& shading, bool behind, bool transmissiveOnly);
+  const Program& surface(const GlShadingBuffers& shading, bool behind, bool transmissiveOnly,
+                         bool textureLod);
   std::map<int, Program> surfaces_;
   Program background_;
   Framebuffer framebuffer_;

@@ -9,6 +9,7 @@
 #include "engine/gl/shading_buffers.h"
 #include "engine/graph/render_world.h"
 #include "engine/shading/shading.h"
+#include "passes/raster/forward_texture_lod.h"
 #include "passes/raster/fullscreen_resolve.h"
 #include "passes/raster/gbuffer_surface.h"
 #include "passes/raster/screen_rect.h"
@@ -81,11 +82,13 @@ ParamSchema BlendTransmissionPass::schema() {
   return {ParamSpec::boolean(
       "depth_prefill", true,
       "write the forward passes' depth from the first-surface step so that pixels the mask zeroes "
-      "are rejected by the early depth test, not shaded and discarded; same image")};
+      "are rejected by the early depth test, not shaded and discarded; same image"),
+          forwardTextureLodParam()};
 }
 
 void BlendTransmissionPass::setup(PassBuilder& b) {
   depthPrefill_ = b.params().boolean("depth_prefill");
+  textureLod_ = forwardTextureLod(b);
   io_ = slotIo(b, "transmission");
   surface_ = readSurface(b, io_.hits);
 }
@@ -142,6 +145,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   opaque.scissor = scissor;
   opaque.clearDepth = !depthPrefill_;
   opaque.explicitOrder = true;
+  opaque.textureLod = textureLod_;
   for (std::size_t m = 0; m < geometry.meshes.size(); ++m)
     if (!shading::materialHasTransmission(scene.material(geometry.meshes[m].material)) &&
         overlap(rects[m], covered))
@@ -167,6 +171,7 @@ void BlendTransmissionPass::execute(PassContext& c) {
   transparent.transmissiveFirst = &cache.first;
   transparent.scissor = scissor;
   transparent.explicitOrder = true;
+  transparent.textureLod = textureLod_;
   renderer.render(world.forwardScene(), view, out, cache.depth, transparent);
 
   // The slot's contract: 0 where the first surface transmits nothing. Inside the scissor only:

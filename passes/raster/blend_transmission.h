@@ -27,6 +27,7 @@ class BlendTransmissionPass : public Pass {
  private:
   bool sorted_;
   bool depthPrefill_ = true;
+  bool textureLod_ = true;  // texture_lod (passes/raster/forward_texture_lod.h)
   SlotIo io_;
   ResourceId surface_ = kNoResource;
 };

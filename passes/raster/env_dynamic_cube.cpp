@@ -9,6 +9,7 @@
 #include "engine/graph/render_world.h"
 #include "engine/scene/camera_math.h"
 #include "engine/shading/shading.h"
+#include "passes/raster/forward_texture_lod.h"
 #include "passes/raster/fullscreen_resolve.h"
 #include "passes/raster/gbuffer_surface.h"
 #include "passes/raster/screen_rect.h"
@@ -33,11 +34,13 @@ struct CubeCache {
 }  // namespace
 
 ParamSchema EnvDynamicCubePass::schema() {
-  return {ParamSpec::integer("resolution", 256, 1, 8192, "texels per side of each cube face")};
+  return {ParamSpec::integer("resolution", 256, 1, 8192, "texels per side of each cube face"),
+          forwardTextureLodParam()};
 }
 
 void EnvDynamicCubePass::setup(PassBuilder& b) {
   resolution_ = b.params().integer("resolution");
+  textureLod_ = forwardTextureLod(b);
   io_ = slotIo(b, "reflection");
   surface_ = readSurface(b, io_.hits);
 }
@@ -78,6 +81,7 @@ void EnvDynamicCubePass::execute(PassContext& c) {
     if (rect.empty()) continue;
     gl::ForwardOptions options;
     options.excludeInstance = mesh.instance;
+    options.textureLod = textureLod_;
     for (int face = 0; face < 6; ++face) {
       renderer.render(world.forwardScene(), gl::cubeFaceView(box.center(), face, znear), cache.cube,
                       cache.depth, options, face);

@@ -21,6 +21,7 @@ class EnvDynamicCubePass : public Pass {
 
  private:
   int resolution_ = 256;
+  bool textureLod_ = true;  // texture_lod (passes/raster/forward_texture_lod.h)
   SlotIo io_;
   ResourceId surface_ = kNoResource;
 };

@@ -7,6 +7,7 @@
 #include "engine/gl/shader.h"
 #include "engine/graph/render_world.h"
 #include "engine/shading/shading.h"
+#include "passes/raster/forward_texture_lod.h"
 #include "passes/raster/fullscreen_resolve.h"
 
 namespace diptych {
@@ -68,8 +69,11 @@ mat4 reflectionMatrix(const vec3& n, float d) {
   return r;
 }
 
+ParamSchema PlanarMirrorPass::schema() { return {forwardTextureLodParam()}; }
+
 void PlanarMirrorPass::setup(PassBuilder& b) {
   io_ = slotIo(b, "reflection");
+  textureLod_ = forwardTextureLod(b);
 }
 
 void PlanarMirrorPass::execute(PassContext& c) {
@@ -99,6 +103,7 @@ void PlanarMirrorPass::execute(PassContext& c) {
     gl::ForwardOptions options;
     options.excludeInstance = mirror.instance;
     options.clipPlane = vec4(n, d);
+    options.textureLod = textureLod_;
     renderer.render(world.forwardScene(), mirrored, cache.color, cache.depth, options);
 
     gl::glBindTextureUnit(0, hits.id());

@@ -14,14 +14,17 @@ namespace diptych {
 // about the plane and clipped to the camera's side of it by a user clip plane
 // (gl_ClipDistance), at frame size; each G-buffer pixel of that instance reads the mirrored
 // render at the same pixel. 0 elsewhere (non-planar reflective objects included).
+// Params: texture_lod (passes/raster/forward_texture_lod.h).
 class PlanarMirrorPass : public Pass {
  public:
+  static ParamSchema schema();
   Domain domain() const override { return Domain::Gl; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
 
  private:
   SlotIo io_;
+  bool textureLod_ = true;
 };
 
 struct MirrorPlane {

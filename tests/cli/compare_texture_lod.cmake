@@ -10,7 +10,8 @@
 #    signal), and with --texture-samples 1 the level-0 lookup is the exact producer itself;
 #  - the planar mirror (a raster draw of the mirrored scene) filters the mirrored ground's texture
 #    at each fragment's level of detail, as a GPU engine does (shaders/forward.frag), so it too
-#    measures closer to the footprint than the level-0 rays.
+#    measures closer to the footprint than the level-0 rays (with texture_lod=level0 it is
+#    those rays' image).
 # Then the ray-by-ray path (an SDF object) with a mirror and a thin glass pane, and an untextured
 # scene, where texture_samples changes nothing.
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
@@ -68,6 +69,22 @@ foreach(image hyb3 transmission0 level0)
   endif()
 endforeach()
 
+# planar_mirror's texture_lod=level0 reads level 0 as a ray's hit does: the mirror is then the
+# level-0 rays' (rt_reflection), and the default (each fragment's level) is not.
+foreach(run "planar-level0;--slot;reflection=planar_mirror:texture_lod=level0"
+        "planar;--slot;reflection=planar_mirror" "rays-level0;--slot;reflection=rt_reflection")
+  list(POP_FRONT run name)
+  expect_success(textures-${name} ARGS render "${SOURCE_DIR}/samples/scenes/textures.json" ${run}
+                 --size 200x150 --frames 1 --warmup 0 --out ${name}.exr FILES ${name}.exr)
+endforeach()
+foreach(image planar-level0 planar)
+  execute_process(COMMAND ${DIPTYCH} diff ${image}.exr rays-level0.exr --metrics flip --json
+                  WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc OUTPUT_FILE ${image}.json)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "diff ${image} rays-level0 failed: ${rc}")
+  endif()
+endforeach()
+
 # Nothing changes where no colour texture is seen: whitted's mirror and glass with
 # texture_samples 4 give the default frame byte for byte, and trace no more rays.
 foreach(run "default" "samples4;--slot;reflection=rt_reflection:texture_samples=4;--slot;transmission=rt_transmission:texture_samples=4")
@@ -116,6 +133,11 @@ print("SDF scene against rt_whitted N=3: hybrid N=3", same, "; level-0 transmiss
 if not (same < 2e-3 and min(transmission0, level0) > max(5 * same, 3e-3)):
     sys.exit("the secondary footprint on the ray-by-ray path: "
              f"{same} (same), {transmission0} and {level0} (apart)")
+planar0, planar = (json.load(open(p))["metrics"]["flip_mean"] for p in sys.argv[9:11])
+print("planar mirror against level-0 rays: texture_lod=level0", planar0, "; fragment", planar)
+# Measured 1.1e-4 against 4.8e-3.
+if not (planar0 < 1e-3 and planar > 10 * planar0):
+    sys.exit(f"planar_mirror texture_lod: level0 {planar0}, fragment {planar}")
 rmse = json.load(open(sys.argv[6]))["metrics"]["rmse"]
 rays = [{n["name"]: n["timing"]["counters"]["rays"] for n in json.load(open(p))["schedule"]
          if n["name"] in ("reflection", "transmission")} for p in sys.argv[7:9]]
@@ -125,4 +147,5 @@ if not (rmse == 0 and rays[0] == rays[1] and len(rays[0]) == 2):
 ]=] "${WORK_DIR}/footprint/results.json" "${WORK_DIR}/centre/results.json"
     "${WORK_DIR}/hyb3.json" "${WORK_DIR}/transmission0.json" "${WORK_DIR}/level0.json"
     "${WORK_DIR}/untextured.json" "${WORK_DIR}/untextured-default.json"
-    "${WORK_DIR}/untextured-samples4.json")
+    "${WORK_DIR}/untextured-samples4.json" "${WORK_DIR}/planar-level0.json"
+    "${WORK_DIR}/planar.json")
