@@ -94,60 +94,13 @@ TEST(TextureSupersampleStreams, RaysCounterCountsTheRaysOfCoveredPixelsOnly) {
   EXPECT_EQ(nodes, 1);
 }
 
-// SecondaryFootprint's rays are the tracer's own: at N = 1 the one sub-pixel ray is the pixel
-// centre's, its point casts the reflected ray the Whitted tracer casts there (secondaryRay at
-// depth 1), and the signal is the level-0 colour at that ray's hit (rt_reflection's lookup),
-// traced here ray by ray. On textures.json the mirror reflects the checkered ground.
-TEST(TextureSupersampleStreams, SecondaryFootprintOfOneSampleIsTheCentreRaysReflectedLookup) {
-  const auto f = renderSupersampled(1);
-  const Scene& scene = f->scene;
-  const WorldGeometry& geometry = f->world->geometry();
-  const RtScene& rt = f->world->rtScene();
-  const PinholeFrame pinhole(testing::cameraOf(scene), kW, kH);
-  const WhittedTracer tracer(scene, geometry, rt, {});
-  std::vector<vec4> colours(kW);
-  std::vector<SecondarySignals> signals(kW);
-  const std::vector<std::uint8_t> kinds(kW, SecondaryFootprint::kReflected);
-  int reflected = 0, different = 0;
-  for (int y = 0; y < kH; ++y) {
-    const SecondaryFootprint footprint{tracer, kinds, signals};
-    supersampleTextureRow(scene, geometry, rt, pinhole, {}, 1, y, colours, &footprint);
-    for (int x = 0; x < kW; ++x) {
-      vec4 expected(-1.f);
-      const Ray eye = pinhole.ray(float(x) + 0.5f, float(y) + 0.5f);
-      Hit hit, far;
-      if (CameraRays{rt, scene, geometry}.intersect(eye, hit, false)) {
-        const SurfacePoint p = makeSurfacePoint(
-            scene, geometry, {hit.instance, hit.primitive, hit.u, hit.v, hit.analytic},
-            eye.direction);
-        WhittedTracer::SecondaryRay s;
-        if (shading::hasReflection(p.resolved, false) &&
-            tracer.secondaryRay(p, -eye.direction, 1, 0u, nullptr, true, s) &&
-            rt.intersect(s.ray, 0.f, std::numeric_limits<float>::infinity(), far, false)) {
-          expected = resolvedColorAt(scene, geometry,
-                                     {far.instance, far.primitive, far.u, far.v, far.analytic});
-          ++reflected;
-        }
-      }
-      const vec4 got = signals[std::size_t(x)].reflection;
-      bool same = signals[std::size_t(x)].transmission == vec4(-1.f);  // not asked for
-      for (int ch = 0; ch < 4; ++ch)
-        same = same &&
-               std::bit_cast<std::uint32_t>(got[ch]) == std::bit_cast<std::uint32_t>(expected[ch]);
-      if (!same) ++different;
-    }
-  }
-  std::printf("%d pixels see a reflected hit, %d signals differ from the ray-by-ray lookup\n",
-              reflected, different);
-  EXPECT_GT(reflected, kW * kH / 50);
-  EXPECT_LE(different, int(kAllowedDifferent * kW * kH));
-}
-
-// At N = 2 the signal is the mean of the four sub-pixel rays' reflected level-0 lookups, traced
+// SecondaryFootprint's rays are the tracer's own: the signal is the mean of the N x N sub-pixel
+// rays' reflected level-0 lookups (each point casting the ray the Whitted tracer casts there,
+// secondaryRay at depth 1; at N = 1 the pixel centre's ray: rt_reflection's own lookup), traced
 // here ray by ray in stratum order; and a pixel's footprint alone (secondaryFootprintPixel, the
-// ray-by-ray paths' call, x0 = x) is the row's.
-TEST(TextureSupersampleStreams, SecondaryFootprintIsTheMeanOfTheSubPixelRaysReflectedLookups) {
-  constexpr int n = 2;
+// ray-by-ray paths' call, x0 = x) is the row's. On textures.json the mirror reflects the
+// checkered ground.
+void expectFootprintIsTheRayByRayMean(int n) {
   const auto f = renderSupersampled(1);
   const Scene& scene = f->scene;
   const WorldGeometry& geometry = f->world->geometry();
@@ -204,6 +157,14 @@ TEST(TextureSupersampleStreams, SecondaryFootprintIsTheMeanOfTheSubPixelRaysRefl
   EXPECT_GT(filtered, kW * kH / 50);
   EXPECT_LE(different, int(kAllowedDifferent * kW * kH));
   EXPECT_LE(pixelDifferent, int(kAllowedDifferent * kW * kH));
+}
+
+TEST(TextureSupersampleStreams, SecondaryFootprintOfOneSampleIsTheCentreRaysReflectedLookup) {
+  expectFootprintIsTheRayByRayMean(1);
+}
+
+TEST(TextureSupersampleStreams, SecondaryFootprintIsTheMeanOfTheSubPixelRaysReflectedLookups) {
+  expectFootprintIsTheRayByRayMean(2);
 }
 
 }  // namespace
