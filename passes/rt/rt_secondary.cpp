@@ -76,7 +76,7 @@ void RtSecondaryPass::execute(PassContext& c) {
   tbb::parallel_for(0, frame.height, [&](int y) {
     // The row's footprint signals (stream path; empty without texture_samples).
     std::vector<SecondarySignals> signals;
-    std::vector<vec4> colors;  // the camera hits' own: not used here
+    std::vector<vec4> colors;  // the camera hits' own: not looked up (-1)
     std::vector<std::uint8_t> kinds;
     const SurfaceHit* hit = exact.row(y);
     const auto isCandidate = [&](int x) {
@@ -101,7 +101,7 @@ void RtSecondaryPass::execute(PassContext& c) {
         kinds[std::size_t(x)] =
             texturedAt(makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction), eye);
       }
-      const SecondaryFootprint rowFootprint{tracer, kinds, signals};
+      const SecondaryFootprint rowFootprint{tracer, kinds, signals, false};
       rowFootprintRays += supersampleTextureRow(scene, world.geometry(), world.rtScene(), pinhole,
                                                 kinds, textureSamples_, y, colors, &rowFootprint);
     }

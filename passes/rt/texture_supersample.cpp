@@ -132,7 +132,7 @@ SecondarySignals secondaryFootprintPixel(const WhittedTracer& tracer, const Scen
   SecondarySignals out;
   if (kinds == 0) return out;
   vec4 colour;  // the camera hits' own signal: not asked for here
-  const SecondaryFootprint footprint{tracer, {&kinds, 1}, {&out, 1}};
+  const SecondaryFootprint footprint{tracer, {&kinds, 1}, {&out, 1}, false};
   rays += supersampleTextureRow(scene, geometry, rt, pinhole, {&kinds, 1}, n, y, {&colour, 1},
                                 &footprint, x);
   return out;
@@ -207,6 +207,7 @@ std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geom
   std::int64_t traced = 0;
   std::optional<SecondaryRays> footprint;
   if (secondary) footprint.emplace(scene, geometry, rt, *secondary, out.size());
+  const bool colours = !secondary || secondary->cameraColours;
   // The pixel whose rays are being summed; its rays may straddle two streams.
   int pixel = -1, count = 0;
   vec4 sum(0.f);
@@ -226,9 +227,11 @@ std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geom
         sum = vec4(0.f);
       }
       if (const Hit* h = found[i]) {
-        sum +=
-            resolvedColorAt(scene, geometry, {h->instance, h->primitive, h->u, h->v, h->analytic});
-        ++count;
+        if (colours) {
+          sum += resolvedColorAt(scene, geometry,
+                                 {h->instance, h->primitive, h->u, h->v, h->analytic});
+          ++count;
+        }
         if (footprint) footprint->cast(rays[i], *h, std::size_t(pixelOf[i]));
       }
     }

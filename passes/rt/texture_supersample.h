@@ -33,6 +33,9 @@ struct SecondaryFootprint {
   const WhittedTracer& tracer;
   std::span<const std::uint8_t> kinds;  // kinds[i] for out[i]
   std::span<SecondarySignals> out;      // out[i] as supersampleTextureRow's out[i]
+  // false: the camera hits' own colours are not looked up (supersampleTextureRow's out gets -1),
+  // for the producers that want the secondary hits' alone.
+  bool cameraColours = true;
 };
 
 // The kinds (SecondaryFootprint::kReflected, kTransmitted, of `wanted`) of the secondary rays
