@@ -53,6 +53,11 @@ for name in ("hybrid-exact", "raster", "shadow-map-256-none"):
         for ratio, ms, ex in zip(e, v["total_ms_rounds"], variants["hybrid-exact"]["total_ms_rounds"]):
             assert abs(ratio - ex / ms) < 1e-9, (name, ratio, ex, ms)
         assert len(e) == 2 and abs(v["speedup_vs_exact"] - statistics.median(e)) < 1e-9, (name, e)
+        # And in milliseconds: hybrid-exact - variant per round, their median.
+        d = v["saved_ms_vs_exact_rounds"]
+        for saved, ms, ex in zip(d, v["total_ms_rounds"], variants["hybrid-exact"]["total_ms_rounds"]):
+            assert abs(saved - (ex - ms)) < 1e-9, (name, saved, ex, ms)
+        assert len(d) == 2 and abs(v["saved_ms_vs_exact"] - statistics.median(d)) < 1e-9, (name, d)
         assert v["exact_variant"] == "hybrid-exact", (name, v["exact_variant"])
         against = "%.2fx (%.2f-%.2f)" % (v["speedup_vs_exact"], min(e), max(e))
     else:

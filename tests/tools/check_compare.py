@@ -110,6 +110,11 @@ def main():
         if abs(v["speedup_vs_exact"] - expected_ratio) > 1e-9 * expected_ratio:
             fail("%s: speedup_vs_exact %r, exact / variant %r" % (name, v["speedup_vs_exact"],
                                                                   expected_ratio))
+        # The same in milliseconds: exact - variant (one round here).
+        expected_saved = variants["hybrid-exact"]["total_ms"] - v["total_ms"]
+        if abs(v["saved_ms_vs_exact"] - expected_saved) > 1e-9 * variants["hybrid-exact"]["total_ms"]:
+            fail("%s: saved_ms_vs_exact %r, exact - variant %r" % (name, v["saved_ms_vs_exact"],
+                                                                   expected_saved))
     with open(os.path.join(out, "results.csv")) as f:
         rows = list(csv.DictReader(f))
     if sorted(r["variant"] for r in rows) != sorted(expected) or "flip_mean" not in rows[0]:
@@ -118,6 +123,9 @@ def main():
     if by_name["hybrid-exact"]["speedup_vs_exact"] != "" or \
             abs(float(by_name["sm-256"]["speedup_vs_exact"]) - variants["sm-256"]["speedup_vs_exact"]) > 1e-6:
         fail("results.csv speedup_vs_exact: %r" % {n: r["speedup_vs_exact"] for n, r in by_name.items()})
+    if by_name["hybrid-exact"]["saved_ms_vs_exact"] != "" or \
+            abs(float(by_name["sm-256"]["saved_ms_vs_exact"]) - variants["sm-256"]["saved_ms_vs_exact"]) > 1e-6:
+        fail("results.csv saved_ms_vs_exact: %r" % {n: r["saved_ms_vs_exact"] for n, r in by_name.items()})
     print("check_compare: ok (sm-256 flip %.4g > sm-4096 flip %.4g; exact relmse %.3g)"
           % (variants["sm-256"]["metrics"]["flip_mean"], variants["sm-4096"]["metrics"]["flip_mean"], exact["relmse"]))
 
