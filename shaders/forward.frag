@@ -47,7 +47,8 @@ bool uvAlongPixelRay(vec2 fragCoord, vec3 p0, vec3 p1, vec3 p2, vec2 t0, vec2 t1
 // pixel's own, which is what dFdx and dFdy of the perspective-correct uv are on a planar
 // triangle, without the 2 x 2 quad (some of its fragments may be discarded above). Returned in
 // uv units, log2 max(|du/dx|, |du/dy|): sceneMaterialTexture adds each texture's log2 size (GL's
-// lambda for square textures; non-square ones by the mean of the two sizes). Below -1e38: level 0.
+// lambda for square textures; non-square ones by the geometric mean of the two sizes). Below
+// -1e38: level 0.
 float forwardUvLod(vec3 p0, vec3 p1, vec3 p2, vec2 t0, vec2 t1, vec2 t2, vec2 uv) {
   vec2 ux, uy;
   if (!uvAlongPixelRay(gl_FragCoord.xy + vec2(1.0, 0.0), p0, p1, p2, t0, t1, t2, ux) ||
