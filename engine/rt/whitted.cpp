@@ -112,13 +112,12 @@ vec3 WhittedTracer::shadeGiven(const SurfacePoint& p, const vec3& v, int depth, 
   vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + directSum;
   // The material's model says whether the signals exist (hasReflection, hasTransmission: as for
   // the hybrid's rt_reflection and rt_transmission); secondaryTerms weights them.
-  const SecondarySignals* s = secondarySignals;
   const vec3 trans = shading::hasTransmission(m)
-                         ? transmitted(p, v, depth, seed, cone, s ? &s->transmission : nullptr)
+                         ? transmitted(p, v, depth, seed, cone, secondarySignals)
                          : vec3(0.f);
-  const vec3 refl = shading::hasReflection(m, false)
-                        ? reflected(p, v, depth, seed, cone, s ? &s->reflection : nullptr)
-                        : vec3(0.f);
+  const vec3 refl =
+      shading::hasReflection(m, false) ? reflected(p, v, depth, seed, cone, secondarySignals)
+                                       : vec3(0.f);
   return rad + shading::secondaryTerms(m, p.shadingNormal, v, refl, trans);
 }
 
@@ -146,7 +145,8 @@ bool WhittedTracer::secondaryRay(const SurfacePoint& p, const vec3& v, int depth
   // travels inside the material's volume, to the next hit: Beer-Lambert over that length. A
   // thin-walled material (thickness 0) has no volume. Nested volumes are not tracked.
   out.material = p.material;
-  out.textureSignal = vec4(-1.f);  // the caller's to set (a footprint signal)
+  out.textureSignal = vec4(-1.f);  // the caller's to set (passSignal)
+  out.forward = {};
   out.inside = shading::hasVolumeAttenuation(scene_.material(p.material)) &&
                glm::dot(direction, p.faceNormal) < 0.f;
   // In place (copy elision), not assigned: copying the returned Ray reloaded its just-stored
@@ -166,25 +166,43 @@ vec3 WhittedTracer::attenuated(const SecondaryRay& s, const vec3& radiance, floa
 
 vec3 WhittedTracer::traced(const SecondaryRay& s) const {
   float distance = 0.f;
+  const bool forwarded = s.forward.reflection.w >= 0.f || s.forward.transmission.w >= 0.f;
   const vec3 l = radiance(s.ray, s.depth, s.seed, s.hasCone ? &s.cone : nullptr,
                           s.inside ? &distance : nullptr,
-                          s.textureSignal.w >= 0.f ? &s.textureSignal : nullptr);
+                          s.textureSignal.w >= 0.f ? &s.textureSignal : nullptr,
+                          forwarded ? &s.forward : nullptr);
   return attenuated(s, l, distance);
 }
 
+void WhittedTracer::passSignal(const SecondarySignals& signals, bool reflection,
+                               SecondaryRay& ray) {
+  const vec4& signal = reflection ? signals.reflection : signals.transmission;
+  const int hops = reflection ? signals.reflectionHops : signals.transmissionHops;
+  if (signal.w < 0.f) return;
+  if (hops <= 0) {
+    ray.textureSignal = signal;
+  } else if (reflection) {
+    ray.forward.reflection = signal;
+    ray.forward.reflectionHops = hops - 1;
+  } else {
+    ray.forward.transmission = signal;
+    ray.forward.transmissionHops = hops - 1;
+  }
+}
+
 vec3 WhittedTracer::reflected(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
-                              const RayCone* cone, const vec4* textureSignal) const {
+                              const RayCone* cone, const SecondarySignals* signals) const {
   SecondaryRay s;
   if (!secondaryRay(p, v, depth, seed, cone, true, s)) return vec3(0.f);
-  if (textureSignal) s.textureSignal = *textureSignal;
+  if (signals) passSignal(*signals, true, s);
   return traced(s);
 }
 
 vec3 WhittedTracer::transmitted(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
-                                const RayCone* cone, const vec4* textureSignal) const {
+                                const RayCone* cone, const SecondarySignals* signals) const {
   SecondaryRay s;
   if (!secondaryRay(p, v, depth, seed, cone, false, s)) return vec3(0.f);
-  if (textureSignal) s.textureSignal = *textureSignal;
+  if (signals) passSignal(*signals, false, s);
   return traced(s);
 }
 

@@ -33,10 +33,14 @@ struct RayTreeEvent {
 
 // The texture footprint of a point's two secondary hits (a caller's, e.g. the passes'
 // texture_samples): the colour and coverage that replace the reflected or the transmitted ray's
-// own lookup at its hit (applyTextureSignal). w < 0: none, the hit's own lookup.
+// own lookup at its hit (applyTextureSignal). w < 0: none, the hit's own lookup. hops > 0: the
+// signal is for a hit further along the same kind of ray, past that many hits (a solid glass's
+// far side: the ground is the transmitted ray's second hit): each hit passes it on to its own ray
+// of that kind, one hop less (WhittedTracer::passSignal).
 struct SecondarySignals {
   vec4 reflection{-1.f};
   vec4 transmission{-1.f};
+  int reflectionHops = 0, transmissionHops = 0;
 };
 
 struct WhittedSettings {
@@ -62,10 +66,15 @@ class WhittedTracer {
     bool hasCone = false;
     bool inside = false;  // travels inside the point's volume: Beer-Lambert over its length
     int material = -1;    // the point's
-    // Replaces the colour lookup at the ray's hit (applyTextureSignal); w < 0: none. Set by the
-    // caller (a footprint signal, SecondarySignals); secondaryRay sets it to none.
+    // Replaces the colour lookup at the ray's hit (applyTextureSignal); w < 0: none. And what
+    // the hit passes on to its own secondary rays (hops). Set by passSignal; secondaryRay sets
+    // both to none.
     vec4 textureSignal{-1.f};
+    SecondarySignals forward;
   };
+  // The part of `signals` (a point's) for its secondary ray `ray` of the given kind: the signal
+  // itself when it is for that ray's hit (hops 0), else passed on with one hop less.
+  static void passSignal(const SecondarySignals& signals, bool reflection, SecondaryRay& ray);
   bool secondaryRay(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
                     const RayCone* cone, bool reflection, SecondaryRay& out) const;
   // The radiance the secondary ray brought from distance (its hit's, infinity on a miss),
@@ -116,11 +125,12 @@ class WhittedTracer {
              const RayCone* cone = nullptr,
              const SecondarySignals* secondarySignals = nullptr) const;
   // The secondary radiances of EVALUAMILREC, without their k M factors: L_in(p, r) and
-  // L_in(p, t). Each returns 0 when depth >= maxDepth. textureSignal: SecondaryRay's.
+  // L_in(p, t). Each returns 0 when depth >= maxDepth. signals: the point's (passSignal).
   vec3 reflected(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
-                 const RayCone* cone = nullptr, const vec4* textureSignal = nullptr) const;
+                 const RayCone* cone = nullptr, const SecondarySignals* signals = nullptr) const;
   vec3 transmitted(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
-                   const RayCone* cone = nullptr, const vec4* textureSignal = nullptr) const;
+                   const RayCone* cone = nullptr,
+                   const SecondarySignals* signals = nullptr) const;
 
   std::uint64_t raysTraced() const { return rays_.total(); }
   // Called for every RAYTRACING call (not shadow rays), for inspecting or testing the ray tree.

@@ -148,17 +148,22 @@ void WhittedTracer::tracedTile(std::span<const SecondaryRay> rays, std::span<vec
     std::uint32_t seeds[kMaxTile];
     const RayCone* cones[kMaxTile];
     vec4 signals[kMaxTile];
-    bool signalled = false;  // any footprint signal in the tile (else none is passed)
+    SecondarySignals forwards[kMaxTile];
+    // Any footprint signal in the tile, at its hits or passed on (else none is passed).
+    bool signalled = false, forwarded = false;
     vec3 radiance[kMaxTile];
     for (std::size_t i = 0; i < n; ++i) {
       DIPTYCH_CHECK(s[i].depth == s[0].depth, "WhittedTracer::tracedTile: rays of two depths");
       seeds[i] = s[i].seed;
       cones[i] = s[i].hasCone ? &s[i].cone : nullptr;
       signals[i] = s[i].textureSignal;
+      forwards[i] = s[i].forward;
       signalled = signalled || s[i].textureSignal.w >= 0.f;
+      forwarded = forwarded || s[i].forward.reflection.w >= 0.f ||
+                  s[i].forward.transmission.w >= 0.f;
     }
     radianceTile({traced, n}, {found, n}, {seeds, n}, s[0].depth, {cones, n}, {radiance, n},
-                 {signals, signalled ? n : 0});
+                 {signals, signalled ? n : 0}, {forwards, forwarded ? n : 0});
     for (std::size_t i = 0; i < n; ++i) {
       // radiance()'s hitDistance.
       const float distance = found[i] ? hits[i].t * glm::length(traced[i].direction)

@@ -185,14 +185,14 @@ void RtDistributedPass::execute(PassContext& c) {
         const Ray centre = pinhole.ray(float(x) + 0.5f, float(y) + 0.5f);
         Hit h;
         std::int64_t rays = 1;
-        const std::uint8_t kinds =
+        const FootprintTarget target =
             CameraRays{world.rtScene(), world.scene(), world.geometry()}.intersect(centre, h, false)
                 ? texturedSecondariesAt(tracer, world.scene(), world.geometry(), world.rtScene(),
                                         centre, h, rays)
-                : 0;
+                : FootprintTarget{};
         secondary = secondaryFootprintPixel(tracer, world.scene(), world.geometry(),
                                             world.rtScene(), pinhole, textureSamples_, x, y,
-                                            kinds, rays);
+                                            target, rays);
         textureRays += rays;
       }
       vec3 sum(0.f);

@@ -77,16 +77,17 @@ void RtSecondaryPass::execute(PassContext& c) {
     // The row's footprint signals (stream path; empty without texture_samples).
     std::vector<SecondarySignals> signals;
     std::vector<vec4> colors;  // the camera hits' own: not looked up (-1)
-    std::vector<std::uint8_t> kinds;
+    std::vector<FootprintTarget> targets;
+    std::vector<std::uint8_t> traced;  // targets[x].kinds != 0
     const SurfaceHit* hit = exact.row(y);
     const auto isCandidate = [&](int x) {
       return hit[x].instance >= 0 && candidate[std::size_t(hit[x].instance)];
     };
     const std::uint8_t kind =
-        reflection ? SecondaryFootprint::kReflected : SecondaryFootprint::kTransmitted;
+        reflection ? FootprintTarget::kReflected : FootprintTarget::kTransmitted;
     std::int64_t rowFootprintRays = 0;
-    // The pixel's footprint is traced where its own secondary ray, from point p, reaches a
-    // colour texture: its kind bit, else 0.
+    // The pixel's footprint is traced where its own secondary ray from point p reaches a colour
+    // texture (through hits of its kind: texturedSecondaries).
     const auto texturedAt = [&](const SurfacePoint& p, const Ray& eye) {
       return texturedSecondaries(tracer, scene, world.geometry(), world.rtScene(), p,
                                  eye.direction, kind, rowFootprintRays);
@@ -94,16 +95,18 @@ void RtSecondaryPass::execute(PassContext& c) {
     if (footprint && !steps) {  // with SDF objects: pixel by pixel below
       signals.resize(std::size_t(frame.width));
       colors.resize(std::size_t(frame.width));
-      kinds.assign(std::size_t(frame.width), 0);
+      targets.assign(std::size_t(frame.width), FootprintTarget{});
+      traced.assign(std::size_t(frame.width), 0);
       for (int x = 0; x < frame.width; ++x) {
         if (!isCandidate(x)) continue;
         const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
-        kinds[std::size_t(x)] =
+        targets[std::size_t(x)] =
             texturedAt(makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction), eye);
+        traced[std::size_t(x)] = targets[std::size_t(x)].kinds != 0;
       }
-      const SecondaryFootprint rowFootprint{tracer, kinds, signals, false};
+      const SecondaryFootprint rowFootprint{tracer, targets, signals, false};
       rowFootprintRays += supersampleTextureRow(scene, world.geometry(), world.rtScene(), pinhole,
-                                                kinds, textureSamples_, y, colors, &rowFootprint);
+                                                traced, textureSamples_, y, colors, &rowFootprint);
     }
     // The row's address once (per-texel setF recomputes the stride and the index).
     std::uint32_t* row = out.row(y);
@@ -149,14 +152,11 @@ void RtSecondaryPass::execute(PassContext& c) {
                                                     world.rtScene(), pinhole, textureSamples_, x,
                                                     y, texturedAt(p, eye), rowFootprintRays)
                           : SecondarySignals{};
-            const vec4& signal = reflection ? s.reflection : s.transmission;
-            radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c, &signal)
-                                  : tracer.transmitted(p, -eye.direction, 1, seed, c, &signal);
+            radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c, &s)
+                                  : tracer.transmitted(p, -eye.direction, 1, seed, c, &s);
           } else if (tracer.secondaryRay(p, -eye.direction, 1, seed, c, reflection, rays[filled])) {
-            if (footprint) {
-              const SecondarySignals& s = signals[std::size_t(x)];
-              rays[filled].textureSignal = reflection ? s.reflection : s.transmission;
-            }
+            if (footprint)
+              WhittedTracer::passSignal(signals[std::size_t(x)], reflection, rays[filled]);
             pixel[filled] = x;
             if (++filled == kTile) flush();
             continue;  // stored by flush

@@ -6,8 +6,8 @@
 // and rt_transmission.h. Where the scene has SDF objects they also write sdf_steps
 // (passes/rt/sdf_steps.h), the sphere-tracing steps of each pixel's secondary ray tree.
 // `texture_samples` N > 1 makes them the exact answer for textures seen in a mirror or through
-// glass too: the colour at each pixel's secondary hit is the mean over its footprint, N x N
-// sub-pixel rays each followed to its own mirror or refracted hit (SecondaryFootprint,
+// glass too: the colour at the first textured hit along each pixel's secondary ray is the mean
+// over its footprint, N x N sub-pixel rays each followed the same way (SecondaryFootprint,
 // passes/rt/texture_supersample.h), as the Whitted reference's texture_samples does; 1 (the
 // default): the hit's own lookup (level 0, or a ray cone's level with texture_lod=cone). Nothing
 // is traced for it on a scene without colour-textured materials.

@@ -25,9 +25,10 @@ std::int64_t whittedTextureRow(const Scene& scene, const WorldGeometry& geometry
   // its footprint is not traced (a plane to the horizon leaves much of the frame sky).
   // And the secondary rays that reach a colour texture, whose footprint is traced too.
   constexpr std::size_t kTile = WhittedTracer::kMaxTile;
-  thread_local std::vector<std::uint8_t> covered, kinds;  // per thread, reused row after row
+  thread_local std::vector<std::uint8_t> covered;  // per thread, reused row after row
+  thread_local std::vector<FootprintTarget> targets;
   covered.resize(out.size());
-  kinds.assign(out.size(), 0);
+  targets.assign(out.size(), FootprintTarget{});
   std::int64_t traced = std::int64_t(out.size());
   const CameraRays camera{rt, scene, geometry};
   for (std::size_t x0 = 0; x0 < out.size(); x0 += kTile) {
@@ -41,10 +42,10 @@ std::int64_t whittedTextureRow(const Scene& scene, const WorldGeometry& geometry
     for (std::size_t i = 0; i < count; ++i) {
       covered[x0 + i] = found[i] != nullptr;
       if (const Hit* h = found[i])
-        kinds[x0 + i] = texturedSecondariesAt(tracer, scene, geometry, rt, rays[i], *h, traced);
+        targets[x0 + i] = texturedSecondariesAt(tracer, scene, geometry, rt, rays[i], *h, traced);
     }
   }
-  const SecondaryFootprint footprint{tracer, kinds, secondary};
+  const SecondaryFootprint footprint{tracer, targets, secondary};
   return traced +
          supersampleTextureRow(scene, geometry, rt, pinhole, covered, n, y, out, &footprint);
 }

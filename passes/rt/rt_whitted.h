@@ -21,9 +21,9 @@ namespace diptych {
 // that producer's signal (applyTextureSignal), so that rt_whitted with N equals the all-exact
 // hybrid with texture_supersample:samples=N; 1 (the default): the pixel centre's own lookup.
 // N > 1 also filters the textures the camera hit sees in its mirror or through its glass: the
-// colour at its reflected and refracted rays' hits is the mean over the same N x N rays, each
-// followed to its own secondary hit (SecondaryFootprint, texture_supersample.h), as rt_reflection
-// and rt_transmission with texture_samples N do. Deeper hits keep their own lookup.
+// colour at the first textured hit along its reflected and refracted rays is the mean over the
+// same N x N rays, each followed the same way (SecondaryFootprint, texture_supersample.h), as
+// rt_reflection and rt_transmission with texture_samples N do.
 // Only pixels whose centre ray hits trace the N x N rays; nothing is traced for it on a scene
 // without colour-textured materials (SceneNeed), and it needs spp 1 (an error otherwise: with
 // more samples each pixel already integrates its texture).

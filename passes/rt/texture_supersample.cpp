@@ -32,8 +32,56 @@ struct Mean {
   vec4 value() const { return count > 0 ? sum / float(count) : vec4(-1.f); }
 };
 
-// SecondaryFootprint's rays: queued per camera stream, traced in streams of kStreamRays, their
-// hits' colours summed into the pixel's mean of their kind.
+SurfaceHit surfaceHit(const Hit& h) { return {h.instance, h.primitive, h.u, h.v, h.analytic}; }
+
+const Material& materialOf(const Scene& scene, const WorldGeometry& geometry, const Hit& h) {
+  return scene.material(geometry.meshes[std::size_t(h.instance)].material);
+}
+
+// Whether a point casts a ray of the kind, as WhittedTracer::shadeGiven decides: its material
+// first (cheap), then the point's own resolved material (a texture may make it rough or not
+// metal; `p` null: the material only).
+bool casts(const Material& m, const SurfacePoint* p, bool reflection) {
+  if (!(reflection ? shading::materialHasReflection(m) : shading::materialHasTransmission(m)))
+    return false;
+  return !p || (reflection ? shading::hasReflection(p->resolved, false)
+                           : shading::hasTransmission(p->resolved));
+}
+
+// One link of a chain of rays of one kind: the ray that `point` (at `depth`, reached along
+// `direction`) casts; false at the tracer's depth limit.
+bool link(const WhittedTracer& tracer, const SurfacePoint& point, const vec3& direction, int depth,
+          bool reflection, Ray& out) {
+  WhittedTracer::SecondaryRay s;
+  if (!tracer.secondaryRay(point, -direction, depth, 0u, nullptr, reflection, s)) return false;
+  out = s.ray;
+  return true;
+}
+
+// The ray of one kind that camera point p casts, followed through `hops` hits that cast that
+// kind again (each traced here, one at a time, counted in `rays`): the ray that leaves the last
+// of them. false where the chain breaks (a miss, a hit that casts no such ray, the depth limit).
+bool followChain(const WhittedTracer& tracer, const Scene& scene, const WorldGeometry& geometry,
+                 const RtScene& rt, const SurfacePoint& p, const vec3& direction, bool reflection,
+                 int hops, std::int64_t& rays, Ray& out) {
+  if (!link(tracer, p, direction, 1, reflection, out)) return false;
+  for (int hop = 1; hop <= hops; ++hop) {
+    Hit h;
+    ++rays;
+    if (!rt.intersect(out, 0.f, std::numeric_limits<float>::infinity(), h, false)) return false;
+    const Material& m = materialOf(scene, geometry, h);
+    if (!casts(m, nullptr, reflection)) return false;
+    const SurfacePoint next = makeSurfacePoint(scene, geometry, surfaceHit(h), out.direction);
+    if (!casts(m, &next, reflection)) return false;
+    const vec3 arriving = out.direction;
+    if (!link(tracer, next, arriving, 1 + hop, reflection, out)) return false;
+  }
+  return true;
+}
+
+// SecondaryFootprint's rays: each sub-pixel hit's chain followed to its target's last link, those
+// links queued per camera stream and traced in streams of kStreamRays, their hits' colours summed
+// into the pixel's mean of their kind.
 class SecondaryRays {
  public:
   SecondaryRays(const Scene& scene, const WorldGeometry& geometry, const RtScene& rt,
@@ -41,20 +89,22 @@ class SecondaryRays {
       : scene_(scene), geometry_(geometry), rt_(rt), footprint_(footprint), means_(2 * pixels) {}
   // The secondary rays of sub-pixel ray `ray`'s hit h, for pixel i of the row.
   void cast(const Ray& ray, const Hit& h, std::size_t i) {
-    const std::uint8_t kinds = footprint_.kinds[i];
-    if (kinds == 0) return;
-    const Material& m = scene_.material(geometry_.meshes[std::size_t(h.instance)].material);
-    const bool reflective =
-        (kinds & SecondaryFootprint::kReflected) && shading::materialHasReflection(m);
+    const FootprintTarget& target = footprint_.targets[i];
+    if (target.kinds == 0) return;
+    const Material& m = materialOf(scene_, geometry_, h);
+    const bool reflective = (target.kinds & FootprintTarget::kReflected) && casts(m, nullptr, true);
     const bool transmissive =
-        (kinds & SecondaryFootprint::kTransmitted) && shading::materialHasTransmission(m);
+        (target.kinds & FootprintTarget::kTransmitted) && casts(m, nullptr, false);
     if (!reflective && !transmissive) return;
-    const SurfacePoint p =
-        makeSurfacePoint(scene_, geometry_, {h.instance, h.primitive, h.u, h.v, h.analytic},
-                         ray.direction);
-    // Per point, as the tracer decides (a texture may make this texel rough or not metal).
-    if (reflective && shading::hasReflection(p.resolved, false)) queue(p, ray, true, i);
-    if (transmissive && shading::hasTransmission(p.resolved)) queue(p, ray, false, i);
+    const SurfacePoint p = makeSurfacePoint(scene_, geometry_, surfaceHit(h), ray.direction);
+    for (const bool reflection : {true, false}) {
+      const int k = reflection ? 0 : 1;
+      Ray last;
+      if ((reflection ? reflective : transmissive) && casts(m, &p, reflection) &&
+          followChain(footprint_.tracer, scene_, geometry_, rt_, p, ray.direction, reflection,
+                      target.hops[k], traced_, last))
+        queue(last, 2 * i + std::size_t(k));
+    }
   }
   // Traces what is queued.
   void flush() {
@@ -64,28 +114,25 @@ class SecondaryRays {
     rt_.intersectRays({rays_, filled_}, {hits, filled_}, {found, filled_}, false);
     traced_ += std::int64_t(filled_);
     for (std::size_t k = 0; k < filled_; ++k) {
-      const Hit* h = found[k];
-      if (!h) continue;
+      if (!found[k]) continue;
       Mean& mean = means_[owner_[k]];
-      mean.sum +=
-          resolvedColorAt(scene_, geometry_, {h->instance, h->primitive, h->u, h->v, h->analytic});
+      mean.sum += resolvedColorAt(scene_, geometry_, surfaceHit(*found[k]));
       ++mean.count;
     }
     filled_ = 0;
   }
-  // Pixel i's signals, once every ray is flushed.
+  // Pixel i's signals, once every ray is flushed, with its target's hops.
   SecondarySignals signals(std::size_t i) const {
-    return {means_[2 * i].value(), means_[2 * i + 1].value()};
+    const FootprintTarget& target = footprint_.targets[i];
+    return {means_[2 * i].value(), means_[2 * i + 1].value(), target.hops[0], target.hops[1]};
   }
   std::int64_t traced() const { return traced_; }
 
  private:
   static constexpr std::size_t kTile = RtScene::kStreamRays;
-  void queue(const SurfacePoint& p, const Ray& ray, bool reflection, std::size_t i) {
-    WhittedTracer::SecondaryRay s;
-    if (!footprint_.tracer.secondaryRay(p, -ray.direction, 1, 0u, nullptr, reflection, s)) return;
-    rays_[filled_] = s.ray;
-    owner_[filled_] = 2 * i + (reflection ? 0 : 1);
+  void queue(const Ray& ray, std::size_t owner) {
+    rays_[filled_] = ray;
+    owner_[filled_] = owner;
     if (++filled_ == kTile) flush();
   }
   const Scene& scene_;
@@ -101,53 +148,60 @@ class SecondaryRays {
 
 }  // namespace
 
-std::uint8_t texturedSecondaries(const WhittedTracer& tracer, const Scene& scene,
-                                 const WorldGeometry& geometry, const RtScene& rt,
-                                 const SurfacePoint& p, const vec3& direction,
-                                 std::uint8_t wanted, std::int64_t& rays) {
-  std::uint8_t out = 0;
+FootprintTarget texturedSecondaries(const WhittedTracer& tracer, const Scene& scene,
+                                    const WorldGeometry& geometry, const RtScene& rt,
+                                    const SurfacePoint& p, const vec3& direction,
+                                    std::uint8_t wanted, std::int64_t& rays) {
+  FootprintTarget out;
   for (const bool reflection : {true, false}) {
-    const std::uint8_t kind =
-        reflection ? SecondaryFootprint::kReflected : SecondaryFootprint::kTransmitted;
-    if (!(wanted & kind)) continue;
-    // As WhittedTracer::shadeGiven decides whether the point casts the ray.
-    if (reflection ? !shading::hasReflection(p.resolved, false)
-                   : !shading::hasTransmission(p.resolved))
-      continue;
-    WhittedTracer::SecondaryRay s;
-    if (!tracer.secondaryRay(p, -direction, 1, 0u, nullptr, reflection, s)) continue;
-    Hit h;
-    ++rays;
-    if (rt.intersect(s.ray, 0.f, std::numeric_limits<float>::infinity(), h, false) &&
-        readsColorTexture(scene, scene.material(geometry.meshes[std::size_t(h.instance)].material)))
-      out |= kind;
+    const std::uint8_t kind = reflection ? FootprintTarget::kReflected : FootprintTarget::kTransmitted;
+    if (!(wanted & kind) || !casts(scene.material(p.material), &p, reflection)) continue;
+    // Along the chain until a hit reads a colour texture, or the chain breaks.
+    SurfacePoint point = p;
+    vec3 arriving = direction;
+    for (int hop = 0;; ++hop) {
+      Ray ray;
+      Hit h;
+      if (!link(tracer, point, arriving, 1 + hop, reflection, ray)) break;
+      ++rays;
+      if (!rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, false)) break;
+      const Material& m = materialOf(scene, geometry, h);
+      if (readsColorTexture(scene, m)) {
+        out.kinds |= kind;
+        out.hops[reflection ? 0 : 1] = std::uint8_t(hop);
+        break;
+      }
+      if (!casts(m, nullptr, reflection)) break;
+      point = makeSurfacePoint(scene, geometry, surfaceHit(h), ray.direction);
+      if (!casts(m, &point, reflection)) break;
+      arriving = ray.direction;
+    }
   }
   return out;
+}
+
+FootprintTarget texturedSecondariesAt(const WhittedTracer& tracer, const Scene& scene,
+                                      const WorldGeometry& geometry, const RtScene& rt,
+                                      const Ray& ray, const Hit& h, std::int64_t& rays) {
+  const Material& m = materialOf(scene, geometry, h);
+  if (!casts(m, nullptr, true) && !casts(m, nullptr, false)) return {};
+  const SurfacePoint p = makeSurfacePoint(scene, geometry, surfaceHit(h), ray.direction);
+  return texturedSecondaries(tracer, scene, geometry, rt, p, ray.direction,
+                             FootprintTarget::kReflected | FootprintTarget::kTransmitted, rays);
 }
 
 SecondarySignals secondaryFootprintPixel(const WhittedTracer& tracer, const Scene& scene,
                                          const WorldGeometry& geometry, const RtScene& rt,
                                          const PinholeFrame& pinhole, int n, int x, int y,
-                                         std::uint8_t kinds, std::int64_t& rays) {
+                                         const FootprintTarget& target, std::int64_t& rays) {
   SecondarySignals out;
-  if (kinds == 0) return out;
+  if (target.kinds == 0) return out;
   vec4 colour;  // the camera hits' own signal: not asked for here
-  const SecondaryFootprint footprint{tracer, {&kinds, 1}, {&out, 1}, false};
-  rays += supersampleTextureRow(scene, geometry, rt, pinhole, {&kinds, 1}, n, y, {&colour, 1},
+  const std::uint8_t traced = 1;
+  const SecondaryFootprint footprint{tracer, {&target, 1}, {&out, 1}, false};
+  rays += supersampleTextureRow(scene, geometry, rt, pinhole, {&traced, 1}, n, y, {&colour, 1},
                                 &footprint, x);
   return out;
-}
-
-std::uint8_t texturedSecondariesAt(const WhittedTracer& tracer, const Scene& scene,
-                                   const WorldGeometry& geometry, const RtScene& rt,
-                                   const Ray& ray, const Hit& h, std::int64_t& rays) {
-  const Material& m = scene.material(geometry.meshes[std::size_t(h.instance)].material);
-  if (!shading::materialHasReflection(m) && !shading::materialHasTransmission(m)) return 0;
-  const SurfacePoint p = makeSurfacePoint(
-      scene, geometry, {h.instance, h.primitive, h.u, h.v, h.analytic}, ray.direction);
-  return texturedSecondaries(tracer, scene, geometry, rt, p, ray.direction,
-                             SecondaryFootprint::kReflected | SecondaryFootprint::kTransmitted,
-                             rays);
 }
 
 ParamSchema TextureSupersamplePass::schema() {

@@ -19,45 +19,53 @@
 
 namespace diptych {
 
-// The footprint of the camera hits' secondary hits, beside the camera hits' own (the texture_samples
-// of rt_whitted, rt_reflection and rt_transmission; docs/textures.md): each sub-pixel ray's point
-// casts the mirror and refracted rays its own shading would (WhittedTracer::secondaryRay at depth
-// 1), and the mean colour and coverage at what they hit (level 0, as the camera hits') is the
-// signal that replaces the lookup at the pixel's own secondary hit (SecondaryRay::textureSignal).
-// Sub-rays whose point casts no such ray, and secondary rays that miss, are left out; a pixel
-// with none left gets -1 for that kind. Rays deeper than the camera hit's own are not filtered.
-// Only the kinds a pixel asks for are traced (kinds[i], bit kReflected / kTransmitted; the
-// callers ask where the pixel's own secondary ray reaches a colour texture: texturedSecondaries).
-struct SecondaryFootprint {
+// Where a pixel's footprint is traced, per kind of secondary ray (index 0 reflected, 1
+// transmitted): bit kReflected / kTransmitted of `kinds`, and the hits of that kind the ray
+// passes through first (hops: a solid glass's far side is one; texturedSecondaries finds them).
+struct FootprintTarget {
   static constexpr std::uint8_t kReflected = 1, kTransmitted = 2;
+  std::uint8_t kinds = 0;
+  std::uint8_t hops[2] = {0, 0};
+};
+
+// The footprint of the textures a camera hit sees along its secondary rays, beside the camera
+// hits' own (the texture_samples of rt_whitted, rt_reflection and rt_transmission;
+// docs/textures.md): each sub-pixel ray's point casts the mirror or refracted ray its own shading
+// would (WhittedTracer::secondaryRay), followed through the target's hops of the same kind, and
+// the mean colour and coverage at what it then hits (level 0, as the camera hits') is the signal
+// that replaces the lookup at the pixel's own hit there (WhittedTracer::passSignal). Sub-rays whose
+// chain breaks (a point that casts no such ray, a miss) are left out; a pixel with none left gets
+// -1 for that kind. Only the kinds a pixel's target asks for are traced.
+struct SecondaryFootprint {
   const WhittedTracer& tracer;
-  std::span<const std::uint8_t> kinds;  // kinds[i] for out[i]
-  std::span<SecondarySignals> out;      // out[i] as supersampleTextureRow's out[i]
+  std::span<const FootprintTarget> targets;  // targets[i] for out[i]
+  std::span<SecondarySignals> out;           // out[i] as supersampleTextureRow's out[i]
   // false: the camera hits' own colours are not looked up (supersampleTextureRow's out gets -1),
   // for the producers that want the secondary hits' alone.
   bool cameraColours = true;
 };
 
-// The kinds (SecondaryFootprint::kReflected, kTransmitted, of `wanted`) of the secondary rays
-// that point p, seen along `direction`, casts at depth 1 and that hit a colour-textured material
-// (readsColorTexture): where the footprint changes the pixel. One ray each, traced here and
-// added to `rays`.
-std::uint8_t texturedSecondaries(const WhittedTracer& tracer, const Scene& scene,
-                                 const WorldGeometry& geometry, const RtScene& rt,
-                                 const SurfacePoint& p, const vec3& direction,
-                                 std::uint8_t wanted, std::int64_t& rays);
-// Pixel (x, y)'s SecondaryFootprint of the kinds asked (0: none, nothing traced): what
+// The kinds (of `wanted`) of the secondary rays that camera point p, seen along `direction`,
+// casts and that reach a colour-textured material (readsColorTexture), through hits of the same
+// kind (a solid glass's far side, a mirror seen in a mirror) up to the tracer's depth: where the
+// footprint changes the pixel, and how many hops away. The rays are traced here, one at a time,
+// and added to `rays`.
+FootprintTarget texturedSecondaries(const WhittedTracer& tracer, const Scene& scene,
+                                    const WorldGeometry& geometry, const RtScene& rt,
+                                    const SurfacePoint& p, const vec3& direction,
+                                    std::uint8_t wanted, std::int64_t& rays);
+// Both kinds at the camera ray's hit h (rt_whitted's camera hits): texturedSecondaries where its
+// material casts either ray, its surface point built here.
+FootprintTarget texturedSecondariesAt(const WhittedTracer& tracer, const Scene& scene,
+                                      const WorldGeometry& geometry, const RtScene& rt,
+                                      const Ray& ray, const Hit& h, std::int64_t& rays);
+// Pixel (x, y)'s SecondaryFootprint for its target (no kinds: none, nothing traced): what
 // supersampleTextureRow gives that pixel, for the ray-by-ray paths (SDF objects), whose pixels
 // trace their rays inside their own step count. Adds the rays it traced to `rays`.
 SecondarySignals secondaryFootprintPixel(const WhittedTracer& tracer, const Scene& scene,
                                          const WorldGeometry& geometry, const RtScene& rt,
                                          const PinholeFrame& pinhole, int n, int x, int y,
-                                         std::uint8_t kinds, std::int64_t& rays);
-// Both kinds at the camera ray's hit h (rt_whitted's camera hits): texturedSecondaries where its
-// material casts either ray, without building its surface point elsewhere.
-std::uint8_t texturedSecondariesAt(const WhittedTracer& tracer, const Scene& scene,
-                                   const WorldGeometry& geometry, const RtScene& rt,
-                                   const Ray& ray, const Hit& h, std::int64_t& rays);
+                                         const FootprintTarget& target, std::int64_t& rays);
 
 // Row y of the signal into out[i], pixel x0 + i (the whole row: out.size() is the frame's width
 // and x0 0), from N x N sub-pixel rays per pixel, traced as coherent Embree streams; returns the

@@ -26,11 +26,13 @@ expect_failure(reflection-texture-samples-range ARGS render
                "${SOURCE_DIR}/samples/scenes/textures.json" --size 32x24
                --slot reflection=rt_reflection:texture_samples=65 EXPECT "texture_samples")
 
-# The ray-by-ray path (a scene with an SDF object: each pixel's footprint rays inside its
-# sphere-tracing step count), with a mirror sphere and a thin glass pane over the checkered
-# ground: rt_whitted's texture_samples equals the hybrid whose rt_reflection and rt_transmission
-# take the same N, and differs from the hybrid whose transmission (or both) keeps level 0.
-file(WRITE "${WORK_DIR}/sdf-mirror.json" [=[
+# A mirror sphere and a solid glass sphere (the ground seen through it is its refracted ray's
+# second hit: one hop past its far side) over the checkered ground, on both paths of the
+# producers: Embree streams, and ray by ray (with a thin glass pane and an SDF object: each
+# pixel's footprint rays inside its sphere-tracing step count). rt_whitted's texture_samples equals the
+# hybrid whose rt_reflection and rt_transmission take the same N, and differs from the hybrid
+# whose transmission (or both) keeps level 0.
+set(scene [=[
 {"camera": {"position": [0, 1.2, 6], "target": [0, 0.6, 0], "fov": 45},
  "environment": {"color": [0.5, 0.7, 0.9]},
  "materials": {"ground": {"kd": 0.85, "ka": 0.3, "checker_texture": {"texels": 512, "cells": 128,
@@ -45,28 +47,41 @@ file(WRITE "${WORK_DIR}/sdf-mirror.json" [=[
               "transform": {"translate": [0, 0, -190]}},
              {"type": "sphere", "radius": 1.0, "material": "mirror",
               "transform": {"translate": [-1.2, 1.0, 0]}},
+             {"type": "sphere", "radius": 0.45, "material": "glass",
+              "transform": {"translate": [-0.1, 0.45, 2.2]}}@MORE@]}
+]=])
+# The streams scene has the solid sphere alone (its footprint one hop away); the SDF scene adds
+# the pane (no hop) and the SDF object.
+string(REPLACE "@MORE@" "" streams "${scene}")
+string(REPLACE "@MORE@" [=[,
              {"type": "plane", "size": [1.6, 1.6], "material": "glass",
               "transform": {"translate": [0.9, 0.9, 0.5], "rotate": [75, 0, 0]}},
              {"type": "sdf", "material": "stone", "resolution": 32,
-              "shape": {"type": "sphere", "radius": 0.4}, "transform": {"translate": [2.0, 0.4, 1.5]}}]}
-]=])
+              "shape": {"type": "sphere", "radius": 0.4}, "transform": {"translate": [2.0, 0.4, 1.5]}}]=]
+       sdf "${scene}")
+file(WRITE "${WORK_DIR}/streams.json" "${streams}")
+file(WRITE "${WORK_DIR}/sdf.json" "${sdf}")
 file(WRITE "${WORK_DIR}/whitted3.json"
      [=[{"passes": [{"name": "r", "type": "rt_whitted", "params": {"texture_samples": 3}}], "outputs": ["r.color"]}]=])
 set(texture3 "--slot;texture_filtering=texture_supersample:samples=3")
 set(reflection3 "--slot;reflection=rt_reflection:texture_samples=3")
-foreach(run "ref3;--recipe;whitted3.json"
-        "hyb3;${texture3};${reflection3};--slot;transmission=rt_transmission:texture_samples=3"
-        "transmission0;${texture3};${reflection3}" "level0;${texture3}")
-  list(POP_FRONT run name)
-  expect_success(sdf-mirror-${name} ARGS render sdf-mirror.json ${run} --size 96x72
-                 --frames 1 --warmup 0 --out ${name}.exr FILES ${name}.exr)
-endforeach()
-foreach(image hyb3 transmission0 level0)
-  execute_process(COMMAND ${DIPTYCH} diff ${image}.exr ref3.exr --metrics flip --json
-                  WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc OUTPUT_FILE ${image}.json)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "diff ${image} ref3 failed: ${rc}")
-  endif()
+foreach(path streams sdf)
+  foreach(run "ref3;--recipe;whitted3.json"
+          "hyb3;${texture3};${reflection3};--slot;transmission=rt_transmission:texture_samples=3"
+          "transmission0;${texture3};${reflection3}" "level0;${texture3}")
+    list(POP_FRONT run name)
+    expect_success(${path}-${name} ARGS render ${path}.json ${run} --size 96x72 --frames 1
+                   --warmup 0 --out ${path}-${name}.exr FILES ${path}-${name}.exr)
+  endforeach()
+  foreach(image hyb3 transmission0 level0)
+    execute_process(COMMAND ${DIPTYCH} diff ${path}-${image}.exr ${path}-ref3.exr --metrics flip
+                            --json
+                    WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE rc
+                    OUTPUT_FILE ${path}-${image}.json)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "diff ${path}-${image} ${path}-ref3 failed: ${rc}")
+    endif()
+  endforeach()
 endforeach()
 
 # planar_mirror's texture_lod=level0 reads level 0 as a ray's hit does: the mirror is then the
@@ -102,6 +117,7 @@ endif()
 
 expect_python("texture LOD at traced hits against the footprint" [=[
 import json, sys
+work = sys.argv[3]
 def load(path):
     r = json.load(open(path))
     return r, {v["name"]: v for v in r["variants"]}
@@ -126,26 +142,29 @@ if not signal(v4, "planar-mirror") < 0.7 * signal(v4, "reflection-level0"):
 # (measured 0.22).
 if not (signal(v1, "reflection-level0") == 0 and signal(v1, "reflection-cone") > 0.02):
     sys.exit("--texture-samples 1 did not make the level-0 lookup the exact reflection")
-same, transmission0, level0 = (json.load(open(p))["metrics"]["flip_mean"] for p in sys.argv[3:6])
-print("SDF scene against rt_whitted N=3: hybrid N=3", same, "; level-0 transmission",
-      transmission0, "; both level 0", level0)
-# Measured 2.1e-4 (the G-buffer's SDF silhouette pixels) against 0.013 and 0.018.
-if not (same < 2e-3 and min(transmission0, level0) > max(5 * same, 3e-3)):
-    sys.exit("the secondary footprint on the ray-by-ray path: "
-             f"{same} (same), {transmission0} and {level0} (apart)")
-planar0, planar = (json.load(open(p))["metrics"]["flip_mean"] for p in sys.argv[9:11])
+for path in ("streams", "sdf"):
+    same, transmission0, level0 = (
+        json.load(open(f"{work}/{path}-{name}.json"))["metrics"]["flip_mean"]
+        for name in ("hyb3", "transmission0", "level0"))
+    print(f"{path}: against rt_whitted N=3: hybrid N=3", same, "; level-0 transmission",
+          transmission0, "; both level 0", level0)
+    # Measured 2e-6 on both paths against 0.0025 and 0.0075 (streams: the solid sphere alone
+    # sets the transmission apart, through its one hop), and 0.016 and 0.021 (SDF scene).
+    if not (same < 2e-3 and min(transmission0, level0) > max(20 * same, 1e-3)):
+        sys.exit(f"the secondary footprint ({path}): "
+                 f"{same} (same), {transmission0} and {level0} (apart)")
+planar0, planar = (json.load(open(p))["metrics"]["flip_mean"] for p in sys.argv[7:9])
 print("planar mirror against level-0 rays: texture_lod=level0", planar0, "; fragment", planar)
 # Measured 1.1e-4 against 4.8e-3.
 if not (planar0 < 1e-3 and planar > 10 * planar0):
     sys.exit(f"planar_mirror texture_lod: level0 {planar0}, fragment {planar}")
-rmse = json.load(open(sys.argv[6]))["metrics"]["rmse"]
+rmse = json.load(open(sys.argv[4]))["metrics"]["rmse"]
 rays = [{n["name"]: n["timing"]["counters"]["rays"] for n in json.load(open(p))["schedule"]
-         if n["name"] in ("reflection", "transmission")} for p in sys.argv[7:9]]
+         if n["name"] in ("reflection", "transmission")} for p in sys.argv[5:7]]
 print("whitted with texture_samples 4: rmse", rmse, "rays", rays)
 if not (rmse == 0 and rays[0] == rays[1] and len(rays[0]) == 2):
     sys.exit(f"texture_samples changed an untextured scene: rmse {rmse}, rays {rays}")
 ]=] "${WORK_DIR}/footprint/results.json" "${WORK_DIR}/centre/results.json"
-    "${WORK_DIR}/hyb3.json" "${WORK_DIR}/transmission0.json" "${WORK_DIR}/level0.json"
-    "${WORK_DIR}/untextured.json" "${WORK_DIR}/untextured-default.json"
+    "${WORK_DIR}" "${WORK_DIR}/untextured.json" "${WORK_DIR}/untextured-default.json"
     "${WORK_DIR}/untextured-samples4.json" "${WORK_DIR}/planar-level0.json"
     "${WORK_DIR}/planar.json")

@@ -109,7 +109,7 @@ void expectFootprintIsTheRayByRayMean(int n) {
   const WhittedTracer tracer(scene, geometry, rt, {});
   std::vector<vec4> colours(kW);
   std::vector<SecondarySignals> signals(kW);
-  const std::vector<std::uint8_t> kinds(kW, SecondaryFootprint::kReflected);
+  const std::vector<FootprintTarget> targets(kW, {FootprintTarget::kReflected});
   const auto sameBits = [](const vec4& a, const vec4& b) {
     for (int ch = 0; ch < 4; ++ch)
       if (std::bit_cast<std::uint32_t>(a[ch]) != std::bit_cast<std::uint32_t>(b[ch])) return false;
@@ -117,7 +117,7 @@ void expectFootprintIsTheRayByRayMean(int n) {
   };
   int filtered = 0, different = 0, pixelDifferent = 0;
   for (int y = 0; y < kH; ++y) {
-    const SecondaryFootprint footprint{tracer, kinds, signals};
+    const SecondaryFootprint footprint{tracer, targets, signals};
     supersampleTextureRow(scene, geometry, rt, pinhole, {}, n, y, colours, &footprint);
     for (int x = 0; x < kW; ++x) {
       vec4 sum(0.f);
@@ -145,7 +145,7 @@ void expectFootprintIsTheRayByRayMean(int n) {
       if (!sameBits(signals[std::size_t(x)].reflection, expected)) ++different;
       std::int64_t rays = 0;
       const SecondarySignals alone = secondaryFootprintPixel(
-          tracer, scene, geometry, rt, pinhole, n, x, y, SecondaryFootprint::kReflected, rays);
+          tracer, scene, geometry, rt, pinhole, n, x, y, targets[std::size_t(x)], rays);
       if (!sameBits(alone.reflection, signals[std::size_t(x)].reflection)) ++pixelDifferent;
       if (count > 0) {
         EXPECT_GE(rays, n * n + count) << x << ", " << y;  // camera + reflected rays
