@@ -27,10 +27,10 @@ ParamSchema RtSecondaryPass::schema() {
           ParamSpec::choice("texture_lod", "level0", {"level0", "cone"},
                             "texture level at traced hits: level 0, or ray cones (RTG ch. 20)"),
           ParamSpec::integer("texture_samples", 1, 1, 64,
-                             "N: the texture colour at each secondary hit averaged over the "
-                             "pixel's footprint, N x N sub-pixel rays followed to their own "
-                             "secondary hits (the Whitted reference's texture_samples); 1: the "
-                             "hit's own lookup")};
+                             "N: the texture colour at the first textured hit along each "
+                             "pixel's secondary ray averaged over the pixel's footprint, N x N "
+                             "sub-pixel rays followed the same way (the Whitted reference's "
+                             "texture_samples); 1: the hit's own lookup")};
 }
 
 void RtSecondaryPass::setup(PassBuilder& b) {
