@@ -35,8 +35,7 @@ vec3 WhittedTracer::radiance(const Ray& ray, int depth, std::uint32_t seed, cons
 }
 
 vec3 WhittedTracer::radianceAt(const Ray& ray, int depth, std::uint32_t seed, const Hit* hit,
-                               const RayCone* cone, float* hitDistance,
-                               const vec4* textureSignal,
+                               const RayCone* cone, float* hitDistance, const vec4* textureSignal,
                                const SecondarySignals* secondarySignals) const {
   countRay(ray, depth, hit);
   if (hitDistance)
@@ -115,9 +114,9 @@ vec3 WhittedTracer::shadeGiven(const SurfacePoint& p, const vec3& v, int depth, 
   const vec3 trans = shading::hasTransmission(m)
                          ? transmitted(p, v, depth, seed, cone, secondarySignals)
                          : vec3(0.f);
-  const vec3 refl =
-      shading::hasReflection(m, false) ? reflected(p, v, depth, seed, cone, secondarySignals)
-                                       : vec3(0.f);
+  const vec3 refl = shading::hasReflection(m, false)
+                        ? reflected(p, v, depth, seed, cone, secondarySignals)
+                        : vec3(0.f);
   return rad + shading::secondaryTerms(m, p.shadingNormal, v, refl, trans);
 }
 
@@ -145,8 +144,7 @@ bool WhittedTracer::secondaryRay(const SurfacePoint& p, const vec3& v, int depth
   // travels inside the material's volume, to the next hit: Beer-Lambert over that length. A
   // thin-walled material (thickness 0) has no volume. Nested volumes are not tracked.
   out.material = p.material;
-  out.textureSignal = vec4(-1.f);  // the caller's to set (passSignal)
-  out.forward = {};
+  out.signalled = false;  // the caller's to set (passSignal)
   out.inside = shading::hasVolumeAttenuation(scene_.material(p.material)) &&
                glm::dot(direction, p.faceNormal) < 0.f;
   // In place (copy elision), not assigned: copying the returned Ray reloaded its just-stored
@@ -166,11 +164,9 @@ vec3 WhittedTracer::attenuated(const SecondaryRay& s, const vec3& radiance, floa
 
 vec3 WhittedTracer::traced(const SecondaryRay& s) const {
   float distance = 0.f;
-  const bool forwarded = s.forward.reflection.w >= 0.f || s.forward.transmission.w >= 0.f;
   const vec3 l = radiance(s.ray, s.depth, s.seed, s.hasCone ? &s.cone : nullptr,
-                          s.inside ? &distance : nullptr,
-                          s.textureSignal.w >= 0.f ? &s.textureSignal : nullptr,
-                          forwarded ? &s.forward : nullptr);
+                          s.inside ? &distance : nullptr, s.signalled ? &s.textureSignal : nullptr,
+                          s.signalled ? &s.forward : nullptr);
   return attenuated(s, l, distance);
 }
 
@@ -179,6 +175,9 @@ void WhittedTracer::passSignal(const SecondarySignals& signals, bool reflection,
   const vec4& signal = reflection ? signals.reflection : signals.transmission;
   const int hops = reflection ? signals.reflectionHops : signals.transmissionHops;
   if (signal.w < 0.f) return;
+  ray.signalled = true;
+  ray.textureSignal = vec4(-1.f);
+  ray.forward = {};
   if (hops <= 0) {
     ray.textureSignal = signal;
   } else if (reflection) {

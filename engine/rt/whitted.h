@@ -67,9 +67,11 @@ class WhittedTracer {
     bool inside = false;  // travels inside the point's volume: Beer-Lambert over its length
     int material = -1;    // the point's
     // Replaces the colour lookup at the ray's hit (applyTextureSignal); w < 0: none. And what
-    // the hit passes on to its own secondary rays (hops). Set by passSignal; secondaryRay sets
-    // both to none.
-    vec4 textureSignal{-1.f};
+    // the hit passes on to its own secondary rays (hops). Both are read only when `signalled`
+    // (set, with both, by passSignal; secondaryRay clears it): the recursion's rays without a
+    // footprint, nearly all of them, neither write nor read them.
+    bool signalled = false;
+    vec4 textureSignal;
     SecondarySignals forward;
   };
   // The part of `signals` (a point's) for its secondary ray `ray` of the given kind: the signal
@@ -129,8 +131,7 @@ class WhittedTracer {
   vec3 reflected(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
                  const RayCone* cone = nullptr, const SecondarySignals* signals = nullptr) const;
   vec3 transmitted(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
-                   const RayCone* cone = nullptr,
-                   const SecondarySignals* signals = nullptr) const;
+                   const RayCone* cone = nullptr, const SecondarySignals* signals = nullptr) const;
 
   std::uint64_t raysTraced() const { return rays_.total(); }
   // Called for every RAYTRACING call (not shadow rays), for inspecting or testing the ray tree.

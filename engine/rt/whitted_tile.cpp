@@ -9,9 +9,11 @@
 // by two triangles can get the other triangle, or t, u, v can differ in the last bits, and the
 // recursion below can amplify that (docs/ray-tracing.md: 3 pixels of 76,800 on techniques.json's
 // hybrid frame, FLIP mean 8.6e-5; whitted.json is byte-identical).
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <new>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -129,9 +131,9 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
     // The reflected and transmitted rays ray by ray below this level: traced as streams level by
     // level they were slower (the tiles of the deeper levels hold a few rays each: 127.4 against
     // 120.8 CPU ms for the Whitted reference, docs/ray-tracing.md).
-    out[i] = shadeGiven(*point(i), -rays[i].direction, depth, seeds[i],
-                        coned[i] ? &cones[i] : nullptr, directSum[i],
-                        secondarySignals.empty() ? nullptr : &secondarySignals[i]);
+    out[i] =
+        shadeGiven(*point(i), -rays[i].direction, depth, seeds[i], coned[i] ? &cones[i] : nullptr,
+                   directSum[i], secondarySignals.empty() ? nullptr : &secondarySignals[i]);
   }
 }
 
@@ -147,23 +149,30 @@ void WhittedTracer::tracedTile(std::span<const SecondaryRay> rays, std::span<vec
     rt_.intersectRays({traced, n}, {hits, n}, {found, n}, wantsHitNormal());
     std::uint32_t seeds[kMaxTile];
     const RayCone* cones[kMaxTile];
-    vec4 signals[kMaxTile];
-    SecondarySignals forwards[kMaxTile];
-    // Any footprint signal in the tile, at its hits or passed on (else none is passed).
-    bool signalled = false, forwarded = false;
+    // Footprint signals (passSignal) are copied for radianceTile only where a ray of the tile
+    // carries one: the footprint is off in every frame but an exact texture frame's.
+    bool signalled = false;
     vec3 radiance[kMaxTile];
     for (std::size_t i = 0; i < n; ++i) {
       DIPTYCH_CHECK(s[i].depth == s[0].depth, "WhittedTracer::tracedTile: rays of two depths");
       seeds[i] = s[i].seed;
       cones[i] = s[i].hasCone ? &s[i].cone : nullptr;
-      signals[i] = s[i].textureSignal;
-      forwards[i] = s[i].forward;
-      signalled = signalled || s[i].textureSignal.w >= 0.f;
-      forwarded = forwarded || s[i].forward.reflection.w >= 0.f ||
-                  s[i].forward.transmission.w >= 0.f;
+      signalled = signalled || s[i].signalled;
+    }
+    std::optional<std::array<vec4, kMaxTile>> signals;
+    std::optional<std::array<SecondarySignals, kMaxTile>> forwards;
+    if (signalled) {
+      signals.emplace();
+      forwards.emplace();
+      for (std::size_t i = 0; i < n; ++i) {
+        (*signals)[i] = s[i].signalled ? s[i].textureSignal : vec4(-1.f);
+        (*forwards)[i] = s[i].signalled ? s[i].forward : SecondarySignals{};
+      }
     }
     radianceTile({traced, n}, {found, n}, {seeds, n}, s[0].depth, {cones, n}, {radiance, n},
-                 {signals, signalled ? n : 0}, {forwards, forwarded ? n : 0});
+                 signals ? std::span<const vec4>(signals->data(), n) : std::span<const vec4>(),
+                 forwards ? std::span<const SecondarySignals>(forwards->data(), n)
+                          : std::span<const SecondarySignals>());
     for (std::size_t i = 0; i < n; ++i) {
       // radiance()'s hitDistance.
       const float distance = found[i] ? hits[i].t * glm::length(traced[i].direction)

@@ -79,10 +79,10 @@ std::vector<int> transparentBackToFront(const Scene& scene, const WorldGeometry&
 }
 
 ParamSchema BlendTransmissionPass::schema() {
-  return {ParamSpec::boolean(
-      "depth_prefill", true,
-      "write the forward passes' depth from the first-surface step so that pixels the mask zeroes "
-      "are rejected by the early depth test, not shaded and discarded; same image"),
+  return {ParamSpec::boolean("depth_prefill", true,
+                             "write the forward passes' depth from the first-surface step so "
+                             "that pixels the mask zeroes are rejected by the early depth test, "
+                             "not shaded and discarded; same image"),
           forwardTextureLodParam()};
 }
 

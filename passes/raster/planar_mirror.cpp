@@ -69,7 +69,9 @@ mat4 reflectionMatrix(const vec3& n, float d) {
   return r;
 }
 
-ParamSchema PlanarMirrorPass::schema() { return {forwardTextureLodParam()}; }
+ParamSchema PlanarMirrorPass::schema() {
+  return {forwardTextureLodParam()};
+}
 
 void PlanarMirrorPass::setup(PassBuilder& b) {
   io_ = slotIo(b, "reflection");

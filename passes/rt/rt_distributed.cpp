@@ -190,9 +190,9 @@ void RtDistributedPass::execute(PassContext& c) {
                 ? texturedSecondariesAt(tracer, world.scene(), world.geometry(), world.rtScene(),
                                         centre, h, rays)
                 : FootprintTarget{};
-        secondary = secondaryFootprintPixel(tracer, world.scene(), world.geometry(),
-                                            world.rtScene(), pinhole, textureSamples_, x, y,
-                                            target, rays);
+        secondary =
+            secondaryFootprintPixel(tracer, world.scene(), world.geometry(), world.rtScene(),
+                                    pinhole, textureSamples_, x, y, target, rays);
         textureRays += rays;
       }
       vec3 sum(0.f);

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "engine/core/check.h"
-#include "engine/graph/scene_needs.h"
 #include "engine/graph/render_world.h"
+#include "engine/graph/scene_needs.h"
 #include "engine/rt/ray_cone.h"
 #include "engine/rt/whitted.h"
 #include "engine/shading/shading.h"
@@ -70,8 +70,7 @@ void RtSecondaryPass::execute(PassContext& c) {
   DIPTYCH_CHECK(exact.width() == frame.width && exact.height() == frame.height,
                 "rt_secondary: the hits are not of the frame's size");
   // texture_samples (rt_secondary.h): the footprint of each candidate pixel's secondary hit.
-  const bool footprint =
-      textureSamples_ > 1 && sceneSatisfies(scene, SceneNeed::TexturedMaterial);
+  const bool footprint = textureSamples_ > 1 && sceneSatisfies(scene, SceneNeed::TexturedMaterial);
   std::atomic<std::int64_t> footprintRays = 0;
   tbb::parallel_for(0, frame.height, [&](int y) {
     // The row's footprint signals (stream path; empty without texture_samples).
@@ -89,8 +88,8 @@ void RtSecondaryPass::execute(PassContext& c) {
     // The pixel's footprint is traced where its own secondary ray from point p reaches a colour
     // texture (through hits of its kind: texturedSecondaries).
     const auto texturedAt = [&](const SurfacePoint& p, const Ray& eye) {
-      return texturedSecondaries(tracer, scene, world.geometry(), world.rtScene(), p,
-                                 eye.direction, kind, rowFootprintRays);
+      return texturedSecondaries(tracer, scene, world.geometry(), world.rtScene(), p, eye.direction,
+                                 kind, rowFootprintRays);
     };
     if (footprint && !steps) {  // with SDF objects: pixel by pixel below
       signals.resize(std::size_t(frame.width));
@@ -149,8 +148,8 @@ void RtSecondaryPass::execute(PassContext& c) {
             // The pixel's footprint inside its step count, as its rays below.
             const SecondarySignals s =
                 footprint ? secondaryFootprintPixel(tracer, scene, world.geometry(),
-                                                    world.rtScene(), pinhole, textureSamples_, x,
-                                                    y, texturedAt(p, eye), rowFootprintRays)
+                                                    world.rtScene(), pinhole, textureSamples_, x, y,
+                                                    texturedAt(p, eye), rowFootprintRays)
                           : SecondarySignals{};
             radiance = reflection ? tracer.reflected(p, -eye.direction, 1, seed, c, &s)
                                   : tracer.transmitted(p, -eye.direction, 1, seed, c, &s);

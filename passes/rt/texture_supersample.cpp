@@ -32,7 +32,9 @@ struct Mean {
   vec4 value() const { return count > 0 ? sum / float(count) : vec4(-1.f); }
 };
 
-SurfaceHit surfaceHit(const Hit& h) { return {h.instance, h.primitive, h.u, h.v, h.analytic}; }
+SurfaceHit surfaceHit(const Hit& h) {
+  return {h.instance, h.primitive, h.u, h.v, h.analytic};
+}
 
 const Material& materialOf(const Scene& scene, const WorldGeometry& geometry, const Hit& h) {
   return scene.material(geometry.meshes[std::size_t(h.instance)].material);
@@ -58,23 +60,36 @@ bool link(const WhittedTracer& tracer, const SurfacePoint& point, const vec3& di
   return true;
 }
 
+// A link traced, one ray (counted in `rays`): its closest hit in h; false on a miss.
+bool traceLink(const RtScene& rt, const Ray& ray, Hit& h, std::int64_t& rays) {
+  ++rays;
+  return rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, false);
+}
+
+// The next link of a chain: hit h of `ray` as a point that casts the kind again, and the ray it
+// casts at `depth`, which replaces `ray`. false where it casts none (or at the depth limit).
+bool advance(const WhittedTracer& tracer, const Scene& scene, const WorldGeometry& geometry,
+             const Hit& h, bool reflection, int depth, Ray& ray) {
+  const Material& m = materialOf(scene, geometry, h);
+  if (!casts(m, nullptr, reflection)) return false;
+  const SurfacePoint next = makeSurfacePoint(scene, geometry, surfaceHit(h), ray.direction);
+  if (!casts(m, &next, reflection)) return false;
+  const vec3 arriving = ray.direction;
+  return link(tracer, next, arriving, depth, reflection, ray);
+}
+
 // The ray of one kind that camera point p casts, followed through `hops` hits that cast that
-// kind again (each traced here, one at a time, counted in `rays`): the ray that leaves the last
-// of them. false where the chain breaks (a miss, a hit that casts no such ray, the depth limit).
+// kind again: the ray that leaves the last of them. false where the chain breaks (a miss, a hit
+// that casts no such ray, the depth limit).
 bool followChain(const WhittedTracer& tracer, const Scene& scene, const WorldGeometry& geometry,
                  const RtScene& rt, const SurfacePoint& p, const vec3& direction, bool reflection,
                  int hops, std::int64_t& rays, Ray& out) {
   if (!link(tracer, p, direction, 1, reflection, out)) return false;
   for (int hop = 1; hop <= hops; ++hop) {
     Hit h;
-    ++rays;
-    if (!rt.intersect(out, 0.f, std::numeric_limits<float>::infinity(), h, false)) return false;
-    const Material& m = materialOf(scene, geometry, h);
-    if (!casts(m, nullptr, reflection)) return false;
-    const SurfacePoint next = makeSurfacePoint(scene, geometry, surfaceHit(h), out.direction);
-    if (!casts(m, &next, reflection)) return false;
-    const vec3 arriving = out.direction;
-    if (!link(tracer, next, arriving, 1 + hop, reflection, out)) return false;
+    if (!traceLink(rt, out, h, rays) ||
+        !advance(tracer, scene, geometry, h, reflection, 1 + hop, out))
+      return false;
   }
   return true;
 }
@@ -154,27 +169,21 @@ FootprintTarget texturedSecondaries(const WhittedTracer& tracer, const Scene& sc
                                     std::uint8_t wanted, std::int64_t& rays) {
   FootprintTarget out;
   for (const bool reflection : {true, false}) {
-    const std::uint8_t kind = reflection ? FootprintTarget::kReflected : FootprintTarget::kTransmitted;
+    const std::uint8_t kind =
+        reflection ? FootprintTarget::kReflected : FootprintTarget::kTransmitted;
     if (!(wanted & kind) || !casts(scene.material(p.material), &p, reflection)) continue;
     // Along the chain until a hit reads a colour texture, or the chain breaks.
-    SurfacePoint point = p;
-    vec3 arriving = direction;
+    Ray ray;
+    if (!link(tracer, p, direction, 1, reflection, ray)) continue;
     for (int hop = 0;; ++hop) {
-      Ray ray;
       Hit h;
-      if (!link(tracer, point, arriving, 1 + hop, reflection, ray)) break;
-      ++rays;
-      if (!rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, false)) break;
-      const Material& m = materialOf(scene, geometry, h);
-      if (readsColorTexture(scene, m)) {
+      if (!traceLink(rt, ray, h, rays)) break;
+      if (readsColorTexture(scene, materialOf(scene, geometry, h))) {
         out.kinds |= kind;
         out.hops[reflection ? 0 : 1] = std::uint8_t(hop);
         break;
       }
-      if (!casts(m, nullptr, reflection)) break;
-      point = makeSurfacePoint(scene, geometry, surfaceHit(h), ray.direction);
-      if (!casts(m, &point, reflection)) break;
-      arriving = ray.direction;
+      if (!advance(tracer, scene, geometry, h, reflection, 2 + hop, ray)) break;
     }
   }
   return out;
@@ -282,8 +291,7 @@ std::int64_t supersampleTextureRow(const Scene& scene, const WorldGeometry& geom
       }
       if (const Hit* h = found[i]) {
         if (colours) {
-          sum += resolvedColorAt(scene, geometry,
-                                 {h->instance, h->primitive, h->u, h->v, h->analytic});
+          sum += resolvedColorAt(scene, geometry, surfaceHit(*h));
           ++count;
         }
         if (footprint) footprint->cast(rays[i], *h, std::size_t(pixelOf[i]));

@@ -514,10 +514,10 @@ void runCompare(const CompareOptions& o) {
   for (std::size_t i = 0; i < results.size(); ++i) {
     if (sameAs[i] < 0) continue;
     const nlohmann::json& same = results[std::size_t(sameAs[i])].result;
-    for (const char* key : {"total_ms", "total_ms_rounds", "pass_ms", "speedup_vs_reference",
-                            "speedup_rounds", "exact_variant", "speedup_vs_exact",
-                            "speedup_vs_exact_rounds", "saved_ms_vs_exact",
-                            "saved_ms_vs_exact_rounds", "first_frame_ms", "gl_sync", "rays"})
+    for (const char* key :
+         {"total_ms", "total_ms_rounds", "pass_ms", "speedup_vs_reference", "speedup_rounds",
+          "exact_variant", "speedup_vs_exact", "speedup_vs_exact_rounds", "saved_ms_vs_exact",
+          "saved_ms_vs_exact_rounds", "first_frame_ms", "gl_sync", "rays"})
       if (same.contains(key)) results[i].result[key] = same[key];
   }
 

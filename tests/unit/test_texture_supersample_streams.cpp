@@ -124,8 +124,8 @@ void expectFootprintIsTheRayByRayMean(int n) {
       int count = 0;
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-          const Ray eye = pinhole.ray(float(x) + (float(i) + 0.5f) / n,
-                                      float(y) + (float(j) + 0.5f) / n);
+          const Ray eye =
+              pinhole.ray(float(x) + (float(i) + 0.5f) / n, float(y) + (float(j) + 0.5f) / n);
           Hit hit, far;
           if (!CameraRays{rt, scene, geometry}.intersect(eye, hit, false)) continue;
           const SurfacePoint p = makeSurfacePoint(
