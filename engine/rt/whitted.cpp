@@ -107,17 +107,23 @@ vec3 WhittedTracer::shade(const SurfacePoint& p, const vec3& v, int depth, std::
 vec3 WhittedTracer::shadeGiven(const SurfacePoint& p, const vec3& v, int depth, std::uint32_t seed,
                                const RayCone* cone, const vec3& directSum,
                                const SecondarySignals* secondarySignals) const {
-  const shading::ShadingMaterial& m = p.resolved;
-  vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + directSum;
   // The material's model says whether the signals exist (hasReflection, hasTransmission: as for
   // the hybrid's rt_reflection and rt_transmission); secondaryTerms weights them.
+  const shading::ShadingMaterial& m = p.resolved;
   const vec3 trans = shading::hasTransmission(m)
                          ? transmitted(p, v, depth, seed, cone, secondarySignals)
                          : vec3(0.f);
   const vec3 refl = shading::hasReflection(m, false)
                         ? reflected(p, v, depth, seed, cone, secondarySignals)
                         : vec3(0.f);
-  return rad + shading::secondaryTerms(m, p.shadingNormal, v, refl, trans);
+  return composed(p, v, directSum, refl, trans);
+}
+
+vec3 WhittedTracer::composed(const SurfacePoint& p, const vec3& v, const vec3& directSum,
+                             const vec3& reflected, const vec3& transmitted) const {
+  const shading::ShadingMaterial& m = p.resolved;
+  const vec3 rad = shading::emittedAndAmbient(m, scene_.ambient) + directSum;
+  return rad + shading::secondaryTerms(m, p.shadingNormal, v, reflected, transmitted);
 }
 
 bool WhittedTracer::secondaryRay(const SurfacePoint& p, const vec3& v, int depth,

@@ -48,6 +48,11 @@ struct WhittedSettings {
   int areaSamples = 16;  // stratified shadow rays per area light
   // Texture LOD at hits reached with a ray cone (engine/rt/ray_cone.h); false: level 0.
   bool rayCones = false;
+  // Tiles (radianceTile's secondary rays, tracedTile) find their closest hits as Embree streams
+  // (RtScene::intersectRays); false: one rtcIntersect1 each, as radiance() does, so that a tile
+  // equals the ray-by-ray recursion bit for bit (the streams' packet kernels may round
+  // differently at a shared triangle edge: engine/rt/whitted_tile.cpp).
+  bool streams = true;
 };
 
 class WhittedTracer {
@@ -109,10 +114,13 @@ class WhittedTracer {
   // points traced as one coherent Embree stream (neighbouring pixels aimed at the same lights)
   // instead of one rtcOccluded1 each (engine/rt/whitted_tile.cpp): the same arithmetic, up to
   // the rounding of Embree's packet kernels (see there). Their reflected and transmitted rays
-  // are traced ray by ray, as radiance() does. depth: 1..maxDepth (else an Error), as for
+  // are traced together the same way (tracedTile), level by level, for depths below
+  // kBatchedDepths, and ray by ray, as radiance() does, below that (each batched level holds
+  // ~50 KB of stack: the depth parameter goes up to 64). depth: 1..maxDepth (else an Error), as for
   // radianceAt: radiance() traces nothing beyond maxDepth. textureSignal: empty, or one per ray
   // (radiance()'s textureSignal); secondarySignals: empty, or one per ray (radiance()'s).
   static constexpr std::size_t kMaxTile = 64;
+  static constexpr int kBatchedDepths = 8;
   void radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                     std::span<const std::uint32_t> seeds, int depth,
                     std::span<const RayCone* const> cones, std::span<vec3> out,
@@ -158,6 +166,10 @@ class WhittedTracer {
   vec3 shadeGiven(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,
                   const RayCone* cone, const vec3& directSum,
                   const SecondarySignals* secondarySignals = nullptr) const;
+  // EVALUAMILREC's sum at p given its direct light and its secondary radiances (L_in(p, r),
+  // L_in(p, t), 0 where not traced): shadeGiven's and radianceTile's, one expression.
+  vec3 composed(const SurfacePoint& point, const vec3& v, const vec3& directSum,
+                const vec3& reflected, const vec3& transmitted) const;
   const Scene& scene_;
   const WorldGeometry& world_;
   const RtScene& rt_;

@@ -126,15 +126,46 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
     }
     directSum[i] = sum;
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!shaded[i]) continue;
-    // The reflected and transmitted rays ray by ray below this level: traced as streams level by
-    // level they were slower (the tiles of the deeper levels hold a few rays each: 127.4 against
-    // 120.8 CPU ms for the Whitted reference, docs/ray-tracing.md).
-    out[i] =
-        shadeGiven(*point(i), -rays[i].direction, depth, seeds[i], coned[i] ? &cones[i] : nullptr,
-                   directSum[i], secondarySignals.empty() ? nullptr : &secondarySignals[i]);
+  if (depth >= kBatchedDepths) {  // ray by ray below (radiance()), in bounded stack
+    for (std::size_t i = 0; i < n; ++i)
+      if (shaded[i])
+        out[i] = shadeGiven(*point(i), -rays[i].direction, depth, seeds[i],
+                            coned[i] ? &cones[i] : nullptr, directSum[i],
+                            secondarySignals.empty() ? nullptr : &secondarySignals[i]);
+    return;
   }
+  // The tile's secondary rays (shadeGiven's: each point's transmitted, then reflected ray) traced
+  // together, level by level: tracedTile streams them and shades their hits with radianceTile,
+  // recursively, instead of one rtcIntersect1 and one recursive radiance() per ray. Raw storage,
+  // each ray constructed where it is used (as pointStorage): default-constructing the array ran
+  // the initialisers of 128 rays per tile (the mirror's tiles, whose rays end on the ground, were
+  // slower for it).
+  alignas(SecondaryRay) std::byte kidStorage[2 * kMaxTile * sizeof(SecondaryRay)];
+  SecondaryRay* kids = std::launder(reinterpret_cast<SecondaryRay*>(kidStorage));
+  std::size_t kidCount = 0;
+  int transmittedKid[kMaxTile], reflectedKid[kMaxTile];
+  const auto spawn = [&](std::size_t i, bool reflection) {
+    const SurfacePoint& p = *point(i);
+    const bool has = reflection ? shading::hasReflection(p.resolved, false)
+                                : shading::hasTransmission(p.resolved);
+    SecondaryRay& kid = *::new (static_cast<void*>(kids + kidCount)) SecondaryRay;
+    if (!has || !secondaryRay(p, -rays[i].direction, depth, seeds[i],
+                              coned[i] ? &cones[i] : nullptr, reflection, kid))
+      return -1;
+    if (!secondarySignals.empty()) passSignal(secondarySignals[i], reflection, kid);
+    return int(kidCount++);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    transmittedKid[i] = shaded[i] ? spawn(i, false) : -1;
+    reflectedKid[i] = shaded[i] ? spawn(i, true) : -1;
+  }
+  vec3 kidRadiance[2 * kMaxTile];
+  if (kidCount > 0) tracedTile({kids, kidCount}, {kidRadiance, kidCount});
+  const auto radianceOf = [&](int kid) { return kid >= 0 ? kidRadiance[kid] : vec3(0.f); };
+  for (std::size_t i = 0; i < n; ++i)
+    if (shaded[i])
+      out[i] = composed(*point(i), -rays[i].direction, directSum[i], radianceOf(reflectedKid[i]),
+                        radianceOf(transmittedKid[i]));
 }
 
 void WhittedTracer::tracedTile(std::span<const SecondaryRay> rays, std::span<vec3> out) const {
@@ -146,7 +177,15 @@ void WhittedTracer::tracedTile(std::span<const SecondaryRay> rays, std::span<vec
     Hit hits[kMaxTile];
     const Hit* found[kMaxTile];
     for (std::size_t i = 0; i < n; ++i) traced[i] = s[i].ray;
-    rt_.intersectRays({traced, n}, {hits, n}, {found, n}, wantsHitNormal());
+    if (settings_.streams) {
+      rt_.intersectRays({traced, n}, {hits, n}, {found, n}, wantsHitNormal());
+    } else {
+      for (std::size_t i = 0; i < n; ++i)
+        found[i] = rt_.intersect(traced[i], 0.f, std::numeric_limits<float>::infinity(), hits[i],
+                                 wantsHitNormal())
+                       ? &hits[i]
+                       : nullptr;
+    }
     std::uint32_t seeds[kMaxTile];
     const RayCone* cones[kMaxTile];
     // Footprint signals (passSignal) are copied for radianceTile only where a ray of the tile

@@ -81,15 +81,27 @@ void traceRow(const RtScene& rt, const Scene& scene, int y, int x0, int n, Ray* 
 }
 
 // Every pixel of a kW x kH frame both ways; hitCount: the number of pixels that hit something.
+// With settings.streams off the tile's recursion finds its hits with rtcIntersect1, as
+// radiance() does: bit for bit, the same ray count. With streams (the default) its secondary
+// rays' hits come from Embree's packet kernels, which may round differently at a shared edge or
+// break a tie between coplanar faces the other way (techniques.json's glass box stands on the
+// ground: a ray inside it meets its bottom face and the ground at the same t, and a packet gave
+// the ground where rtcIntersect1 gave the box; 14 of 6,912 pixels, by up to 0.04): at most 1% of
+// the pixels may differ (streamDiffer returns how many did).
 void expectTileEqualsRayByRay(const Scene& scene, WhittedSettings settings, bool cones,
-                              int& hitCount) {
+                              int& hitCount, int* streamDiffer = nullptr) {
   RenderWorld world(scene);
   const RtScene& rt = world.rtScene();
-  const WhittedTracer tiled(scene, world.geometry(), rt, settings);
+  WhittedSettings exact = settings, streamed = settings;
+  exact.streams = false;
+  streamed.streams = true;
+  const WhittedTracer tiled(scene, world.geometry(), rt, exact);
+  const WhittedTracer tiledStreams(scene, world.geometry(), rt, streamed);
   const WhittedTracer single(scene, world.geometry(), rt, settings);
   const RayCone primary{0.f, pixelSpreadAngle(scene.camera, kH)};
   constexpr int kTile = int(WhittedTracer::kMaxTile);
   hitCount = 0;
+  int differ = 0;
   for (int y = 0; y < kH; ++y) {
     for (int x0 = 0; x0 < kW; x0 += kTile) {
       const int n = std::min(kTile, kW - x0);
@@ -98,7 +110,7 @@ void expectTileEqualsRayByRay(const Scene& scene, WhittedSettings settings, bool
       const Hit* found[kTile];
       std::uint32_t seeds[kTile];
       const RayCone* coneOf[kTile];
-      vec3 out[kTile];
+      vec3 out[kTile], outStreams[kTile];
       traceRow(rt, scene, y, x0, n, rays, hits, found);
       for (int i = 0; i < n; ++i) {
         seeds[i] = std::uint32_t(y * kW + x0 + i);
@@ -107,13 +119,18 @@ void expectTileEqualsRayByRay(const Scene& scene, WhittedSettings settings, bool
       }
       const std::size_t m = std::size_t(n);
       tiled.radianceTile({rays, m}, {found, m}, {seeds, m}, 1, {coneOf, cones ? m : 0}, {out, m});
+      tiledStreams.radianceTile({rays, m}, {found, m}, {seeds, m}, 1, {coneOf, cones ? m : 0},
+                                {outStreams, m});
       for (int i = 0; i < n; ++i) {
         const vec3 expected = single.radiance(rays[i], 1, seeds[i], cones ? &primary : nullptr);
         ASSERT_EQ(out[i], expected) << "pixel " << x0 + i << ", " << y;
+        differ += outStreams[i] == expected ? 0 : 1;
       }
     }
   }
   EXPECT_EQ(tiled.raysTraced(), single.raysTraced());
+  EXPECT_LE(differ, kW * kH / 100) << "pixels whose streamed tile differs";
+  if (streamDiffer) *streamDiffer = differ;
 }
 
 // intersectRays' hits (streams of 64) against intersect's, ray by ray, over a kW x kH frame.
@@ -153,9 +170,12 @@ void expectStreamHitsWithinBudget(const Scene& scene, std::vector<int>& hitsPerI
 
 TEST(WhittedTile, RadianceTileEqualsRayByRayOnWhitted) {
   // Analytic mirror and glass spheres over a checker, one point light.
-  int hits = 0;
-  expectTileEqualsRayByRay(sample("whitted.json"), {5, 16, false}, false, hits);
+  int hits = 0, differ = -1;
+  expectTileEqualsRayByRay(sample("whitted.json"), {5, 16, false}, false, hits, &differ);
   EXPECT_GT(hits, kW * kH / 2);
+  // Its spheres are user geometry (our callback's arithmetic, one ray or a packet) and its
+  // ground has no edge in view: the streamed tiles are bit for bit too.
+  EXPECT_EQ(differ, 0);
 }
 
 TEST(WhittedTile, RadianceTileEqualsRayByRayWithAreaLightSamples) {
@@ -222,7 +242,10 @@ TEST(WhittedTile, RadianceTileRejectsDepthsOutsideTheRecursion) {
 TEST(WhittedTile, TracedTileEqualsReflectedAndTransmitted) {
   const Scene scene = sample("techniques.json");
   RenderWorld world(scene);
-  const WhittedTracer tracer(scene, world.geometry(), world.rtScene(), {5, 16, true});
+  // Without streams (rtcIntersect1 at every level) bit for bit; with them within the budget of
+  // expectTileEqualsRayByRay (the glass box's coplanar tie with the ground: 9 of 741 rays).
+  const WhittedTracer tracer(scene, world.geometry(), world.rtScene(), {5, 16, true, false});
+  const WhittedTracer streamed(scene, world.geometry(), world.rtScene(), {5, 16, true, true});
   std::vector<WhittedTracer::SecondaryRay> rays;
   std::vector<vec3> expected;
   const RayCone cone{0.01f, pixelSpreadAngle(scene.camera, kH)};
@@ -252,6 +275,10 @@ TEST(WhittedTile, TracedTileEqualsReflectedAndTransmitted) {
   std::vector<vec3> out(rays.size());
   tracer.tracedTile(rays, out);
   for (std::size_t i = 0; i < rays.size(); ++i) ASSERT_EQ(out[i], expected[i]) << "ray " << i;
+  streamed.tracedTile(rays, out);
+  int differ = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) differ += out[i] == expected[i] ? 0 : 1;
+  EXPECT_LE(differ, int(rays.size()) / 40) << "streamed rays that differ, of " << rays.size();
   // At the last depth there is no secondary ray (its radiance is 0).
   WhittedTracer::SecondaryRay s;
   const Ray eye = primaryRay(scene.camera, kW, kH, kW / 2.f, kH / 2.f);
