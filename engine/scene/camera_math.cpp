@@ -56,19 +56,27 @@ vec2 concentricDisk(vec2 s) {
   return r * vec2(std::cos(phi), std::sin(phi));
 }
 
-Ray thinLensRay(const Camera& c, int width, int height, float x, float y, vec2 lens) {
-  const Ray pinhole = primaryRay(c, width, height, x, y);
-  if (!(c.aperture > 0.f)) return pinhole;
+ThinLensFrame::ThinLensFrame(const Camera& c, int width, int height)
+    : pinhole_(c, width, height),
+      position_(c.position),
+      aperture_(c.aperture),
+      focusDistance_(c.focusDistance) {}
+
+Ray ThinLensFrame::ray(float x, float y, vec2 lens) const {
+  const Ray pinhole = pinhole_.ray(x, y);
+  if (!(aperture_ > 0.f)) return pinhole;
   // The focal plane is perpendicular to the view axis (a plane, not a sphere, as for a real
   // lens), so the in-focus point lies at focusDistance / cos(angle to the axis) along the ray.
-  const vec3 forward = glm::normalize(c.target - c.position);
-  const vec3 right = glm::normalize(glm::cross(forward, c.up));
-  const vec3 up = glm::cross(right, forward);
   const vec3 focus =
-      pinhole.origin + (c.focusDistance / glm::dot(pinhole.direction, forward)) * pinhole.direction;
-  const vec2 d = c.aperture * concentricDisk(lens);
-  const vec3 origin = c.position + d.x * right + d.y * up;
+      pinhole.origin +
+      (focusDistance_ / glm::dot(pinhole.direction, pinhole_.forward())) * pinhole.direction;
+  const vec2 d = aperture_ * concentricDisk(lens);
+  const vec3 origin = position_ + d.x * pinhole_.right() + d.y * pinhole_.up();
   return {origin, glm::normalize(focus - origin)};
+}
+
+Ray thinLensRay(const Camera& c, int width, int height, float x, float y, vec2 lens) {
+  return ThinLensFrame(c, width, height).ray(x, y, lens);
 }
 
 Camera frameBounds(const Aabb& b) {

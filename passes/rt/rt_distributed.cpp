@@ -84,6 +84,7 @@ void RtDistributedPass::execute(PassContext& c) {
   const RayCone primaryCone{0.f, pixelSpreadAngle(camera, frame.height) / std::sqrt(float(spp_))};
   const RayCone* cone = rayCones_ ? &primaryCone : nullptr;
   const PinholeFrame pinhole(camera, frame.width, frame.height);
+  const ThinLensFrame lensFrame(camera, frame.width, frame.height);
   const bool lens = camera.aperture > 0.f;
   // rt_whitted's texture_samples (rt_whitted.h): each pixel's texture signal, traced first.
   const bool textureSignal =
@@ -98,8 +99,8 @@ void RtDistributedPass::execute(PassContext& c) {
     const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pixelSeed);
     const float px = float(x) + offset.x, py = float(y) + offset.y;
     seed = spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s));
-    return lens ? thinLensRay(camera, frame.width, frame.height, px, py,
-                              stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed))
+    return lens ? lensFrame.ray(px, py,
+                                stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed))
                 : pinhole.ray(px, py);  // == thinLensRay with no aperture
   };
   // Without SDF objects a row's sample rays (neighbouring pixels, or one pixel's strata: all

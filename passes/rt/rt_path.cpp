@@ -54,6 +54,7 @@ void RtPathPass::execute(PassContext& c) {
   const std::size_t pixels = std::size_t(frame.width) * std::size_t(frame.height);
   std::vector<glm::dvec3> mean(pixels, glm::dvec3(0.0)), m2(pixels, glm::dvec3(0.0));
   std::atomic<std::uint64_t> rays{0}, invalid{0};
+  const ThinLensFrame lensFrame(frame.camera, frame.width, frame.height);
   int passes = 0;
   while (passes < spp_) {
     const double n = passes + 1;
@@ -64,8 +65,7 @@ void RtPathPass::execute(PassContext& c) {
         PathRng rng{std::uint32_t(i), std::uint32_t(passes), std::uint32_t(seed_)};
         const vec2 jitter = rng.next2();
         const vec2 lens = rng.next2();
-        const Ray ray = thinLensRay(frame.camera, frame.width, frame.height, float(x) + jitter.x,
-                                    float(y) + jitter.y, lens);
+        const Ray ray = lensFrame.ray(float(x) + jitter.x, float(y) + jitter.y, lens);
         const PathSample s = tracer.radiance(ray, rng, spread);
         rowRays += s.rays;
         rowInvalid += s.valid ? 0 : 1;
