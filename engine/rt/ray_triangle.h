@@ -15,16 +15,28 @@
 
 namespace diptych {
 
+// The parts that depend on the triangle and the ray's origin only: a row of pixel rays (one
+// origin) over one triangle shares them (passes/common/exact_hits.cpp).
+struct RayTriangleSetup {
+  vec3 e1, e2, s, q;
+};
+inline RayTriangleSetup rayTriangleSetup(const vec3& o, const vec3& p0, const vec3& p1,
+                                         const vec3& p2) {
+  const vec3 e1 = p1 - p0;
+  const vec3 s = o - p0;
+  return {e1, p2 - p0, s, glm::cross(s, e1)};
+}
+// The rest, per direction d: the same operations as the GLSL's.
+inline bool rayTriangleBarycentrics(const RayTriangleSetup& t, const vec3& d, vec2& uv) {
+  const vec3 pv = glm::cross(d, t.e2);
+  const float det = glm::dot(t.e1, pv);
+  uv = vec2(glm::dot(t.s, pv), glm::dot(d, t.q)) / det;
+  return det != 0.f && std::isfinite(uv.x) && std::isfinite(uv.y);
+}
+
 inline bool rayTriangleBarycentrics(const vec3& o, const vec3& d, const vec3& p0, const vec3& p1,
                                     const vec3& p2, vec2& uv) {
-  const vec3 e1 = p1 - p0;
-  const vec3 e2 = p2 - p0;
-  const vec3 pv = glm::cross(d, e2);
-  const float det = glm::dot(e1, pv);
-  const vec3 s = o - p0;
-  const vec3 q = glm::cross(s, e1);
-  uv = vec2(glm::dot(s, pv), glm::dot(d, q)) / det;
-  return det != 0.f && std::isfinite(uv.x) && std::isfinite(uv.y);
+  return rayTriangleBarycentrics(rayTriangleSetup(o, p0, p1, p2), d, uv);
 }
 
 }  // namespace diptych

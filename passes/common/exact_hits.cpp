@@ -22,8 +22,9 @@ bool sameCamera(const Camera& a, const Camera& b) {
 // ExactHits.EqualsLiftingEachTexel), in fewer steps: the words read in place from the row, and
 // on an analytic instance the lift tried first, since its hit replaces the triangle point's
 // (u, v) altogether: alongRay then runs only where the lift misses (a silhouette texel).
+// cache: the row's last triangle (alongRay; all of a row's rays leave the camera's position).
 SurfaceHit liftedTexel(const std::uint32_t* t, const WorldGeometry& world,
-                       const PinholeFrame& pinhole, int x, int y) {
+                       const PinholeFrame& pinhole, int x, int y, AlongRayCache& cache) {
   if (t[0] == 0u) return SurfaceHit{};  // instance -1: background
   SurfaceHit hit{int(t[0] - 1u), t[1], std::bit_cast<float>(t[2]), std::bit_cast<float>(t[3])};
   const WorldMesh& mesh = texelMesh(world, hit);  // throws for a forged instance
@@ -35,7 +36,7 @@ SurfaceHit liftedTexel(const std::uint32_t* t, const WorldGeometry& world,
     const SurfaceHit lifted = liftToAnalytic(world, hit, ray);
     if (lifted.analytic) return lifted;
   }
-  return computed ? hit : alongRay(mesh, hit, ray);
+  return computed ? hit : alongRay(mesh, hit, ray, &cache);
 }
 
 }  // namespace
@@ -62,8 +63,9 @@ void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camer
     SurfaceHit* row = hits_.data() + std::size_t(y) * std::size_t(width_);
     if (rgba) {
       const std::uint32_t* texel = hits.row(y);
+      AlongRayCache cache;
       for (int x = 0; x < width_; ++x, texel += 4)
-        row[x] = liftedTexel(texel, geometry, pinhole, x, y);
+        row[x] = liftedTexel(texel, geometry, pinhole, x, y, cache);
       return;
     }
     for (int x = 0; x < width_; ++x) {

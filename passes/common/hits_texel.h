@@ -26,15 +26,33 @@ inline std::optional<SurfaceHit> hitsTexel(const CpuImage& hits, int x, int y) {
 // The hit's triangle intersected with `ray`: (u, v) by rayTriangleBarycentrics
 // (engine/rt/ray_triangle.h, the C++ twin of the G-buffer's GLSL), the centroid for a ray in the
 // triangle's plane (as the GLSL does).
-inline SurfaceHit alongRay(const WorldMesh& mesh, SurfaceHit hit, const Ray& ray) {
+// `cache`, when given, keeps the last triangle's RayTriangleSetup for the next call with the
+// same triangle and ray origin (a row of pixel rays crossing one triangle): the result is the
+// same bit for bit.
+struct AlongRayCache {
+  const WorldMesh* mesh = nullptr;
+  std::uint32_t primitive = 0;
+  vec3 origin{0.f};
+  RayTriangleSetup setup;
+};
+inline SurfaceHit alongRay(const WorldMesh& mesh, SurfaceHit hit, const Ray& ray,
+                           AlongRayCache* cache = nullptr) {
   if (hit.primitive >= mesh.indices.size() / 3)
     throw Error("G-buffer hits texel: primitive " + std::to_string(hit.primitive) +
                 " out of range in instance " + std::to_string(hit.instance));
-  const std::uint32_t* i = &mesh.indices[3 * std::size_t(hit.primitive)];
+  RayTriangleSetup local;
+  const RayTriangleSetup* setup = &local;
+  if (cache && cache->mesh == &mesh && cache->primitive == hit.primitive &&
+      cache->origin == ray.origin) {
+    setup = &cache->setup;
+  } else {
+    const std::uint32_t* i = &mesh.indices[3 * std::size_t(hit.primitive)];
+    local = rayTriangleSetup(ray.origin, mesh.positions[i[0]], mesh.positions[i[1]],
+                             mesh.positions[i[2]]);
+    if (cache) *cache = {&mesh, hit.primitive, ray.origin, local};
+  }
   vec2 uv;
-  if (!rayTriangleBarycentrics(ray.origin, ray.direction, mesh.positions[i[0]],
-                               mesh.positions[i[1]], mesh.positions[i[2]], uv))
-    uv = vec2(1.f / 3.f);
+  if (!rayTriangleBarycentrics(*setup, ray.direction, uv)) uv = vec2(1.f / 3.f);
   hit.u = uv.x;
   hit.v = uv.y;
   return hit;
