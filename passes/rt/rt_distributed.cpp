@@ -94,14 +94,13 @@ void RtDistributedPass::execute(PassContext& c) {
   const auto sampleRay = [&](int x, int y, int s, std::span<const int> lensStratum,
                              std::uint32_t& seed) {
     const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
-    const std::uint32_t pixelSeed = pcgHash(pixel);
-    const std::uint32_t lensSeed = pcgHash(pixel ^ 0x4c454e53u);  // "LENS"
-    const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pixelSeed);
+    // The hashes only where they are read (pcgHash is out of line: an unused one still ran).
+    const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pcgHash(pixel));
     const float px = float(x) + offset.x, py = float(y) + offset.y;
     seed = spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s));
-    return lens ? lensFrame.ray(px, py,
-                                stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed))
-                : pinhole.ray(px, py);  // == thinLensRay with no aperture
+    if (!lens) return pinhole.ray(px, py);                        // == thinLensRay with no aperture
+    const std::uint32_t lensSeed = pcgHash(pixel ^ 0x4c454e53u);  // "LENS"
+    return lensFrame.ray(px, py, stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed));
   };
   // Without SDF objects a row's sample rays (neighbouring pixels, or one pixel's strata: all
   // coherent) are traced in tiles of 64 as Embree streams and shaded by radianceTile, whose

@@ -323,7 +323,10 @@ SHADING_FN vec3 directTerm(ShadingMaterial m, vec3 n, vec3 v, vec3 l) {
   float nl = saturate01(dot(n, l));
   vec3 r = reflectAbout(l, n);
   float rv = saturate01(dot(r, v));
-  float glossy = nl > 0.0f ? safePow(rv, m.exponent) : 0.0f;
+  // With k_s = 0 (the lecture's diffuse materials) the lobe's power is not formed: 0 times the
+  // finite lobe (safePow saturates at FLT_MAX) is the same 0, and the repeated squaring was a
+  // loop per light and hit for nothing (issue 14).
+  float glossy = nl > 0.0f && m.ks != 0.0f ? safePow(rv, m.exponent) : 0.0f;
   return m.ka * m.color + m.kd * m.color * nl + m.ks * m.specularColor * glossy;
 }
 
