@@ -4,11 +4,13 @@
 // ray: the tile's closest hits, then the direct light's shadow rays of all its points. The
 // arithmetic after Embree is radianceAt's: the same surface point, light samples and responses,
 // the same shadow rays (makeShadowSample is lightVisibility's ray), the same visible fraction,
-// the terms summed in the same order (shadeGiven), and radiance()'s recursion below. Embree's
-// packet kernels may round differently from its single-ray ones: a ray through an edge shared
-// by two triangles can get the other triangle, or t, u, v can differ in the last bits, and the
-// recursion below can amplify that (docs/ray-tracing.md: 3 pixels of 76,800 on techniques.json's
-// hybrid frame, FLIP mean 8.6e-5; whitted.json is byte-identical).
+// the terms summed in the same order (composed), and below them the same tree, traced level by
+// level: each tile's secondary rays as the next tile (tracedTile), ray by ray past
+// kBatchedDepths. Embree's packet kernels may round differently from its single-ray ones: a ray
+// through an edge shared by two triangles can get the other triangle, t, u, v can differ in the
+// last bits, a tie between coplanar faces can go the other way, and the recursion below can
+// amplify that (docs/ray-tracing.md; whitted.json is byte-identical).
+// WhittedSettings::streams off: rtcIntersect1 for every tile, bit for bit the ray-by-ray tree.
 #include <array>
 #include <cstddef>
 #include <limits>

@@ -176,6 +176,10 @@ TEST(WhittedTile, RadianceTileEqualsRayByRayOnWhitted) {
   // Its spheres are user geometry (our callback's arithmetic, one ray or a packet) and its
   // ground has no edge in view: the streamed tiles are bit for bit too.
   EXPECT_EQ(differ, 0);
+  // Deeper than kBatchedDepths: the levels past it go ray by ray inside the tile.
+  ASSERT_LT(WhittedTracer::kBatchedDepths, 12);
+  expectTileEqualsRayByRay(sample("whitted.json"), {12, 16, false}, false, hits, &differ);
+  EXPECT_EQ(differ, 0);
 }
 
 TEST(WhittedTile, RadianceTileEqualsRayByRayWithAreaLightSamples) {
