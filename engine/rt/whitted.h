@@ -114,8 +114,8 @@ class WhittedTracer {
   // points traced as one coherent Embree stream (neighbouring pixels aimed at the same lights)
   // instead of one rtcOccluded1 each (engine/rt/whitted_tile.cpp): the same arithmetic, up to
   // the rounding of Embree's packet kernels (see there). Their reflected and transmitted rays
-  // are traced together the same way (tracedTile), level by level, for depths below
-  // kBatchedDepths, and ray by ray, as radiance() does, below that (each batched level holds
+  // are traced together the same way (tracedTile), level by level, while depth <
+  // kBatchedDepths, and ray by ray, as radiance() does, from there on (each batched level holds
   // ~50 KB of stack: the depth parameter goes up to 64). depth: 1..maxDepth (else an Error), as for
   // radianceAt: radiance() traces nothing beyond maxDepth. textureSignal: empty, or one per ray
   // (radiance()'s textureSignal); secondarySignals: empty, or one per ray (radiance()'s).
