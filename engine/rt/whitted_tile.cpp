@@ -148,11 +148,12 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
   int transmittedKid[kMaxTile], reflectedKid[kMaxTile];
   const auto spawn = [&](std::size_t i, bool reflection) {
     const SurfacePoint& p = *point(i);
-    const bool has = reflection ? shading::hasReflection(p.resolved, false)
-                                : shading::hasTransmission(p.resolved);
+    if (reflection ? !shading::hasReflection(p.resolved, false)
+                   : !shading::hasTransmission(p.resolved))
+      return -1;
     SecondaryRay& kid = *::new (static_cast<void*>(kids + kidCount)) SecondaryRay;
-    if (!has || !secondaryRay(p, -rays[i].direction, depth, seeds[i],
-                              coned[i] ? &cones[i] : nullptr, reflection, kid))
+    if (!secondaryRay(p, -rays[i].direction, depth, seeds[i], coned[i] ? &cones[i] : nullptr,
+                      reflection, kid))
       return -1;
     if (!secondarySignals.empty()) passSignal(secondarySignals[i], reflection, kid);
     return int(kidCount++);

@@ -54,6 +54,7 @@ class ThinLensFrame {
  public:
   ThinLensFrame(const Camera& camera, int width, int height);
   Ray ray(float x, float y, vec2 lens) const;
+  const PinholeFrame& pinhole() const { return pinhole_; }
 
  private:
   PinholeFrame pinhole_;

@@ -40,19 +40,16 @@ inline SurfaceHit alongRay(const WorldMesh& mesh, SurfaceHit hit, const Ray& ray
   if (hit.primitive >= mesh.indices.size() / 3)
     throw Error("G-buffer hits texel: primitive " + std::to_string(hit.primitive) +
                 " out of range in instance " + std::to_string(hit.instance));
-  RayTriangleSetup local;
-  const RayTriangleSetup* setup = &local;
-  if (cache && cache->mesh == &mesh && cache->primitive == hit.primitive &&
-      cache->origin == ray.origin) {
-    setup = &cache->setup;
-  } else {
+  AlongRayCache local;
+  AlongRayCache& c = cache ? *cache : local;
+  if (c.mesh != &mesh || c.primitive != hit.primitive || c.origin != ray.origin) {
     const std::uint32_t* i = &mesh.indices[3 * std::size_t(hit.primitive)];
-    local = rayTriangleSetup(ray.origin, mesh.positions[i[0]], mesh.positions[i[1]],
-                             mesh.positions[i[2]]);
-    if (cache) *cache = {&mesh, hit.primitive, ray.origin, local};
+    c = {&mesh, hit.primitive, ray.origin,
+         rayTriangleSetup(ray.origin, mesh.positions[i[0]], mesh.positions[i[1]],
+                          mesh.positions[i[2]])};
   }
   vec2 uv;
-  if (!rayTriangleBarycentrics(*setup, ray.direction, uv)) uv = vec2(1.f / 3.f);
+  if (!rayTriangleBarycentrics(c.setup, ray.direction, uv)) uv = vec2(1.f / 3.f);
   hit.u = uv.x;
   hit.v = uv.y;
   return hit;

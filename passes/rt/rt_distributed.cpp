@@ -83,8 +83,8 @@ void RtDistributedPass::execute(PassContext& c) {
   // With k x k samples per pixel each sample stands for one stratum: 1/k of the pixel's spread.
   const RayCone primaryCone{0.f, pixelSpreadAngle(camera, frame.height) / std::sqrt(float(spp_))};
   const RayCone* cone = rayCones_ ? &primaryCone : nullptr;
-  const PinholeFrame pinhole(camera, frame.width, frame.height);
   const ThinLensFrame lensFrame(camera, frame.width, frame.height);
+  const PinholeFrame& pinhole = lensFrame.pinhole();
   const bool lens = camera.aperture > 0.f;
   // rt_whitted's texture_samples (rt_whitted.h): each pixel's texture signal, traced first.
   const bool textureSignal =
