@@ -49,55 +49,82 @@ void RtPathPass::execute(PassContext& c) {
                           {maxDepth_, rrDepth_, russianRoulette_, rayCones_});
   // Each of the spp paths stands for about 1/spp of the pixel's area (as rt_distributed's strata).
   const float spread = pixelSpreadAngle(frame.camera, frame.height) / std::sqrt(float(spp_));
-  // Welford accumulators, alive only for this execute: the mean and the sum of squared
-  // deviations M2 per pixel and channel.
-  const std::size_t pixels = std::size_t(frame.width) * std::size_t(frame.height);
-  std::vector<glm::dvec3> mean(pixels, glm::dvec3(0.0)), m2(pixels, glm::dvec3(0.0));
   std::atomic<std::uint64_t> rays{0}, invalid{0};
   const ThinLensFrame lensFrame(frame.camera, frame.width, frame.height);
+  // One path of pixel (x, y) in pass `pass`, added to its Welford accumulators (the mean and
+  // the sum of squared deviations M2 per channel, in double).
+  auto addSample = [&](int x, int y, int pass, glm::dvec3& mean, glm::dvec3& m2,
+                       std::uint64_t& rowRays, std::uint64_t& rowInvalid) {
+    const std::size_t i = std::size_t(y) * std::size_t(frame.width) + std::size_t(x);
+    PathRng rng{std::uint32_t(i), std::uint32_t(pass), std::uint32_t(seed_)};
+    const vec2 jitter = rng.next2();
+    const vec2 lens = rng.next2();
+    const Ray ray = lensFrame.ray(float(x) + jitter.x, float(y) + jitter.y, lens);
+    const PathSample s = tracer.radiance(ray, rng, spread);
+    rowRays += s.rays;
+    rowInvalid += s.valid ? 0 : 1;
+    const glm::dvec3 value(s.radiance);
+    const glm::dvec3 delta = value - mean;
+    mean += delta / double(pass + 1);
+    m2 += delta * (value - mean);
+  };
+  CpuImage& color = c.cpuWrite(color_);
+  CpuImage& variance = c.cpuWrite(variance_);
+  auto store = [&](int x, int y, double n, const glm::dvec3& mean, const glm::dvec3& m2) {
+    const glm::dvec3 varianceOfMean = n > 1 ? m2 / ((n - 1) * n) : glm::dvec3(0.0);
+    for (int ch = 0; ch < 3; ++ch) {
+      color.setF(x, y, ch, float(mean[ch]));
+      variance.setF(x, y, ch, float(varianceOfMean[ch]));
+    }
+    color.setF(x, y, 3, 1.f);
+    variance.setF(x, y, 3, float(n));
+  };
   int passes = 0;
-  while (passes < spp_) {
-    const double n = passes + 1;
+  if (!(timeBudgetMs_ > 0.0)) {
+    // No budget: a pixel's spp paths one after another, the accumulators in registers. The same
+    // samples in the same order as pass by pass (each depends only on pixel, pass and seed), so
+    // the same bits; but successive paths of a pixel share its first hit's BVH nodes and
+    // texels in cache, and no image of accumulators makes spp round trips through memory.
+    passes = spp_;
     tbb::parallel_for(0, frame.height, [&](int y) {
       std::uint64_t rowRays = 0, rowInvalid = 0;
       for (int x = 0; x < frame.width; ++x) {
-        const std::size_t i = std::size_t(y) * std::size_t(frame.width) + std::size_t(x);
-        PathRng rng{std::uint32_t(i), std::uint32_t(passes), std::uint32_t(seed_)};
-        const vec2 jitter = rng.next2();
-        const vec2 lens = rng.next2();
-        const Ray ray = lensFrame.ray(float(x) + jitter.x, float(y) + jitter.y, lens);
-        const PathSample s = tracer.radiance(ray, rng, spread);
-        rowRays += s.rays;
-        rowInvalid += s.valid ? 0 : 1;
-        const glm::dvec3 value(s.radiance);
-        const glm::dvec3 delta = value - mean[i];
-        mean[i] += delta / n;
-        m2[i] += delta * (value - mean[i]);
+        glm::dvec3 mean(0.0), m2(0.0);
+        for (int pass = 0; pass < spp_; ++pass)
+          addSample(x, y, pass, mean, m2, rowRays, rowInvalid);
+        store(x, y, double(spp_), mean, m2);
       }
       rays.fetch_add(rowRays, std::memory_order_relaxed);
       invalid.fetch_add(rowInvalid, std::memory_order_relaxed);
     });
-    ++passes;
-    const double elapsedMs =
-        std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    if (timeBudgetMs_ > 0.0 && elapsedMs >= timeBudgetMs_) break;
-  }
-
-  CpuImage& color = c.cpuWrite(color_);
-  CpuImage& variance = c.cpuWrite(variance_);
-  const double n = passes;
-  tbb::parallel_for(0, frame.height, [&](int y) {
-    for (int x = 0; x < frame.width; ++x) {
-      const std::size_t i = std::size_t(y) * std::size_t(frame.width) + std::size_t(x);
-      const glm::dvec3 varianceOfMean = n > 1 ? m2[i] / ((n - 1) * n) : glm::dvec3(0.0);
-      for (int ch = 0; ch < 3; ++ch) {
-        color.setF(x, y, ch, float(mean[i][ch]));
-        variance.setF(x, y, ch, float(varianceOfMean[ch]));
-      }
-      color.setF(x, y, 3, 1.f);
-      variance.setF(x, y, 3, float(n));
+  } else {
+    // Progressive: whole passes over the image until the budget is spent at the end of one.
+    const std::size_t pixels = std::size_t(frame.width) * std::size_t(frame.height);
+    std::vector<glm::dvec3> mean(pixels, glm::dvec3(0.0)), m2(pixels, glm::dvec3(0.0));
+    while (passes < spp_) {
+      tbb::parallel_for(0, frame.height, [&](int y) {
+        std::uint64_t rowRays = 0, rowInvalid = 0;
+        for (int x = 0; x < frame.width; ++x) {
+          const std::size_t i = std::size_t(y) * std::size_t(frame.width) + std::size_t(x);
+          addSample(x, y, passes, mean[i], m2[i], rowRays, rowInvalid);
+        }
+        rays.fetch_add(rowRays, std::memory_order_relaxed);
+        invalid.fetch_add(rowInvalid, std::memory_order_relaxed);
+      });
+      ++passes;
+      const double elapsedMs =
+          std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+      if (elapsedMs >= timeBudgetMs_) break;
     }
-  });
+    tbb::parallel_for(0, frame.height, [&](int y) {
+      for (int x = 0; x < frame.width; ++x) {
+        const std::size_t i = std::size_t(y) * std::size_t(frame.width) + std::size_t(x);
+        store(x, y, double(passes), mean[i], m2[i]);
+      }
+    });
+  }
+  const double n = passes;
+  const std::size_t pixels = std::size_t(frame.width) * std::size_t(frame.height);
   c.count("rays", double(rays.load()));
   c.count("samples", n * double(pixels));
   c.count("passes", n);

@@ -346,6 +346,25 @@ TEST(RtPath, TimeBudgetStopsEarlyAfterWholePasses) {
   EXPECT_EQ(full.counters.at("p").at("samples"), 3.0 * 256);
 }
 
+// Without a time budget a pixel's paths run one after another; with one, pass by pass over the
+// image. Both take the same samples in the same order per pixel: the same bits.
+TEST(RtPath, PixelByPixelEqualsPassByPass) {
+  const Scene scene = sample("cornell.json");
+  auto once = [&](double budgetMs) {
+    return render(scene, {pass("p", "rt_path", {{"spp", 3}, {"time_budget_ms", budgetMs}})},
+                  {"p.color", "p.variance"}, 24, 18);
+  };
+  const Frame pixelMajor = once(0.0), passMajor = once(1e9);
+  ASSERT_EQ(passMajor.counters.at("p").at("passes"), 3.0);
+  EXPECT_EQ(pixelMajor.counters.at("p").at("rays"), passMajor.counters.at("p").at("rays"));
+  for (const char* out : {"p.color", "p.variance"}) {
+    const CpuImage &a = pixelMajor.outputs.at(out), &b = passMajor.outputs.at(out);
+    for (int y = 0; y < 18; ++y)
+      for (int x = 0; x < 24; ++x)
+        for (int ch = 0; ch < 4; ++ch) ASSERT_EQ(a.f(x, y, ch), b.f(x, y, ch)) << out << x << y;
+  }
+}
+
 // Same seed, same image: the per-pixel sequences do not depend on the thread schedule.
 TEST(RtPath, IsReproducible) {
   const Scene scene = sample("cornell.json");
