@@ -162,6 +162,14 @@ vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
 }
 
 PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng, float coneSpread) const {
+  // Depth 1 is the camera ray: it does not see back faces of single-sided materials.
+  Hit first;
+  const bool found = CameraRays{rt_, scene_, world_}.intersect(cameraRay, first, false);
+  return radiance(cameraRay, found ? &first : nullptr, rng, coneSpread);
+}
+
+PathSample PathTracer::radiance(const Ray& cameraRay, const Hit* firstHit, PathRng& rng,
+                                float coneSpread) const {
   PathSample out;
   vec3 throughput(1.f);
   Ray ray = cameraRay;
@@ -170,12 +178,11 @@ PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng, float coneSp
   RayCone cone{0.f, coneSpread};
   for (int depth = 1;; ++depth) {
     ++out.rays;
-    // Depth 1 is the camera ray: it does not see back faces of single-sided materials.
     Hit traced;
-    const bool found =
-        depth == 1 ? CameraRays{rt_, scene_, world_}.intersect(ray, traced, false)
-                   : rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), traced, false);
-    const Hit* hit = found ? &traced : nullptr;
+    const Hit* hit =
+        depth == 1                                                                       ? firstHit
+        : rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), traced, false) ? &traced
+                                                                                         : nullptr;
     if (medium)  // KHR_materials_volume: Beer-Lambert over the segment (as the Whitted tracer)
       throughput *= shading::volumeTransmittance(
           medium->attenuationColor, medium->attenuationDistance,

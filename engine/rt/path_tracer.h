@@ -47,6 +47,7 @@ struct PathSettings {
 // whatever the thread schedule.
 class PathRng {
  public:
+  PathRng() = default;  // a placeholder, to be assigned a seeded one
   PathRng(std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed);
   float next();
   vec2 next2() {
@@ -55,7 +56,7 @@ class PathRng {
   }
 
  private:
-  std::uint32_t state_;
+  std::uint32_t state_ = 0;
 };
 
 struct PathSample {
@@ -71,6 +72,10 @@ class PathTracer {
   // Radiance arriving at ray.origin along -ray.direction; finite. coneSpread: the camera ray's
   // cone spread (pixelSpreadAngle; width 0 at the eye), used when settings.rayCones is set.
   PathSample radiance(const Ray& ray, PathRng& rng, float coneSpread = 0.f) const;
+  // The same, given the camera ray's first hit (CameraRays; null: a miss), so that a caller
+  // can trace many paths' camera rays as one coherent stream (rt_path's chunks).
+  PathSample radiance(const Ray& ray, const Hit* firstHit, PathRng& rng,
+                      float coneSpread = 0.f) const;
   const PathSettings& settings() const { return settings_; }
 
  private:

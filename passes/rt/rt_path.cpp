@@ -2,12 +2,14 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <vector>
 
 #include "engine/graph/render_world.h"
+#include "engine/rt/camera_rays.h"
 #include "engine/rt/path_tracer.h"
 #include "engine/rt/ray_cone.h"
 
@@ -51,21 +53,33 @@ void RtPathPass::execute(PassContext& c) {
   const float spread = pixelSpreadAngle(frame.camera, frame.height) / std::sqrt(float(spp_));
   std::atomic<std::uint64_t> rays{0}, invalid{0};
   const ThinLensFrame lensFrame(frame.camera, frame.width, frame.height);
-  // One path of pixel (x, y) in pass `pass`, added to its Welford accumulators (the mean and
-  // the sum of squared deviations M2 per channel, in double).
-  auto addSample = [&](int x, int y, int pass, glm::dvec3& mean, glm::dvec3& m2,
-                       std::uint64_t& rowRays, std::uint64_t& rowInvalid) {
-    const std::size_t i = std::size_t(y) * std::size_t(frame.width) + std::size_t(x);
-    PathRng rng{std::uint32_t(i), std::uint32_t(pass), std::uint32_t(seed_)};
-    const vec2 jitter = rng.next2();
-    const vec2 lens = rng.next2();
-    const Ray ray = lensFrame.ray(float(x) + jitter.x, float(y) + jitter.y, lens);
-    const PathSample s = tracer.radiance(ray, rng, spread);
-    rowRays += s.rays;
-    rowInvalid += s.valid ? 0 : 1;
+  // Paths k = 0..n-1 of row y (n <= kChunk), pixel x and pass of sampleOf(k): their camera
+  // rays traced as one coherent Embree stream (CameraRays::intersectRays), then each path on
+  // its own, handed to add(k, sample) in order.
+  constexpr int kChunk = int(RtScene::kStreamRays);
+  const CameraRays camera{world.rtScene(), world.scene(), world.geometry()};
+  auto traceChunk = [&](int y, int n, auto sampleOf, auto add) {
+    PathRng rngs[kChunk];
+    Ray rays[kChunk];
+    Hit hits[kChunk];
+    const Hit* found[kChunk];
+    for (int k = 0; k < n; ++k) {
+      const auto [x, pass] = sampleOf(k);
+      const std::size_t i = std::size_t(y) * std::size_t(frame.width) + std::size_t(x);
+      rngs[k] = PathRng{std::uint32_t(i), std::uint32_t(pass), std::uint32_t(seed_)};
+      const vec2 jitter = rngs[k].next2();
+      const vec2 lens = rngs[k].next2();
+      rays[k] = lensFrame.ray(float(x) + jitter.x, float(y) + jitter.y, lens);
+    }
+    const std::size_t count = std::size_t(n);
+    camera.intersectRays({rays, count}, {hits, count}, {found, count}, false);
+    for (int k = 0; k < n; ++k) add(k, tracer.radiance(rays[k], found[k], rngs[k], spread));
+  };
+  // Welford's update of a pixel's mean and sum of squared deviations M2 by its n-th sample.
+  auto welford = [](const PathSample& s, double n, glm::dvec3& mean, glm::dvec3& m2) {
     const glm::dvec3 value(s.radiance);
     const glm::dvec3 delta = value - mean;
-    mean += delta / double(pass + 1);
+    mean += delta / n;
     m2 += delta * (value - mean);
   };
   CpuImage& color = c.cpuWrite(color_);
@@ -88,11 +102,22 @@ void RtPathPass::execute(PassContext& c) {
     passes = spp_;
     tbb::parallel_for(0, frame.height, [&](int y) {
       std::uint64_t rowRays = 0, rowInvalid = 0;
-      for (int x = 0; x < frame.width; ++x) {
-        glm::dvec3 mean(0.0), m2(0.0);
-        for (int pass = 0; pass < spp_; ++pass)
-          addSample(x, y, pass, mean, m2, rowRays, rowInvalid);
-        store(x, y, double(spp_), mean, m2);
+      glm::dvec3 mean(0.0), m2(0.0);
+      const int samples = frame.width * spp_;
+      for (int begin = 0; begin < samples; begin += kChunk) {
+        traceChunk(
+            y, std::min(kChunk, samples - begin),
+            [&](int k) {
+              return std::pair{(begin + k) / spp_, (begin + k) % spp_};
+            },
+            [&](int k, const PathSample& s) {
+              const int x = (begin + k) / spp_, pass = (begin + k) % spp_;
+              if (pass == 0) mean = m2 = glm::dvec3(0.0);
+              rowRays += s.rays;
+              rowInvalid += s.valid ? 0 : 1;
+              welford(s, double(pass + 1), mean, m2);
+              if (pass + 1 == spp_) store(x, y, double(spp_), mean, m2);
+            });
       }
       rays.fetch_add(rowRays, std::memory_order_relaxed);
       invalid.fetch_add(rowInvalid, std::memory_order_relaxed);
@@ -104,9 +129,19 @@ void RtPathPass::execute(PassContext& c) {
     while (passes < spp_) {
       tbb::parallel_for(0, frame.height, [&](int y) {
         std::uint64_t rowRays = 0, rowInvalid = 0;
-        for (int x = 0; x < frame.width; ++x) {
-          const std::size_t i = std::size_t(y) * std::size_t(frame.width) + std::size_t(x);
-          addSample(x, y, passes, mean[i], m2[i], rowRays, rowInvalid);
+        for (int begin = 0; begin < frame.width; begin += kChunk) {
+          traceChunk(
+              y, std::min(kChunk, frame.width - begin),
+              [&](int k) {
+                return std::pair{begin + k, passes};
+              },
+              [&](int k, const PathSample& s) {
+                const std::size_t i =
+                    std::size_t(y) * std::size_t(frame.width) + std::size_t(begin + k);
+                rowRays += s.rays;
+                rowInvalid += s.valid ? 0 : 1;
+                welford(s, double(passes + 1), mean[i], m2[i]);
+              });
         }
         rays.fetch_add(rowRays, std::memory_order_relaxed);
         invalid.fetch_add(rowInvalid, std::memory_order_relaxed);

@@ -347,7 +347,10 @@ TEST(RtPath, TimeBudgetStopsEarlyAfterWholePasses) {
 }
 
 // Without a time budget a pixel's paths run one after another; with one, pass by pass over the
-// image. Both take the same samples in the same order per pixel: the same bits.
+// image. Both take the same samples per pixel (the same random sequences, in the same order for
+// the running mean), so the images agree up to the last bits in which Embree's stream kernels
+// may round a camera ray's hit differently in the two orders' chunks. A sample taken from
+// another pixel's or pass's sequence would differ by the noise of 3 paths, far above that.
 TEST(RtPath, PixelByPixelEqualsPassByPass) {
   const Scene scene = sample("cornell.json");
   auto once = [&](double budgetMs) {
@@ -356,12 +359,17 @@ TEST(RtPath, PixelByPixelEqualsPassByPass) {
   };
   const Frame pixelMajor = once(0.0), passMajor = once(1e9);
   ASSERT_EQ(passMajor.counters.at("p").at("passes"), 3.0);
-  EXPECT_EQ(pixelMajor.counters.at("p").at("rays"), passMajor.counters.at("p").at("rays"));
+  EXPECT_EQ(pixelMajor.counters.at("p").at("samples"), passMajor.counters.at("p").at("samples"));
   for (const char* out : {"p.color", "p.variance"}) {
     const CpuImage &a = pixelMajor.outputs.at(out), &b = passMajor.outputs.at(out);
+    int apart = 0;
     for (int y = 0; y < 18; ++y)
       for (int x = 0; x < 24; ++x)
-        for (int ch = 0; ch < 4; ++ch) ASSERT_EQ(a.f(x, y, ch), b.f(x, y, ch)) << out << x << y;
+        for (int ch = 0; ch < 4; ++ch)
+          apart +=
+              std::abs(a.f(x, y, ch) - b.f(x, y, ch)) > 1e-5f * (1.f + std::abs(b.f(x, y, ch)));
+    // A last-bit difference may flip a Russian roulette draw: a pixel or two, not a pattern.
+    EXPECT_LE(apart, 4) << out;
   }
 }
 
