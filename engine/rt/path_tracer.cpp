@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <new>
 #include <numbers>
 
+#include "engine/core/check.h"
 #include "engine/rt/camera_rays.h"
 #include "engine/rt/light_sampling.h"
 #include "engine/rt/path_pbr.h"
@@ -92,12 +95,6 @@ float samplingArea(const Light& light) {
   }
 }
 
-bool visible(const RtScene& rt, const OcclusionRay& r, std::uint32_t& rays) {
-  if (r.tnear > r.tfar) return true;  // inactive: castsShadows == false or degenerate
-  ++rays;
-  return !rt.occluded(r.origin, r.direction, r.tnear, r.tfar);
-}
-
 bool finite(const vec3& c) {
   return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
 }
@@ -121,14 +118,55 @@ PathTracer::PathTracer(const Scene& scene, const WorldGeometry& world, const RtS
   for (const Light& light : scene.lights) lights_.push_back(shading::toShadingLight(light));
 }
 
-vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
-                           std::uint32_t& rays) const {
+// A light's next-event term at one path vertex.
+struct PathTracer::LightTerm {
+  vec3 contribution{0.f};
+  bool lit = false;  // formed, and its shadow ray (if any) unoccluded
+};
+
+// The shadow rays of a level of paths, traced as Embree streams (rtcOccluded1M) of kRays; each
+// occluded ray unlights its term.
+class PathTracer::ShadowStream {
+ public:
+  ShadowStream(const RtScene& rt, bool coherent) : rt_(rt), coherent_(coherent) {}
+  void add(const OcclusionRay& r, LightTerm& term) {
+    rays_[filled_] = toEmbreeRay(r);
+    owner_[filled_] = &term;
+    if (++filled_ == kRays) flush();
+  }
+  void flush() {
+    if (filled_ == 0) return;
+    rt_.occludedTile({rays_, filled_}, coherent_);
+    for (std::size_t i = 0; i < filled_; ++i)
+      if (rays_[i].tfar < 0.f) owner_[i]->lit = false;  // Embree's tfar = -inf on a hit
+    filled_ = 0;
+  }
+
+ private:
+  static constexpr std::size_t kRays = 256;  // as traceShadowRays' tiles
+  const RtScene& rt_;
+  bool coherent_;
+  RTCRay rays_[kRays];  // RTC_ALIGN(16), as rtcOccluded1M requires
+  LightTerm* owner_[kRays];
+  std::size_t filled_ = 0;
+};
+
+void PathTracer::nextEventTerms(const SurfacePoint& p, const vec3& v, PathRng& rng,
+                                LightTerm* terms, std::uint32_t& rays, ShadowStream& shadow) const {
   const shading::ShadingMaterial& m = p.resolved;
   const bool lecture = m.model != shading::SHADING_MODEL_GLTF;
-  if (lecture && !(m.kd > 0.f) && !(m.ks > 0.f)) return vec3(0.f);  // delta lobes only
+  if (lecture && !(m.kd > 0.f) && !(m.ks > 0.f)) return;  // delta lobes only
   const vec3& n = p.shadingNormal;
   const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
-  vec3 sum(0.f);
+  // The term is lit unless its shadow ray is traced and occluded; an inactive ray
+  // (castsShadows false, or degenerate) is not traced and lets the term through.
+  const auto formed = [&](LightTerm& term, const vec3& contribution, const OcclusionRay& r) {
+    term.contribution = contribution;
+    term.lit = true;
+    if (r.tnear > r.tfar) return;
+    ++rays;
+    shadow.add(r, term);
+  };
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     const Light& light = scene_.lights[i];
     if (!isAreaLight(light)) {
@@ -137,7 +175,7 @@ vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
       const shading::LightSample s = shading::sampleLight(lights_[i], p.position);
       const vec3 direct = lectureDirect(m, n, v, s.l);
       if (s.radiance == vec3(0.f) || direct == vec3(0.f)) continue;
-      if (visible(rt_, makeShadowRay(light, receiver), rays)) sum += direct * s.radiance;
+      formed(terms[i], direct * s.radiance, makeShadowRay(light, receiver));
       continue;
     }
     // Area lights: one point y with area pdf 1/A; the solid-angle pdf is d^2 / (A cos_y), so
@@ -154,127 +192,189 @@ vec3 PathTracer::nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng,
     const float cosLight = glm::dot(emitterNormal, -l);
     const vec3 direct = lectureDirect(m, n, v, l);
     if (!(cosLight > 0.f) || direct == vec3(0.f)) continue;
-    if (!visible(rt_, makeShadowRayTo(light, receiver, y), rays)) continue;
     const vec3 emitted = light.color * std::max(light.intensity, 0.f);
-    sum += direct * emitted * (cosLight * samplingArea(light) / d2);
+    formed(terms[i], direct * emitted * (cosLight * samplingArea(light) / d2),
+           makeShadowRayTo(light, receiver, y));
   }
-  return sum;
 }
 
 PathSample PathTracer::radiance(const Ray& cameraRay, PathRng& rng, float coneSpread) const {
   // Depth 1 is the camera ray: it does not see back faces of single-sided materials.
   Hit first;
-  const bool found = CameraRays{rt_, scene_, world_}.intersect(cameraRay, first, false);
-  return radiance(cameraRay, found ? &first : nullptr, rng, coneSpread);
+  const Hit* found =
+      CameraRays{rt_, scene_, world_}.intersect(cameraRay, first, false) ? &first : nullptr;
+  PathSample out;
+  radiance({&cameraRay, 1}, {&found, 1}, {&rng, 1}, coneSpread, {&out, 1});
+  return out;
 }
 
-PathSample PathTracer::radiance(const Ray& cameraRay, const Hit* firstHit, PathRng& rng,
-                                float coneSpread) const {
-  PathSample out;
-  vec3 throughput(1.f);
-  Ray ray = cameraRay;
+// One path between its vertices.
+struct PathTracer::PathState {
+  Ray ray;
+  vec3 throughput{1.f};
   const Material* medium = nullptr;  // the volume the current segment runs inside, if any
-  bool coneLive = settings_.rayCones;
-  RayCone cone{0.f, coneSpread};
-  for (int depth = 1;; ++depth) {
-    ++out.rays;
-    Hit traced;
-    const Hit* hit =
-        depth == 1                                                                       ? firstHit
-        : rt_.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), traced, false) ? &traced
-                                                                                         : nullptr;
-    if (medium)  // KHR_materials_volume: Beer-Lambert over the segment (as the Whitted tracer)
-      throughput *= shading::volumeTransmittance(
-          medium->attenuationColor, medium->attenuationDistance,
-          hit ? hit->t * glm::length(ray.direction) : std::numeric_limits<float>::infinity());
-    if (!hit) {
-      out.radiance += throughput * sampleEnvironment(scene_.environment, ray.direction);
-      break;
-    }
-    SurfacePoint p = makeSurfacePoint(
-        scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
-        ray.direction);
-    if (coneLive) {  // RTG eq. 20.23 at the cone's width here, as WhittedTracer::radiance
-      cone.width += cone.spread * hit->t * glm::length(ray.direction);
-      p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
-                                   coneUvLod(world_, p, ray.direction, cone.width));
-    }
-    const shading::ShadingMaterial& m = p.resolved;
-    const vec3 v = -ray.direction;
-    out.radiance += throughput * (m.emission + nextEvent(p, v, rng, out.rays));
-    if (depth >= settings_.maxDepth) break;
+  RayCone cone;
+  bool coneLive = false;
+  bool live = true;
+};
 
-    vec3 direction, weight;
-    bool smoothLobe = true;
-    if (m.model == shading::SHADING_MODEL_GLTF) {  // the glTF model's own sampling (path_pbr.h)
-      const float ior = scene_.material(p.material).ior;
-      const float uLobe = rng.next();
-      const PbrScatter s =
-          samplePbr(m, p.shadingNormal, v, p.frontFacing ? 1.f / ior : ior, uLobe, rng.next2());
-      if (!s.valid) break;
-      direction = s.direction;
-      weight = s.weight;
-      smoothLobe = !s.delta;
-    } else {
-      // Scatter: pick one lobe with probability weight / total and divide by it.
-      const LobeChoice choice = chooseLobe(m, rng.next());
-      if (!(choice.probability > 0.f)) break;
-      const vec3& n = p.shadingNormal;
-      const vec2 u = rng.next2();
-      switch (choice.lobe) {
-        case kDiffuse:  // f cos / pdf = (k_d C / pi) cos / (cos / pi)
-          direction = sampleCosine(n, u);
-          weight = m.kd * m.color;
-          break;
-        case kGlossy: {  // f cos / pdf = k_s d (e + 2) / (e + 1) cos(theta): cos^e cancels
-          const float e = phongExponent(m);
-          direction = samplePowerCosine(glm::normalize(shading::reflectAbout(v, n)), e, u);
-          weight = m.ks * m.specularColor *
-                   ((e + 2.f) / (e + 1.f) * std::max(0.f, glm::dot(n, direction)));
-          break;
-        }
-        case kMirror:
-          direction = glm::normalize(shading::reflectAbout(v, n));
-          weight = m.kps * m.mirrorColor;
-          break;
-        default: {  // as in the Whitted tracer: air outside, ior inside, told apart by the face
-          const float ior = scene_.material(p.material).ior;
-          direction = shading::refractLecture(v, n, p.frontFacing ? 1.f / ior : ior).t;
-          weight = m.kt * m.transmitColor;
-          break;
-        }
+bool PathTracer::scatter(const SurfacePoint& p, int depth, PathRng& rng, PathState& path) const {
+  if (depth >= settings_.maxDepth) return false;
+  const shading::ShadingMaterial& m = p.resolved;
+  const vec3 v = -path.ray.direction;
+  vec3 direction, weight;
+  bool smoothLobe = true;
+  if (m.model == shading::SHADING_MODEL_GLTF) {  // the glTF model's own sampling (path_pbr.h)
+    const float ior = scene_.material(p.material).ior;
+    const float uLobe = rng.next();
+    const PbrScatter s =
+        samplePbr(m, p.shadingNormal, v, p.frontFacing ? 1.f / ior : ior, uLobe, rng.next2());
+    if (!s.valid) return false;
+    direction = s.direction;
+    weight = s.weight;
+    smoothLobe = !s.delta;
+  } else {
+    // Scatter: pick one lobe with probability weight / total and divide by it.
+    const LobeChoice choice = chooseLobe(m, rng.next());
+    if (!(choice.probability > 0.f)) return false;
+    const vec3& n = p.shadingNormal;
+    const vec2 u = rng.next2();
+    switch (choice.lobe) {
+      case kDiffuse:  // f cos / pdf = (k_d C / pi) cos / (cos / pi)
+        direction = sampleCosine(n, u);
+        weight = m.kd * m.color;
+        break;
+      case kGlossy: {  // f cos / pdf = k_s d (e + 2) / (e + 1) cos(theta): cos^e cancels
+        const float e = phongExponent(m);
+        direction = samplePowerCosine(glm::normalize(shading::reflectAbout(v, n)), e, u);
+        weight = m.ks * m.specularColor *
+                 ((e + 2.f) / (e + 1.f) * std::max(0.f, glm::dot(n, direction)));
+        break;
       }
-      weight /= choice.probability;
-      smoothLobe = choice.lobe == kDiffuse || choice.lobe == kGlossy;
+      case kMirror:
+        direction = glm::normalize(shading::reflectAbout(v, n));
+        weight = m.kps * m.mirrorColor;
+        break;
+      default: {  // as in the Whitted tracer: air outside, ior inside, told apart by the face
+        const float ior = scene_.material(p.material).ior;
+        direction = shading::refractLecture(v, n, p.frontFacing ? 1.f / ior : ior).t;
+        weight = m.kt * m.transmitColor;
+        break;
+      }
     }
-    // A smooth lobe is sampled about the shading normal and may point into the geometry: no
-    // light arrives from there, and tracing it would leak through the surface.
-    if (smoothLobe && !(glm::dot(direction, p.geometricNormal) > 0.f)) break;
-    if (coneLive && smoothLobe) coneLive = false;
-    // A delta bounce on the viewer's side is a reflection (its spread grows with curvature),
-    // one through the surface a refraction (unchanged, as in WhittedTracer).
-    if (coneLive && glm::dot(direction, p.geometricNormal) * glm::dot(v, p.geometricNormal) > 0.f)
-      cone = reflectedCone(world_, p, cone.width, cone.spread);
-    throughput *= weight;
-    if (!finite(throughput) || throughput == vec3(0.f)) break;
-    ray = spawnRay(p, direction);
-    // Into the back side of the (outward) face: inside the material's volume.
-    const Material& mat = scene_.material(p.material);
-    medium = shading::hasVolumeAttenuation(mat) && glm::dot(direction, p.faceNormal) < 0.f
-                 ? &mat
-                 : nullptr;
+    weight /= choice.probability;
+    smoothLobe = choice.lobe == kDiffuse || choice.lobe == kGlossy;
+  }
+  // A smooth lobe is sampled about the shading normal and may point into the geometry: no
+  // light arrives from there, and tracing it would leak through the surface.
+  if (smoothLobe && !(glm::dot(direction, p.geometricNormal) > 0.f)) return false;
+  if (path.coneLive && smoothLobe) path.coneLive = false;
+  // A delta bounce on the viewer's side is a reflection (its spread grows with curvature),
+  // one through the surface a refraction (unchanged, as in WhittedTracer).
+  if (path.coneLive &&
+      glm::dot(direction, p.geometricNormal) * glm::dot(v, p.geometricNormal) > 0.f)
+    path.cone = reflectedCone(world_, p, path.cone.width, path.cone.spread);
+  path.throughput *= weight;
+  if (!finite(path.throughput) || path.throughput == vec3(0.f)) return false;
+  path.ray = spawnRay(p, direction);
+  // Into the back side of the (outward) face: inside the material's volume.
+  const Material& mat = scene_.material(p.material);
+  path.medium = shading::hasVolumeAttenuation(mat) && glm::dot(direction, p.faceNormal) < 0.f
+                    ? &mat
+                    : nullptr;
+  if (settings_.russianRoulette && depth >= settings_.rrDepth) {
+    const float survive = std::min(1.f, maxComponent(path.throughput));
+    if (rng.next() >= survive) return false;
+    path.throughput /= survive;
+  }
+  return true;
+}
 
-    if (settings_.russianRoulette && depth >= settings_.rrDepth) {
-      const float survive = std::min(1.f, maxComponent(throughput));
-      if (rng.next() >= survive) break;
-      throughput /= survive;
+void PathTracer::radiance(std::span<const Ray> cameraRays, std::span<const Hit* const> firstHits,
+                          std::span<PathRng> rngs, float coneSpread,
+                          std::span<PathSample> out) const {
+  const std::size_t n = cameraRays.size(), lights = lights_.size();
+  DIPTYCH_CHECK(n <= kMaxPaths && firstHits.size() == n && rngs.size() == n && out.size() >= n,
+                "PathTracer::radiance: chunk sizes disagree");
+  PathState paths[kMaxPaths];
+  for (std::size_t i = 0; i < n; ++i) {
+    paths[i].ray = cameraRays[i];
+    paths[i].coneLive = settings_.rayCones;
+    paths[i].cone = RayCone{0.f, coneSpread};
+    out[i] = PathSample{};
+  }
+  // Per thread, reused level after level: no allocation per vertex.
+  thread_local std::vector<LightTerm> terms;
+  // Raw storage, each vertex's point constructed in place: an array of SurfacePoint would run
+  // its member initialisers over ~16 KB per level first.
+  alignas(SurfacePoint) std::byte pointStorage[kMaxPaths * sizeof(SurfacePoint)];
+  const auto point = [&](std::size_t i) {
+    return std::launder(reinterpret_cast<SurfacePoint*>(pointStorage) + i);
+  };
+  Ray rays[kMaxPaths];
+  Hit traced[kMaxPaths];
+  const Hit* hits[kMaxPaths];
+  std::size_t slot[kMaxPaths];  // the live paths of this level
+  for (int depth = 1;; ++depth) {
+    std::size_t live = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (paths[i].live) slot[live++] = i;
+    if (live == 0) break;
+    // The level's closest hits: the camera rays' are given; later bounces scatter, so their
+    // stream is traced incoherent.
+    if (depth == 1) {
+      for (std::size_t k = 0; k < live; ++k) hits[k] = firstHits[slot[k]];
+    } else {
+      for (std::size_t k = 0; k < live; ++k) rays[k] = paths[slot[k]].ray;
+      rt_.intersectRays({rays, live}, {traced, live}, {hits, live}, false, false);
+    }
+    terms.assign(live * lights, LightTerm{});
+    ShadowStream shadow(rt_, depth == 1);
+    bool shaded[kMaxPaths] = {};
+    for (std::size_t k = 0; k < live; ++k) {
+      PathState& path = paths[slot[k]];
+      PathSample& o = out[slot[k]];
+      const Ray& ray = path.ray;
+      const Hit* hit = hits[k];
+      ++o.rays;
+      if (path.medium)  // KHR_materials_volume: Beer-Lambert over the segment (as Whitted)
+        path.throughput *= shading::volumeTransmittance(
+            path.medium->attenuationColor, path.medium->attenuationDistance,
+            hit ? hit->t * glm::length(ray.direction) : std::numeric_limits<float>::infinity());
+      if (!hit) {
+        o.radiance += path.throughput * sampleEnvironment(scene_.environment, ray.direction);
+        path.live = false;
+        continue;
+      }
+      SurfacePoint& p = *::new (static_cast<void*>(point(k))) SurfacePoint(makeSurfacePoint(
+          scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
+          ray.direction));
+      if (path.coneLive) {  // RTG eq. 20.23 at the cone's width here, as WhittedTracer::radiance
+        path.cone.width += path.cone.spread * hit->t * glm::length(ray.direction);
+        p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
+                                     coneUvLod(world_, p, ray.direction, path.cone.width));
+      }
+      shaded[k] = true;
+      nextEventTerms(p, -ray.direction, rngs[slot[k]], terms.data() + k * lights, o.rays, shadow);
+    }
+    shadow.flush();
+    for (std::size_t k = 0; k < live; ++k) {
+      if (!shaded[k]) continue;
+      const std::size_t i = slot[k];
+      const SurfacePoint& p = *point(k);
+      // The unoccluded terms in light order, as one path's loop sums them.
+      vec3 direct(0.f);
+      for (std::size_t l = 0; l < lights; ++l)
+        if (const LightTerm& t = terms[k * lights + l]; t.lit) direct += t.contribution;
+      out[i].radiance += paths[i].throughput * (p.resolved.emission + direct);
+      paths[i].live = scatter(p, depth, rngs[i], paths[i]);
     }
   }
-  if (!finite(out.radiance)) {  // never expected; reported by the pass rather than averaged
-    out.radiance = vec3(0.f);
-    out.valid = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (finite(out[i].radiance)) continue;  // never expected; reported by the pass
+    out[i].radiance = vec3(0.f);
+    out[i].valid = false;
   }
-  return out;
 }
 
 }  // namespace diptych

@@ -22,7 +22,9 @@
 //   - surfaces with M_E > 0 and the environment only when a BSDF-sampled ray hits them.
 // Russian roulette (Arvo and Kirk 1990) after `rrDepth` vertices with survival probability
 // min(1, max component of the throughput); `maxDepth` vertices at most.
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/rt/rt_scene.h"
@@ -72,14 +74,28 @@ class PathTracer {
   // Radiance arriving at ray.origin along -ray.direction; finite. coneSpread: the camera ray's
   // cone spread (pixelSpreadAngle; width 0 at the eye), used when settings.rayCones is set.
   PathSample radiance(const Ray& ray, PathRng& rng, float coneSpread = 0.f) const;
-  // The same, given the camera ray's first hit (CameraRays; null: a miss), so that a caller
-  // can trace many paths' camera rays as one coherent stream (rt_path's chunks).
-  PathSample radiance(const Ray& ray, const Hit* firstHit, PathRng& rng,
-                      float coneSpread = 0.f) const;
+  // Up to kMaxPaths paths traced together, vertex by vertex (a wavefront, as the Whitted
+  // tiles): each level's closest hits and next-event shadow rays go to Embree as streams, and
+  // each path's arithmetic is radiance()'s, in its order. firstHits: the camera rays' hits
+  // (CameraRays, which a caller traces as one coherent stream; null: a miss). rngs: each
+  // path's sequence, advanced as radiance() advances it. Embree's stream kernels may round a
+  // hit's last bits differently from its single-ray ones (docs/ray-tracing.md).
+  static constexpr std::size_t kMaxPaths = 256;
+  void radiance(std::span<const Ray> cameraRays, std::span<const Hit* const> firstHits,
+                std::span<PathRng> rngs, float coneSpread, std::span<PathSample> out) const;
   const PathSettings& settings() const { return settings_; }
 
  private:
-  vec3 nextEvent(const SurfacePoint& p, const vec3& v, PathRng& rng, std::uint32_t& rays) const;
+  // Next-event estimation at p: per scene light, the term its shadow ray (added to `shadow`
+  // where it is traced) lets through; the caller sums the unoccluded ones in light order.
+  struct LightTerm;
+  class ShadowStream;
+  struct PathState;
+  // The bounce after vertex p at `depth` (BSDF sampling, cones, volume, Russian roulette):
+  // false where the path ends there.
+  bool scatter(const SurfacePoint& p, int depth, PathRng& rng, PathState& path) const;
+  void nextEventTerms(const SurfacePoint& p, const vec3& v, PathRng& rng, LightTerm* terms,
+                      std::uint32_t& rays, ShadowStream& shadow) const;
   const Scene& scene_;
   const WorldGeometry& world_;
   const RtScene& rt_;

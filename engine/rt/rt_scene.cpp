@@ -200,12 +200,12 @@ bool RtScene::intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool 
 }
 
 void RtScene::intersectRays(std::span<const Ray> rays, std::span<Hit> hits,
-                            std::span<const Hit*> found, bool wantNormal) const {
+                            std::span<const Hit*> found, bool wantNormal, bool coherent) const {
   DIPTYCH_CHECK(hits.size() >= rays.size() && found.size() >= rays.size(),
                 "RtScene::intersectRays: output smaller than the rays");
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  context.flags = streamFlag(true);
+  context.flags = streamFlag(coherent);
   for (std::size_t begin = 0; begin < rays.size(); begin += kStreamRays) {
     const std::size_t n = std::min(kStreamRays, rays.size() - begin);
     RTCRayHit tile[kStreamRays];  // RTC_ALIGN(16), as rtcIntersect1M requires

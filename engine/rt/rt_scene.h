@@ -113,8 +113,9 @@ class RtScene {
   // single-ray ones (a ray through an edge shared by two triangles can get the other one, or
   // t, u, v can differ in the last bits: docs/ray-tracing.md).
   static constexpr std::size_t kStreamRays = 64;
+  // coherent false: rays that scatter (a path tracer's bounces), traced with the INCOHERENT flag.
   void intersectRays(std::span<const Ray> rays, std::span<Hit> hits, std::span<const Hit*> found,
-                     bool wantNormal) const;
+                     bool wantNormal, bool coherent = true) const;
   // Any hit in [tnear, tfar].
   bool occluded(const vec3& origin, const vec3& direction, float tnear, float tfar) const;
 

@@ -56,7 +56,7 @@ void RtPathPass::execute(PassContext& c) {
   // Paths k = 0..n-1 of row y (n <= kChunk), pixel x and pass of sampleOf(k): their camera
   // rays traced as one coherent Embree stream (CameraRays::intersectRays), then each path on
   // its own, handed to add(k, sample) in order.
-  constexpr int kChunk = int(RtScene::kStreamRays);
+  constexpr int kChunk = int(PathTracer::kMaxPaths);
   const CameraRays camera{world.rtScene(), world.scene(), world.geometry()};
   auto traceChunk = [&](int y, int n, auto sampleOf, auto add) {
     PathRng rngs[kChunk];
@@ -73,7 +73,9 @@ void RtPathPass::execute(PassContext& c) {
     }
     const std::size_t count = std::size_t(n);
     camera.intersectRays({rays, count}, {hits, count}, {found, count}, false);
-    for (int k = 0; k < n; ++k) add(k, tracer.radiance(rays[k], found[k], rngs[k], spread));
+    PathSample samples[kChunk];
+    tracer.radiance({rays, count}, {found, count}, {rngs, count}, spread, {samples, count});
+    for (int k = 0; k < n; ++k) add(k, samples[k]);
   };
   // Welford's update of a pixel's mean and sum of squared deviations M2 by its n-th sample.
   auto welford = [](const PathSample& s, double n, glm::dvec3& mean, glm::dvec3& m2) {
