@@ -116,10 +116,13 @@ class WhittedTracer {
   // the rounding of Embree's packet kernels (see there). Their reflected and transmitted rays
   // are traced together the same way (tracedTile), level by level, while depth <
   // kBatchedDepths, and ray by ray, as radiance() does, from there on (each batched level holds
-  // ~50 KB of stack: the depth parameter goes up to 64). depth: 1..maxDepth (else an Error), as for
+  // ~100 KB of stack, -fstack-usage: radianceTile 80 KB, tracedTile 19 KB; 8 levels stay well
+  // inside TBB's 4 MB worker stacks, while the depth parameter goes up to 64). Tiles of 128
+  // rather than 64: rt_transmission 0.96x, rt_reflection 0.97x CPU time on whitted 640x480
+  // (images identical). depth: 1..maxDepth (else an Error), as for
   // radianceAt: radiance() traces nothing beyond maxDepth. textureSignal: empty, or one per ray
   // (radiance()'s textureSignal); secondarySignals: empty, or one per ray (radiance()'s).
-  static constexpr std::size_t kMaxTile = 64;
+  static constexpr std::size_t kMaxTile = 128;
   static constexpr int kBatchedDepths = 8;
   void radianceTile(std::span<const Ray> rays, std::span<const Hit* const> hits,
                     std::span<const std::uint32_t> seeds, int depth,
