@@ -203,9 +203,11 @@ vec3 checkerColor(const Checker& checker, vec2 uv) {
   const double a = std::floor(double(uv.x) * checker.scale);
   const double b = std::floor(double(uv.y) * checker.scale);
   if (!std::isfinite(a) || !std::isfinite(b)) return checker.colorA;
-  // fmod of the sum by 2 in double: exact for the integers a float uv can produce.
-  const double parity = std::fmod(std::fabs(a + b), 2.0);
-  return parity == 0.0 ? checker.colorA : checker.colorB;
+  // The parity of the sum s = |a + b|, an integer-valued double: s is even exactly when s / 2
+  // (exact: a power-of-two scaling) is an integer, as fmod(s, 2) == 0 says, for every s (past
+  // 2^53 every double is even), without fmod's libm call (1% of the Whitted reference, perf).
+  const double half = 0.5 * std::fabs(a + b);
+  return std::floor(half) == half ? checker.colorA : checker.colorB;
 }
 
 }  // namespace diptych

@@ -125,5 +125,30 @@ TEST(TextureSampling, GreyAndPartialChannelTexelsFillTheRestAsBefore) {
   EXPECT_EQ(sampleBilinear(three, {0.3f, 0.6f}, r, r), vec4(0.75f, 0.75f, 0.75f, 1.f));
 }
 
+// The checker's parity test (floor(s / 2) == s / 2) against fmod(s, 2) == 0, the definition it
+// replaced: every cell from -40 to 40 at several scales, cell boundaries, and coordinates whose
+// cell indices pass 2^24 (float) and 2^53 (double), where every index is even.
+TEST(TextureSampling, CheckerParityEqualsFmod) {
+  const vec3 a(1.f, 0.f, 0.f), b(0.f, 1.f, 0.f);
+  auto byFmod = [&](const Checker& c, vec2 uv) {
+    const double x = std::floor(double(uv.x) * c.scale), y = std::floor(double(uv.y) * c.scale);
+    if (!std::isfinite(x) || !std::isfinite(y)) return c.colorA;
+    return std::fmod(std::fabs(x + y), 2.0) == 0.0 ? c.colorA : c.colorB;
+  };
+  int cellsB = 0;
+  for (float scale : {1.f, 3.f, 8.f, 1e10f}) {
+    const Checker c{a, b, scale};
+    for (float u = -40.f; u <= 40.f; u += 0.37f)
+      for (float v : {-40.f, -1.5f, -0.f, 0.f, 0.25f, 1.f, 7.75f, 39.5f}) {
+        ASSERT_EQ(checkerColor(c, vec2(u, v)), byFmod(c, vec2(u, v))) << u << " " << v;
+        cellsB += checkerColor(c, vec2(u, v)) == b ? 1 : 0;
+      }
+    for (float big : {16777216.f, 16777218.f, 1e16f, 9.007199e15f, 3e38f, -3e38f})
+      for (float v : {0.f, 1.f, 2.5f})
+        ASSERT_EQ(checkerColor(c, vec2(big, v)), byFmod(c, vec2(big, v))) << big << " " << v;
+  }
+  EXPECT_GT(cellsB, 100);  // both colours occur
+}
+
 }  // namespace
 }  // namespace diptych
