@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "engine/graph/render_world.h"
@@ -54,8 +55,8 @@ void RtPathPass::execute(PassContext& c) {
   std::atomic<std::uint64_t> rays{0}, invalid{0};
   const ThinLensFrame lensFrame(frame.camera, frame.width, frame.height);
   // Paths k = 0..n-1 of row y (n <= kChunk), pixel x and pass of sampleOf(k): their camera
-  // rays traced as one coherent Embree stream (CameraRays::intersectRays), then each path on
-  // its own, handed to add(k, sample) in order.
+  // rays traced as one coherent Embree stream (CameraRays::intersectRays), then the chunk as
+  // PathTracer's wavefront; each sample handed to add(k, sample) in order.
   constexpr int kChunk = int(PathTracer::kMaxPaths);
   const CameraRays camera{world.rtScene(), world.scene(), world.geometry()};
   auto traceChunk = [&](int y, int n, auto sampleOf, auto add) {
@@ -98,22 +99,22 @@ void RtPathPass::execute(PassContext& c) {
   int passes = 0;
   if (!(timeBudgetMs_ > 0.0)) {
     // No budget: a pixel's spp paths one after another, the accumulators in registers. The same
-    // samples in the same order as pass by pass (each depends only on pixel, pass and seed), so
-    // the same bits; but successive paths of a pixel share its first hit's BVH nodes and
-    // texels in cache, and no image of accumulators makes spp round trips through memory.
+    // samples in the same order as pass by pass (each depends only on pixel, pass and seed);
+    // no image of accumulators makes spp round trips through memory. Sample indices in 64
+    // bits: width x spp can pass 2^31 (spp goes up to 2^20).
     passes = spp_;
     tbb::parallel_for(0, frame.height, [&](int y) {
       std::uint64_t rowRays = 0, rowInvalid = 0;
       glm::dvec3 mean(0.0), m2(0.0);
-      const int samples = frame.width * spp_;
-      for (int begin = 0; begin < samples; begin += kChunk) {
+      const std::int64_t samples = std::int64_t(frame.width) * spp_;
+      for (std::int64_t begin = 0; begin < samples; begin += kChunk) {
         traceChunk(
-            y, std::min(kChunk, samples - begin),
+            y, int(std::min<std::int64_t>(kChunk, samples - begin)),
             [&](int k) {
-              return std::pair{(begin + k) / spp_, (begin + k) % spp_};
+              return std::pair{int((begin + k) / spp_), int((begin + k) % spp_)};
             },
             [&](int k, const PathSample& s) {
-              const int x = (begin + k) / spp_, pass = (begin + k) % spp_;
+              const int x = int((begin + k) / spp_), pass = int((begin + k) % spp_);
               if (pass == 0) mean = m2 = glm::dvec3(0.0);
               rowRays += s.rays;
               rowInvalid += s.valid ? 0 : 1;
