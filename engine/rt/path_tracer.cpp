@@ -303,7 +303,10 @@ void PathTracer::radiance(std::span<const Ray> cameraRays, std::span<const Hit* 
     paths[i].cone = RayCone{0.f, coneSpread};
     out[i] = PathSample{};
   }
-  // Per thread, reused level after level: no allocation per vertex.
+  // Per thread, reused level after level: no allocation per vertex. Nothing between a level's
+  // fill and its last read enters TBB (surface points, light sampling, Embree streams), so no
+  // other chunk's radiance() can run on this thread meanwhile and reuse it (as radianceTile's
+  // scratch).
   thread_local std::vector<LightTerm> terms;
   // Raw storage, each vertex's point constructed in place: an array of SurfacePoint would run
   // its member initialisers over ~62 KB per level first. About 135 KB of stack in all, once
