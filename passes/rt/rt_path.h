@@ -12,8 +12,9 @@ namespace diptych {
 // times). Either way a row's paths go in chunks of PathTracer::kMaxPaths: their camera rays as
 // one coherent Embree stream (CameraRays::intersectRays), then the chunk vertex by vertex
 // (PathTracer's wavefront: each level's hits and shadow rays as streams). 0.81x the CPU time
-// of path-by-path tracing on whitted 640x480, 0.86x on cornell 320x240; the stream kernels may round a
-// camera hit's last bits differently from the single-ray ones (docs/reference-renderers.md).
+// of path-by-path tracing on whitted 640x480, 0.86x on cornell 320x240; the stream kernels
+// may round a camera hit's last bits differently from the single-ray ones
+// (docs/reference-renderers.md).
 // Each pixel keeps a running mean and variance (Welford, "Note on a Method for Calculating
 // Corrected Sums of Squares and Products", Technometrics 1962) in double precision.
 // Every sample's random sequence depends only on (pixel, pass, seed): reproducible.
