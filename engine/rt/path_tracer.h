@@ -79,21 +79,22 @@ class PathTracer {
   // each path's arithmetic is radiance()'s, in its order. firstHits: the camera rays' hits
   // (CameraRays, which a caller traces as one coherent stream; null: a miss). rngs: each
   // path's sequence, advanced as radiance() advances it. Embree's stream kernels may round a
-  // hit's last bits differently from its single-ray ones (docs/ray-tracing.md).
+  // hit's last bits differently from its single-ray ones (docs/reference-renderers.md,
+  // "Progressive rendering").
   static constexpr std::size_t kMaxPaths = 256;
   void radiance(std::span<const Ray> cameraRays, std::span<const Hit* const> firstHits,
                 std::span<PathRng> rngs, float coneSpread, std::span<PathSample> out) const;
   const PathSettings& settings() const { return settings_; }
 
  private:
-  // Next-event estimation at p: per scene light, the term its shadow ray (added to `shadow`
-  // where it is traced) lets through; the caller sums the unoccluded ones in light order.
   struct LightTerm;
   class ShadowStream;
   struct PathState;
   // The bounce after vertex p at `depth` (BSDF sampling, cones, volume, Russian roulette):
   // false where the path ends there.
   bool scatter(const SurfacePoint& p, int depth, PathRng& rng, PathState& path) const;
+  // Next-event estimation at p: per scene light, the term its shadow ray (added to `shadow`
+  // where it is traced) lets through; the caller sums the unoccluded ones in light order.
   void nextEventTerms(const SurfacePoint& p, const vec3& v, PathRng& rng, LightTerm* terms,
                       std::uint32_t& rays, ShadowStream& shadow) const;
   const Scene& scene_;
