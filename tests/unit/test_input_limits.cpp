@@ -62,7 +62,10 @@ TEST(InputFile, ReadsARegularFileAndRefusesEverythingElse) {
   fs::remove(dir / "link.json");
   fs::create_symlink(dir / "ok.json", dir / "link.json");
   EXPECT_EQ(readInputFile(dir / "link.json", 100), "{\"a\": 1}");
-  // A FIFO would block the open() itself.
+  // A FIFO would block the open() itself. Removed first, as the links above: the scratch
+  // directory is named by the pid, and a reused pid finds an earlier run's FIFO there (EEXIST
+  // failed a CI run).
+  fs::remove(dir / "fifo");
   ASSERT_EQ(mkfifo((dir / "fifo").c_str(), 0600), 0);
   EXPECT_NE(errorOf([&] { readInputFile(dir / "fifo", 100); }).find("not a regular file"),
             std::string::npos);
