@@ -334,7 +334,6 @@ void PathTracer::radiance(std::span<const Ray> cameraRays, std::span<const Hit* 
     }
     terms.assign(live * lights, LightTerm{});
     ShadowStream shadow(rt_, depth == 1);
-    bool shaded[kMaxPaths] = {};
     for (std::size_t k = 0; k < live; ++k) {
       PathState& path = paths[slot[k]];
       PathSample& o = out[slot[k]];
@@ -358,12 +357,11 @@ void PathTracer::radiance(std::span<const Ray> cameraRays, std::span<const Hit* 
         p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,
                                      coneUvLod(world_, p, ray.direction, path.cone.width));
       }
-      shaded[k] = true;
       nextEventTerms(p, -ray.direction, rngs[slot[k]], terms.data() + k * lights, o.rays, shadow);
     }
     shadow.flush();
     for (std::size_t k = 0; k < live; ++k) {
-      if (!shaded[k]) continue;
+      if (!hits[k]) continue;  // ended at the environment above
       const std::size_t i = slot[k];
       const SurfacePoint& p = *point(k);
       // The unoccluded terms in light order, as one path's loop sums them.
