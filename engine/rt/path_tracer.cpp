@@ -10,6 +10,7 @@
 #include "engine/core/check.h"
 #include "engine/rt/camera_rays.h"
 #include "engine/rt/light_sampling.h"
+#include "engine/rt/occlusion_stream.h"
 #include "engine/rt/path_pbr.h"
 #include "engine/rt/ray_cone.h"
 #include "engine/rt/shadow_rays.h"
@@ -124,31 +125,16 @@ struct PathTracer::LightTerm {
   bool lit = false;  // formed, and its shadow ray (if any) unoccluded
 };
 
-// The shadow rays of a level of paths, traced as Embree streams (rtcOccluded1M) of kRays; each
-// occluded ray unlights its term.
-class PathTracer::ShadowStream {
+// The shadow rays of a level of paths, traced as Embree streams (OcclusionStream). A ray's
+// owner is its term's `lit`, which an occluded ray clears.
+struct ClearIfOccluded {
+  void operator()(bool* lit, bool visible) const {
+    if (!visible) *lit = false;
+  }
+};
+class PathTracer::ShadowStream : public OcclusionStream<bool*, ClearIfOccluded> {
  public:
-  ShadowStream(const RtScene& rt, bool coherent) : rt_(rt), coherent_(coherent) {}
-  void add(const OcclusionRay& r, LightTerm& term) {
-    rays_[filled_] = toEmbreeRay(r);
-    owner_[filled_] = &term;
-    if (++filled_ == kRays) flush();
-  }
-  void flush() {
-    if (filled_ == 0) return;
-    rt_.occludedTile({rays_, filled_}, coherent_);
-    for (std::size_t i = 0; i < filled_; ++i)
-      if (rays_[i].tfar < 0.f) owner_[i]->lit = false;  // Embree's tfar = -inf on a hit
-    filled_ = 0;
-  }
-
- private:
-  static constexpr std::size_t kRays = 256;  // as traceShadowRays' tiles
-  const RtScene& rt_;
-  bool coherent_;
-  RTCRay rays_[kRays];  // RTC_ALIGN(16), as rtcOccluded1M requires
-  LightTerm* owner_[kRays];
-  std::size_t filled_ = 0;
+  ShadowStream(const RtScene& rt, bool coherent) : OcclusionStream(rt, coherent, {}) {}
 };
 
 void PathTracer::nextEventTerms(const SurfacePoint& p, const vec3& v, PathRng& rng,
@@ -165,7 +151,7 @@ void PathTracer::nextEventTerms(const SurfacePoint& p, const vec3& v, PathRng& r
     term.lit = true;
     if (r.tnear > r.tfar) return;
     ++rays;
-    shadow.add(r, term);
+    shadow.add(r, &term.lit);
   };
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     const Light& light = scene_.lights[i];

@@ -11,6 +11,7 @@
 
 #include "engine/core/error.h"
 #include "engine/rt/light_sampling.h"
+#include "engine/rt/occlusion_stream.h"
 #include "engine/rt/ray_offset.h"
 #include "engine/scene/analytic_hit.h"
 
@@ -72,10 +73,6 @@ class ReceiverRays {
   vec3 origin_[2];
   bool known_[2] = {false, false};
 };
-
-// Rays per Embree stream call: Embree's own tutorials trace 8x8 tiles; 256 rays amortise the
-// stream setup and still fit a per-thread stack buffer (48 bytes each).
-constexpr std::size_t kTileRays = 256;
 
 }  // namespace
 
@@ -156,35 +153,23 @@ std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lig
     if (!light.castsShadows) continue;  // every ray inactive: visible
     const int count = shadowRaysPerReceiver(light, areaSamples);
     float* out = visibility.data() + l * n;
-    // Each task generates its receivers' rays straight into a stack tile, traces the tile as a
-    // coherent stream (neighbouring receivers are neighbouring pixels, all aimed at one light)
-    // and counts the unoccluded ones: no per-frame ray or result arrays, no second pass.
-    const std::size_t grain = std::max<std::size_t>(1, kTileRays / std::size_t(count));
+    // Each task generates its receivers' rays straight into a stream (neighbouring receivers
+    // are neighbouring pixels, all aimed at one light) and counts the unoccluded ones: no
+    // per-frame ray or result arrays, no second pass.
+    const std::size_t grain = std::max<std::size_t>(1, kOcclusionStreamRays / std::size_t(count));
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                        RTCRay tile[kTileRays];
-                        std::uint32_t owner[kTileRays];  // receiver of each ray in the tile
-                        bool active[kTileRays];
-                        std::size_t filled = 0;
                         std::vector<int> visible(r.size(), 0);
-                        const auto flush = [&] {
-                          rt.occludedTile({tile, filled}, true);
-                          for (std::size_t i = 0; i < filled; ++i)
-                            visible[owner[i]] += active[i] && tile[i].tfar < 0.f ? 0 : 1;
-                          filled = 0;
-                        };
+                        const auto countVisible = [&](std::uint32_t p, bool v) { visible[p] += v; };
+                        OcclusionStream<std::uint32_t, decltype(countVisible)> stream(rt, true,
+                                                                                      countVisible);
                         for (std::size_t p = r.begin(); p < r.end(); ++p) {
                           ReceiverRays rays(light, receivers[p]);
                           const std::uint32_t seed = seeds.empty() ? std::uint32_t(p) : seeds[p];
-                          for (int s = 0; s < count; ++s) {
-                            const OcclusionRay ray = rays.sample(s, count, seed);
-                            tile[filled] = toEmbreeRay(ray);
-                            owner[filled] = std::uint32_t(p - r.begin());
-                            active[filled] = ray.tnear <= ray.tfar;
-                            if (++filled == kTileRays) flush();
-                          }
+                          for (int s = 0; s < count; ++s)
+                            stream.add(rays.sample(s, count, seed), std::uint32_t(p - r.begin()));
                         }
-                        if (filled > 0) flush();
+                        stream.flush();
                         for (std::size_t p = r.begin(); p < r.end(); ++p)
                           out[p] = float(visible[p - r.begin()]) / float(count);
                       });
@@ -202,16 +187,9 @@ void traceShadowTile(const RtScene& rt, std::span<const Light> lights,
   // Counts first (exact in float far beyond any ray count here), fractions at the end: the
   // same float(visible) / float(count) as traceShadowRays.
   std::fill_n(visibility.begin(), n * lightCount, 0.f);
-  RTCRay tile[kTileRays];
-  std::uint32_t owner[kTileRays];  // index into visibility of each ray's receiver and light
-  bool active[kTileRays];
-  std::size_t filled = 0;
-  const auto flush = [&] {
-    rt.occludedTile({tile, filled}, true);
-    for (std::size_t i = 0; i < filled; ++i)
-      visibility[owner[i]] += active[i] && tile[i].tfar < 0.f ? 0.f : 1.f;
-    filled = 0;
-  };
+  // The owner of a ray: the index into visibility of its receiver and light.
+  const auto countVisible = [&](std::uint32_t slot, bool visible) { visibility[slot] += visible; };
+  OcclusionStream<std::uint32_t, decltype(countVisible)> stream(rt, true, countVisible);
   for (std::size_t p = 0; p < n; ++p) {
     const std::uint32_t seed = seeds.empty() ? std::uint32_t(p) : seeds[p];
     for (std::size_t l = 0; l < lightCount; ++l) {
@@ -223,16 +201,10 @@ void traceShadowTile(const RtScene& rt, std::span<const Light> lights,
       }
       const int count = shadowRaysPerReceiver(light, areaSamples);
       ReceiverRays rays(light, receivers[p]);
-      for (int s = 0; s < count; ++s) {
-        const OcclusionRay ray = rays.sample(s, count, seed);
-        tile[filled] = toEmbreeRay(ray);
-        owner[filled] = std::uint32_t(slot);
-        active[filled] = ray.tnear <= ray.tfar;
-        if (++filled == kTileRays) flush();
-      }
+      for (int s = 0; s < count; ++s) stream.add(rays.sample(s, count, seed), std::uint32_t(slot));
     }
   }
-  if (filled > 0) flush();
+  stream.flush();
   for (std::size_t p = 0; p < n; ++p)
     for (std::size_t l = 0; l < lightCount; ++l)
       if (lights[l].castsShadows)

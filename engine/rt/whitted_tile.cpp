@@ -21,6 +21,7 @@
 
 #include "engine/core/check.h"
 #include "engine/rt/light_sampling.h"
+#include "engine/rt/occlusion_stream.h"
 #include "engine/rt/shadow_rays.h"
 #include "engine/rt/whitted.h"
 #include "engine/scene/environment.h"
@@ -28,9 +29,6 @@
 
 namespace diptych {
 namespace {
-
-// Shadow rays per stream call, as traceShadowRays' tiles (48 bytes each on the stack).
-constexpr std::size_t kStreamRays = 256;
 
 // A light whose response at a point is not zero: what its visibility will multiply.
 struct PendingLight {
@@ -72,17 +70,11 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
   bool shaded[kMaxTile] = {};
   bool coned[kMaxTile] = {};  // shade with cones[i] (texture LOD)
 
-  RTCRay stream[kStreamRays];  // RTC_ALIGN(16), as rtcOccluded1M requires
-  std::uint32_t owner[kStreamRays];
-  bool active[kStreamRays];
-  std::size_t filled = 0;
-  const auto flush = [&] {
-    rt_.occludedTile({stream, filled}, true);
-    // lightVisibility's count: an inactive ray (tnear > tfar) is visible.
-    for (std::size_t i = 0; i < filled; ++i)
-      pending[owner[i]].visible += active[i] && stream[i].tfar < 0.f ? 0 : 1;
-    filled = 0;
+  // lightVisibility's count per pending light (owner: its index in pending).
+  const auto countVisible = [&](std::uint32_t owner, bool visible) {
+    pending[owner].visible += visible;
   };
+  OcclusionStream<std::uint32_t, decltype(countVisible)> stream(rt_, true, countVisible);
 
   for (std::size_t i = 0; i < n; ++i) {
     const Ray& ray = rays[i];
@@ -104,16 +96,12 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
       shading::LightSample s;
       if (!lightTerm(l, p, -ray.direction, s, q.response, q.count)) continue;
       q.radiance = s.radiance;
-      for (int k = 0; k < q.count; ++k) {
-        const OcclusionRay r = makeShadowSample(scene_.lights[l], receiver, k, q.count, seeds[i]);
-        stream[filled] = toEmbreeRay(r);
-        owner[filled] = std::uint32_t(i * lights + l);
-        active[filled] = r.tnear <= r.tfar;
-        if (++filled == kStreamRays) flush();
-      }
+      for (int k = 0; k < q.count; ++k)
+        stream.add(makeShadowSample(scene_.lights[l], receiver, k, q.count, seeds[i]),
+                   std::uint32_t(i * lights + l));
     }
   }
-  if (filled > 0) flush();
+  stream.flush();
 
   // Every point's direct light, in direct()'s order, before any recursion (see pending).
   vec3 directSum[kMaxTile];

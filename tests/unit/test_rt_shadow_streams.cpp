@@ -2,12 +2,16 @@
 // shadow_rays.cpp); it must give exactly what the single-ray lightVisibility gives for the same
 // receivers and seeds, whatever the tiling (one ray per receiver, or many area samples that
 // straddle tile boundaries); traceShadowTile, rt_shadows' per-row streams, must give exactly
-// what traceShadowRays gives.
+// what traceShadowRays gives. Under them all, OcclusionStream answers each ray as a single
+// rtcOccluded1 would.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 #include "engine/core/error.h"
+#include "engine/rt/occlusion_stream.h"
 #include "engine/rt/shadow_rays.h"
 #include "tests/support/rt_test_geometry.h"
 
@@ -109,4 +113,44 @@ TEST(ShadowStreams, BatchEqualsSingleRayVisibilityForPointAreaAndNonCastingLight
       EXPECT_GT(partial, 20);
     }
   }
+}
+
+// OcclusionStream, the loop under every stream above: each ray answered once, with its own
+// owner, in the order added, as the single-ray query answers it; an inactive ray visible; full
+// streams traced as they fill (more rays than one stream holds), the rest at flush().
+TEST(ShadowStreams, OcclusionStreamAnswersEachRayAsASingleRayQuery) {
+  const ShadowCase k = shadowCase();
+  const WorldGeometry world = flattenScene(k.scene);
+  RtDevice device;
+  const RtScene rt(device, world);
+  std::vector<OcclusionRay> rays;
+  for (const ShadowReceiver& r : k.receivers)
+    for (const Light& light : k.lights) rays.push_back(makeShadowRay(light, r));
+  ASSERT_GT(rays.size(), 2 * kOcclusionStreamRays);
+  std::vector<std::pair<std::size_t, bool>> answers;
+  const auto record = [&](std::size_t owner, bool visible) {
+    answers.emplace_back(owner, visible);
+  };
+  OcclusionStream<std::size_t, decltype(record)> stream(rt, true, record);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    stream.add(rays[i], i);
+    // A full stream is traced when its last ray arrives, not before.
+    ASSERT_EQ(answers.size(), (i + 1) / kOcclusionStreamRays * kOcclusionStreamRays);
+  }
+  stream.flush();
+  ASSERT_EQ(answers.size(), rays.size());
+  int occluded = 0, inactive = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const OcclusionRay& r = rays[i];
+    const bool active = r.tnear <= r.tfar;
+    const bool visible = !active || !rt.occluded(r.origin, r.direction, r.tnear, r.tfar);
+    ASSERT_EQ(answers[i].first, i);
+    ASSERT_EQ(answers[i].second, visible) << "ray " << i;
+    occluded += visible ? 0 : 1;
+    inactive += active ? 0 : 1;
+  }
+  EXPECT_GT(occluded, 50);                       // both answers are exercised
+  EXPECT_EQ(inactive, int(k.receivers.size()));  // the light that casts no shadows
+  stream.flush();                                // nothing pending: no answer twice
+  EXPECT_EQ(answers.size(), rays.size());
 }
