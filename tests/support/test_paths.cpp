@@ -2,6 +2,9 @@
 
 #include <unistd.h>
 
+#include <mutex>
+#include <set>
+
 namespace diptych::testing {
 std::string samplesDir() {
   return DIPTYCH_SAMPLES_DIR_VALUE;
@@ -21,6 +24,13 @@ namespace diptych::testing {
 std::filesystem::path scratchDir(const std::string& name) {
   const auto dir =
       std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
+  // Emptied at its first use in this process: /tmp keeps earlier runs' folders, and a reused
+  // pid would otherwise find their files (a stale FIFO once failed mkfifo with EEXIST in CI).
+  // Later calls in the same process keep what this run wrote.
+  static std::mutex mutex;
+  static std::set<std::string> emptied;
+  const std::lock_guard lock(mutex);
+  if (emptied.insert(name).second) std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
 }

@@ -12,6 +12,8 @@ std::string testsDir();         // tests/
 std::string sourceShaderDir();  // shaders/
 // A scratch folder for files a test writes: temp/NAME-PID. CTest runs each test case in its own
 // process, in parallel, so a fixed folder would let two cases overwrite each other's files.
+// The folder starts empty at its first use in a process (not later ones: a case may call it
+// twice for the same files).
 std::filesystem::path scratchDir(const std::string& name);
 }  // namespace diptych::testing
 

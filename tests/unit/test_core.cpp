@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
@@ -16,6 +19,23 @@ TEST(Timing, MedianOfOddAndEvenCounts) {
   EXPECT_DOUBLE_EQ(summarize({5, 1, 3}).median, 3);
   EXPECT_DOUBLE_EQ(summarize({4, 1, 3, 2}).median, 2.5);
   EXPECT_EQ(summarize({}).samples, 0);
+}
+
+// A reused pid must not find an earlier run's files in its scratch folder (a stale FIFO failed
+// mkfifo in CI): the first use in a process empties it, later uses keep this run's files.
+TEST(ScratchDir, StartsEmptyAtItsFirstUseInAProcess) {
+  namespace fs = std::filesystem;
+  const std::string name = "diptych_scratch_dir_test";
+  const fs::path expected = fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
+  fs::create_directories(expected / "old");
+  std::ofstream(expected / "stale.txt") << "an earlier run";
+  const fs::path dir = ::diptych::testing::scratchDir(name);
+  ASSERT_EQ(dir, expected);
+  EXPECT_TRUE(fs::is_directory(dir));
+  EXPECT_TRUE(fs::is_empty(dir));
+  std::ofstream(dir / "mine.txt") << "this run";
+  EXPECT_EQ(::diptych::testing::scratchDir(name), dir);
+  EXPECT_TRUE(fs::exists(dir / "mine.txt"));
 }
 
 TEST(Image, ExrRoundTripIsExactAndPngIsSrgbEncoded) {

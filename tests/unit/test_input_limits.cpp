@@ -54,18 +54,14 @@ TEST(InputFile, ReadsARegularFileAndRefusesEverythingElse) {
   EXPECT_NE(errorOf([&] { readInputFile("/dev/zero", 100); }).find("not a regular file"),
             std::string::npos);
   // A link is judged by its target: a link to /dev/zero is refused, a link to a file is read.
-  fs::remove(dir / "zero.json");
   fs::create_symlink("/dev/zero", dir / "zero.json");
   const std::string viaLink = errorOf([&] { readInputFile(dir / "zero.json", 100); });
   EXPECT_NE(viaLink.find("zero.json"), std::string::npos) << viaLink;
   EXPECT_NE(viaLink.find("not a regular file"), std::string::npos) << viaLink;
-  fs::remove(dir / "link.json");
   fs::create_symlink(dir / "ok.json", dir / "link.json");
   EXPECT_EQ(readInputFile(dir / "link.json", 100), "{\"a\": 1}");
-  // A FIFO would block the open() itself. Removed first, as the links above: the scratch
-  // directory is named by the pid, and a reused pid finds an earlier run's FIFO there (EEXIST
-  // failed a CI run).
-  fs::remove(dir / "fifo");
+  // A FIFO would block the open() itself. (The scratch folder starts empty, so no earlier
+  // run's FIFO or links are there: scratchDir.)
   ASSERT_EQ(mkfifo((dir / "fifo").c_str(), 0600), 0);
   EXPECT_NE(errorOf([&] { readInputFile(dir / "fifo", 100); }).find("not a regular file"),
             std::string::npos);
