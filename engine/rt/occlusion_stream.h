@@ -35,7 +35,9 @@ class OcclusionStream {
   OcclusionStream& operator=(const OcclusionStream&) = delete;
 
   void add(const OcclusionRay& ray, Owner owner) {
-    rays_[filled_] = toEmbreeRay(ray);
+    // In place (rt_scene.h): a copied temporary stalled on store forwarding, about a fifth of
+    // the Whitted tiles' own time (perf annotate).
+    setEmbreeRay(rays_[filled_], ray);
     owners_[filled_] = owner;
     active_[filled_] = ray.tnear <= ray.tfar;
     if (++filled_ == kRays) flush();

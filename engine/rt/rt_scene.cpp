@@ -187,7 +187,7 @@ std::optional<Hit> RtScene::intersect(const Ray& ray, float tnear, float tfar,
 bool RtScene::intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool wantNormal) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  // Field by field, not `RTCRayHit rh{}; rh.ray = toEmbreeRay(...)`: that built the ray in
+  // Field by field, not built in a temporary and assigned: that built the ray in
   // 4-byte stores and copied it in 16-byte loads, two store-forwarding stalls per ray (perf
   // annotate, issue 14). Embree reads only the ray and writes the hit (rtcIntersect1 docs).
   RTCRayHit rh;
@@ -300,7 +300,7 @@ void RtScene::occludedBatch(std::span<const OcclusionRay> rays, std::span<std::u
         RTCRay tile[kTileRays];  // RTCRay is RTC_ALIGN(16), as rtcOccluded1M requires
         for (std::size_t begin = range.begin(); begin < range.end(); begin += kTileRays) {
           const std::size_t count = std::min(kTileRays, range.end() - begin);
-          for (std::size_t i = 0; i < count; ++i) tile[i] = toEmbreeRay(rays[begin + i]);
+          for (std::size_t i = 0; i < count; ++i) setEmbreeRay(tile[i], rays[begin + i]);
           occludedTile({tile, count}, coherent);
           // An inactive ray (tnear > tfar) is untouched by Embree; it reports "not
           // occluded".
