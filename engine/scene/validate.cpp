@@ -172,7 +172,11 @@ void checkMaterial(const Material& m, std::size_t index, const Scene& scene,
   check.nonNegative(m.attenuationColor, place + " attenuation_color");
   check.bounded(m.attenuationDistance, kMaxCoordinate, place + " attenuation_distance");
   check.finiteValue(m.ior, place + " ior");
-  if (m.ior <= 0.f) check.fail(place + " ior", "must be positive");
+  // 0 is KHR_materials_ior's specular-glossiness compatibility mode, an infinite IOR: the F0
+  // formula ((n-1)/(n+1))^2 gives its limit 1 at n = 0, and refractLecture sends an infinite or
+  // zero eta straight on (with weight 0: the Fresnel term is 1).
+  if (m.ior < 0.f)
+    check.fail(place + " ior", "must be positive, or 0 (KHR_materials_ior: an infinite IOR)");
   check.finiteValue(m.alpha, place + " alpha");
   check.finiteValue(m.alphaCutoff, place + " alphaCutoff");
   for (int t : {m.colorTexture, m.emissionTexture})

@@ -271,8 +271,14 @@ Material convertMaterial(const tinygltf::Material& src, const std::string& place
 
   if (const tinygltf::Value* ext = extension(src, "KHR_materials_ior")) {
     m.ior = valueNumber(*ext, "ior", 1.5f);
-    // The extension's schema has a minimum of 1; below it (but positive: validate.cpp) the value
-    // is used as given (a bubble in water is n < 1 relative to its outside), and said.
+    // Checked here, before the F0 formula below divides by ior + 1: a negative value would
+    // surface as a non-finite ks, naming the wrong field.
+    if (!(m.ior >= 0.f) || !std::isfinite(m.ior))
+      throw InputError(textures.file(), place + ".extensions.KHR_materials_ior.ior",
+                       "must be positive, or 0 (the extension's infinite IOR)");
+    // The extension's schema has a minimum of 1, and 0 as a special case (the specular-glossiness
+    // compatibility mode: an infinite IOR, Fresnel 1 at every angle; validate.cpp). Between them
+    // the value is used as given (a bubble in water is n < 1 relative to its outside), and said.
     if (m.ior > 0.f && m.ior < 1.f)
       textures.warn(place + ".extensions.KHR_materials_ior.ior",
                     formatBound(m.ior) + " is below the extension's minimum of 1; used as given");
