@@ -9,6 +9,7 @@
 #include "passes/raster/env_sphere.h"
 #include "passes/raster/gbuffer.h"
 #include "passes/raster/planar_mirror.h"
+#include "passes/raster/planar_shadows.h"
 #include "passes/raster/shadow_map.h"
 #include "passes/raster/sorted_blend.h"
 #include "passes/raster/texture_anisotropic.h"
@@ -58,6 +59,10 @@ const PassRegistry& builtinPasses() {
                      {"shadow-map-2048-adaptive", "resolution=2048,bias=adaptive"},
                      {"shadow-map-4096-slope-pcss",
                       "resolution=4096,bias=slope,factor=2,units=2,filter=pcss"}}});
+    r.add<PlanarShadowsPass>(
+        {.name = "planar_shadows",
+         .slot = "visibility",
+         .summary = "light visibility by shadow polygons projected onto planar receivers (GL)"});
     r.add<NoShadowsPass>({.name = "no_shadows",
                           .slot = "visibility",
                           .summary = "no shadows: V_i = 1 everywhere, the baseline (CPU)"});

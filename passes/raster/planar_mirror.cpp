@@ -1,7 +1,6 @@
 #include "passes/raster/planar_mirror.h"
 
 #include <algorithm>
-#include <cfloat>
 
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
@@ -18,7 +17,7 @@ struct MirrorCache {
   gl::Texture color, depth;  // the mirrored render, frame size
   FullscreenResolve resolve{gl::loadProgram({"fullscreen.vert", "planar_mirror.frag"})};
   bool found = false;
-  std::vector<MirrorPlane> mirrors;
+  std::vector<PlanarInstance> mirrors;
   void ensure(int width, int height) {
     if (color && color.width() == width && color.height() == height) return;
     color = gl::Texture::create2D(gl::TextureFormat::RGBA32F, width, height);
@@ -30,35 +29,10 @@ struct MirrorCache {
 
 }  // namespace
 
-std::vector<MirrorPlane> findPlanarMirrors(const Scene& scene, const WorldGeometry& world) {
-  std::vector<MirrorPlane> mirrors;
-  for (const WorldMesh& mesh : world.meshes) {
-    if (mesh.indices.empty() || !shading::materialHasReflection(scene.material(mesh.material)))
-      continue;
-    vec3 best(0.f);  // cross product of the largest triangle: the best-conditioned normal
-    vec3 anchor(0.f);
-    Aabb box;
-    float magnitude = 0.f;
-    for (const vec3& p : mesh.positions) {
-      box.extend(p);
-      magnitude = std::max({magnitude, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    }
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-      const vec3 p0 = mesh.positions[mesh.indices[t]];
-      const vec3 c = glm::cross(mesh.positions[mesh.indices[t + 1]] - p0,
-                                mesh.positions[mesh.indices[t + 2]] - p0);
-      if (glm::dot(c, c) > glm::dot(best, best)) best = c, anchor = p0;
-    }
-    if (!(glm::dot(best, best) > 0.f)) continue;
-    const vec3 n = glm::normalize(best);
-    const float d = -glm::dot(n, anchor);
-    const float tolerance = 64.f * FLT_EPSILON * (magnitude + glm::length(box.hi - box.lo));
-    bool planar = true;
-    for (const vec3& p : mesh.positions)
-      planar = planar && std::abs(glm::dot(n, p) + d) <= tolerance;
-    if (planar) mirrors.push_back({mesh.instance, n, d});
-  }
-  return mirrors;
+std::vector<PlanarInstance> findPlanarMirrors(const Scene& scene, const WorldGeometry& world) {
+  return findPlanarInstances(world, [&](const WorldMesh& mesh) {
+    return shading::materialHasReflection(scene.material(mesh.material));
+  });
 }
 
 mat4 reflectionMatrix(const vec3& n, float d) {
@@ -91,7 +65,7 @@ void PlanarMirrorPass::execute(PassContext& c) {
   const gl::ForwardView eyeView = gl::cameraView(camera, float(out.width()) / float(out.height()));
 
   clearToZero(out);
-  for (const MirrorPlane& mirror : cache.mirrors) {
+  for (const PlanarInstance& mirror : cache.mirrors) {
     // Orient the plane toward the eye: the reflected rays travel on the eye's side.
     const float side = glm::dot(mirror.normal, camera.position) + mirror.offset;
     if (side == 0.f) continue;  // eye in the mirror's plane: the mirror is seen edge-on

@@ -3,6 +3,7 @@
 
 #include "engine/graph/pass.h"
 #include "engine/scene/world_geometry.h"
+#include "passes/raster/planar_instances.h"
 #include "passes/slots.h"
 
 namespace diptych {
@@ -27,17 +28,8 @@ class PlanarMirrorPass : public Pass {
   bool textureLod_ = true;
 };
 
-struct MirrorPlane {
-  int instance = -1;
-  vec3 normal{0.f};    // unit, the face normal of the largest triangle (either side may face you)
-  float offset = 0.f;  // plane: dot(normal, x) + offset = 0
-};
-
-// The planar reflective instances. A mesh is planar when every vertex lies within
-// 64 ulp-scale units of the plane of its largest triangle: 64 FLT_EPSILON times the mesh's
-// largest coordinate magnitude plus its extent (a relative tolerance: the rounding of the
-// flattened world positions scales with their magnitude; no world-space epsilon).
-std::vector<MirrorPlane> findPlanarMirrors(const Scene& scene, const WorldGeometry& world);
+// The planar reflective instances (findPlanarInstances over the meshes whose material reflects).
+std::vector<PlanarInstance> findPlanarMirrors(const Scene& scene, const WorldGeometry& world);
 
 // Affine reflection about the plane dot(n, x) + d = 0 (n unit): x' = x - 2 (n.x + d) n.
 mat4 reflectionMatrix(const vec3& n, float d);
