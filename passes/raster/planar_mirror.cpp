@@ -1,7 +1,5 @@
 #include "passes/raster/planar_mirror.h"
 
-#include <algorithm>
-
 #include "engine/gl/forward_renderer.h"
 #include "engine/gl/shader.h"
 #include "engine/graph/render_world.h"

@@ -19,11 +19,6 @@ struct PlanarShadowsGl {
   std::vector<PlanarInstance> receivers;
 };
 
-bool castsShadow(const Scene& scene, int material) {
-  return material < 0 || material >= int(scene.materials.size()) ||
-         scene.materials[std::size_t(material)].castsShadows;
-}
-
 // The light as a homogeneous point: its centre, or for a directional light the direction toward
 // it at infinity.
 vec4 homogeneousLight(const Light& light) {
@@ -83,19 +78,19 @@ void PlanarShadowsPass::execute(PassContext& c) {
     if (std::size_t(layer) >= scene.lights.size() || !scene.lights[std::size_t(layer)].castsShadows)
       continue;
     const vec4 light = homogeneousLight(scene.lights[std::size_t(layer)]);
+    state.program.set("uLight", light);
     for (const PlanarInstance& receiver : state.receivers) {
       // Orient the plane toward the light: casters on the light's side, P.L > 0.
       vec4 plane(receiver.normal, receiver.offset);
       const float side = glm::dot(plane, light);
       if (side == 0.f) continue;  // the light in the receiver's plane lights none of it
       if (side < 0.f) plane = -plane;
-      state.program.set("uLight", light);
       state.program.set("uPlane", plane);
       state.program.set("uTolerance", receiver.tolerance);
       state.program.set("uReceiver", receiver.instance);
       for (const gl::GlMeshRange& mesh : buffers.meshes) {
         if (mesh.triangleCount == 0 || mesh.instance == receiver.instance ||
-            !castsShadow(scene, mesh.material))
+            !scene.material(mesh.material).castsShadows)
           continue;
         gl::glDrawElements(GL_TRIANGLES, GLsizei(3 * mesh.triangleCount), GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(std::uintptr_t(mesh.firstTriangle) * 12));

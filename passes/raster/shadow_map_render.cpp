@@ -19,15 +19,6 @@ ShadowMapGl::ShadowMapGl()
       depthFbo_(gl::Framebuffer::create()),
       poisson_(poissonDisk(64)) {}
 
-namespace {
-
-bool castsShadow(const Scene& scene, int material) {
-  return material < 0 || material >= int(scene.materials.size()) ||
-         scene.materials[std::size_t(material)].castsShadows;
-}
-
-}  // namespace
-
 const gl::Texture& ShadowMapGl::mapsFor(RenderWorld& world, const std::vector<LightFrustum>& frusta,
                                         const Settings& settings, Built& built) {
   const int layers = std::max(1, totalLayers(frusta));
@@ -52,7 +43,7 @@ const gl::Texture& ShadowMapGl::mapsFor(RenderWorld& world, const std::vector<Li
   const gl::GlSceneBuffers& scene = world.glScene();
   const gl::GlShadingBuffers& shading = world.glShading();
   for (const gl::GlMeshRange& mesh : scene.meshes)
-    key.push_back(castsShadow(world.scene(), mesh.material)
+    key.push_back(world.scene().material(mesh.material).castsShadows
                       ? 1.f + float(int(shading.alphaDraw(mesh.material)))
                       : 0.f);
   const bool everyFrame = settings.update == Update::EveryFrame;
@@ -140,7 +131,7 @@ int ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>&
       // per-view culling. Without it every mesh went through every face (docs/benchmarks.md).
       for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         const gl::GlMeshRange& mesh = scene.meshes[m];
-        if (mesh.triangleCount == 0 || !castsShadow(source, mesh.material)) continue;
+        if (mesh.triangleCount == 0 || !source.material(mesh.material).castsShadows) continue;
         if (m < bounds.size() && boxOutsideFrustum(bounds[m], f.viewProj[std::size_t(i)])) continue;
         const gl::AlphaDraw mode = shading.alphaDraw(mesh.material);
         if (mode == gl::AlphaDraw::Hidden) continue;
