@@ -40,10 +40,8 @@ vec2 stratifiedSample(int index, int count, std::uint32_t seed) {
   const int k = std::max(1, int(std::lround(std::sqrt(double(count)))));
   const std::uint32_t h1 = pcgHash(seed ^ pcgHash(std::uint32_t(index)));
   const std::uint32_t h2 = pcgHash(h1);
-  // 24 high bits -> [0,1): exactly representable, never 1.
-  const float jx = float(h1 >> 8) * (1.f / 16777216.f);
-  const float jy = float(h2 >> 8) * (1.f / 16777216.f);
-  return vec2((float(index % k) + jx) / float(k), (float(index / k % k) + jy) / float(k));
+  return vec2((float(index % k) + unitFloat(h1)) / float(k),
+              (float(index / k % k) + unitFloat(h2)) / float(k));
 }
 
 vec3 areaLightPoint(const Light& l, vec2 s, const vec3& receiver) {

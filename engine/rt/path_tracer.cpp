@@ -110,7 +110,7 @@ float PathRng::next() {
   // LCG step makes the outputs one PCG stream.
   const std::uint32_t out = pcgHash(state_);
   state_ = state_ * 747796405u + 2891336453u;
-  return float(out >> 8) * (1.f / 16777216.f);  // 24 bits: exact, never 1
+  return unitFloat(out);
 }
 
 PathTracer::PathTracer(const Scene& scene, const WorldGeometry& world, const RtScene& rt,
@@ -143,7 +143,7 @@ void PathTracer::nextEventTerms(const SurfacePoint& p, const vec3& v, PathRng& r
   const bool lecture = m.model != shading::SHADING_MODEL_GLTF;
   if (lecture && !(m.kd > 0.f) && !(m.ks > 0.f)) return;  // delta lobes only
   const vec3& n = p.shadingNormal;
-  const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
+  const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude, p.time};
   // The term is lit unless its shadow ray is traced and occluded; an inactive ray
   // (castsShadows false, or degenerate) is not traced and lets the term through.
   const auto formed = [&](LightTerm& term, const vec3& contribution, const OcclusionRay& r) {
@@ -338,6 +338,7 @@ void PathTracer::radiance(std::span<const Ray> cameraRays, std::span<const Hit* 
       SurfacePoint& p = *::new (static_cast<void*>(point(k))) SurfacePoint(makeSurfacePoint(
           scene_, world_, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
           ray.direction));
+      atShutterTime(p, world_, ray.time);
       if (path.coneLive) {  // RTG eq. 20.23 at the cone's width here, as WhittedTracer::radiance
         path.cone.width += path.cone.spread * hit->t * glm::length(ray.direction);
         p.resolved = resolveMaterial(scene_, scene_.material(p.material), p.uv,

@@ -50,7 +50,7 @@ RayProbe probeSecondaryRays(const Scene& scene, const WorldGeometry& world, cons
       const SurfacePoint p = makeSurfacePoint(
           scene, world, {hit->instance, hit->primitive, hit->u, hit->v, hit->analytic},
           ray.direction);
-      const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
+      const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude, p.time};
       for (std::size_t l = 0; l < lights; ++l) {
         const OcclusionRay s = makeShadowRay(scene.lights[l], receiver);
         if (s.tnear > s.tfar) continue;

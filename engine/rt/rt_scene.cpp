@@ -77,7 +77,7 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
     std::vector<bool> eligible(world.meshes.size());
     for (std::size_t id = 0; id < world.meshes.size(); ++id) {
       const WorldMesh& m = world.meshes[id];
-      eligible[id] = !(m.analytic && options.analytic) &&
+      eligible[id] = !(m.analytic && options.analytic) && m.motion == vec3(0.f) &&
                      scene->material(m.material).alphaMode != AlphaMode::Mask;
     }
     groups = rt_detail::sharedMeshGroups(*scene, world, eligible);
@@ -85,6 +85,25 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
       for (const std::size_t id : groups[g]) shared[id] = int(g);
   }
   bool warnedNoFilters = false;
+  // A moving instance's geometry goes into a prototype of its own, in the world space of
+  // kFrameTime, placed by a two-step motion-blurred instance (rt_scene_instancing.h); every
+  // other geometry goes into the scene itself.
+  const auto attach = [&](RTCGeometry geom, std::size_t id) {
+    const WorldMesh& mesh = world.meshes[id];
+    if (mesh.motion == vec3(0.f)) {
+      rtcAttachGeometryByID(scene_, geom, unsigned(id));
+      rtcReleaseGeometry(geom);  // the scene holds its own reference
+      return;
+    }
+    RTCScene proto = rt_detail::newSceneOf(device, geom, options.quality, flags,
+                                           "instance " + std::to_string(id));
+    prototypes_.push_back(proto);
+    RTCGeometry inst = rt_detail::newMovingInstanceGeometry(device, proto, mesh.motion);
+    rtcAttachGeometryByID(scene_, inst, unsigned(id));
+    rtcReleaseGeometry(inst);
+    geometry_[id].instanced = true;  // normalToWorld stays the identity: a translation
+    ++moving_;
+  };
   for (std::size_t id = 0; id < world.meshes.size(); ++id) {
     const WorldMesh& mesh = world.meshes[id];
     GeometryData& data = geometry_[id];
@@ -104,8 +123,7 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
       if (data.analytic->sdf) data.sdfStats = std::make_unique<SdfStats>();
       RTCGeometry geom = newAnalyticGeometry(dev, data);
       rtcCommitGeometry(geom);
-      rtcAttachGeometryByID(scene_, geom, unsigned(id));
-      rtcReleaseGeometry(geom);
+      attach(geom, id);
       device.check("adding analytic instance " + std::to_string(id));
       ++analytic_;
       alphaMasked_ += data.alphaMasked ? 1 : 0;  // tested in its own callbacks
@@ -130,8 +148,7 @@ RtScene::RtScene(const RtDevice& device, const WorldGeometry& world, const Scene
       }
     }
     rtcCommitGeometry(geom);
-    rtcAttachGeometryByID(scene_, geom, unsigned(id));
-    rtcReleaseGeometry(geom);  // the scene holds its own reference
+    attach(geom, id);
     device.check("adding instance " + std::to_string(id) + " (" + std::to_string(triangles) +
                  " triangles)");
   }
@@ -191,7 +208,7 @@ bool RtScene::intersect(const Ray& ray, float tnear, float tfar, Hit& hit, bool 
   // 4-byte stores and copied it in 16-byte loads, two store-forwarding stalls per ray (perf
   // annotate, issue 14). Embree reads only the ray and writes the hit (rtcIntersect1 docs).
   RTCRayHit rh;
-  setEmbreeRay(rh.ray, ray.origin, ray.direction, tnear, tfar);
+  setEmbreeRay(rh.ray, ray.origin, ray.direction, tnear, tfar, ray.time);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rh);
@@ -211,7 +228,8 @@ void RtScene::intersectRays(std::span<const Ray> rays, std::span<Hit> hits,
     RTCRayHit tile[kStreamRays];  // RTC_ALIGN(16), as rtcIntersect1M requires
     for (std::size_t i = 0; i < n; ++i) {
       const Ray& r = rays[begin + i];
-      setEmbreeRay(tile[i].ray, r.origin, r.direction, 0.f, std::numeric_limits<float>::infinity());
+      setEmbreeRay(tile[i].ray, r.origin, r.direction, 0.f, std::numeric_limits<float>::infinity(),
+                   r.time);
       // Embree writes the hit only where it finds one: a miss must read as one.
       tile[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
       tile[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -248,12 +266,13 @@ bool RtScene::hitOf(const RTCRayHit& rh, Hit& hit, bool wantNormal) const {
   return true;
 }
 
-bool RtScene::occluded(const vec3& origin, const vec3& direction, float tnear, float tfar) const {
+bool RtScene::occluded(const vec3& origin, const vec3& direction, float tnear, float tfar,
+                       float time) const {
   if (!(tnear <= tfar)) return false;  // inactive, as in the batch API
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray;
-  setEmbreeRay(ray, origin, direction, tnear, tfar);
+  setEmbreeRay(ray, origin, direction, tnear, tfar, time);
   rtcOccluded1(scene_, &context, &ray);
   raysTraced_.add(1);
   // Embree sets tfar to -inf on a hit (rtcOccluded1 docs).
@@ -269,7 +288,7 @@ RTCIntersectContextFlags RtScene::streamFlag(bool coherent) const {
   // faster flag there (MetalRoughSpheresNoTextures, 640x480: rt_shadows 31.1 against 37.6 CPU
   // ms, rt_reflection 53.2 against 71.7, same image); on whitted, which has no instances, the
   // coherent flag saves rt_shadows a fifth (22.9 against 28.3): docs/benchmarks.md, session 17.
-  return coherent && instanced_ == 0 ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+  return coherent && instanced_ == 0 && moving_ == 0 ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
                                      : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
 }
 

@@ -34,11 +34,13 @@ struct OcclusionRay {
   vec3 direction{0.f};
   float tnear = 0.f;
   float tfar = 0.f;
+  float time = kFrameTime;  // Ray::time: where moving instances are (camera_math.h)
 };
 
-// Every field of an Embree ray (mask all ones, time 0, id and flags 0, as the Embree 3 docs ask).
+// Every field of an Embree ray (mask all ones, id and flags 0, as the Embree 3 docs ask; time in
+// the shutter interval, which only motion-blurred instances read).
 inline void setEmbreeRay(RTCRay& e, const vec3& origin, const vec3& direction, float tnear,
-                         float tfar) {
+                         float tfar, float time) {
   e.org_x = origin.x;
   e.org_y = origin.y;
   e.org_z = origin.z;
@@ -46,19 +48,19 @@ inline void setEmbreeRay(RTCRay& e, const vec3& origin, const vec3& direction, f
   e.dir_x = direction.x;
   e.dir_y = direction.y;
   e.dir_z = direction.z;
-  e.time = 0.f;
+  e.time = time;
   e.tfar = tfar;
   e.mask = ~0u;
   e.id = 0;
   e.flags = 0;
 }
 
-// The Embree form of an occlusion ray (mask all ones, time 0, as the Embree 3 docs ask), written
+// The Embree form of an occlusion ray, written
 // field by field into its slot. No by-value form: assigning a returned RTCRay built it
 // in 4-byte stores and copied it with 16-byte loads, a failed store-to-load forward per ray
 // (perf annotate, issue 14).
 inline void setEmbreeRay(RTCRay& e, const OcclusionRay& r) {
-  setEmbreeRay(e, r.origin, r.direction, r.tnear, r.tfar);
+  setEmbreeRay(e, r.origin, r.direction, r.tnear, r.tfar, r.time);
 }
 
 struct RtSceneOptions {
@@ -109,8 +111,9 @@ class RtScene {
   // coherent false: rays that scatter (a path tracer's bounces), traced with the INCOHERENT flag.
   void intersectRays(std::span<const Ray> rays, std::span<Hit> hits, std::span<const Hit*> found,
                      bool wantNormal, bool coherent = true) const;
-  // Any hit in [tnear, tfar].
-  bool occluded(const vec3& origin, const vec3& direction, float tnear, float tfar) const;
+  // Any hit in [tnear, tfar], at the shutter time `time`.
+  bool occluded(const vec3& origin, const vec3& direction, float tnear, float tfar,
+                float time = kFrameTime) const;
 
   // Many occlusion rays: occludedOut[i] = 1 when rays[i] hits something, else 0. Split into
   // tiles traced with Embree's ray-stream API (rtcOccluded1M) in parallel with TBB.
@@ -147,7 +150,7 @@ class RtScene {
     float alpha = 1.f;                      // Material::alpha
     float alphaCutoff = 0.5f;               // Material::alphaCutoff
     const Texture* alphaTexture = nullptr;  // whose .w multiplies alpha; null: none
-    bool instanced = false;   // an instance of a shared prototype (Embree hits in object space)
+    bool instanced = false;   // an instance of a prototype (shared, or a moving instance's own)
     mat3 normalToWorld{1.f};  // instanced: the cofactor of the transform, for Hit::Ng
     std::unique_ptr<SdfStats> sdfStats;  // this scene's step counters of an SDF object
     // Coverage of triangle `primitive` at Embree barycentrics (u, v); read-only, thread-safe.
@@ -171,6 +174,8 @@ class RtScene {
   int alphaMaskedGeometries() const { return alphaMasked_; }
   // Instances traced through a shared prototype, and the number of prototypes built.
   int instancedGeometries() const { return instanced_; }
+  // Instances with a motion (Instance::motion), traced as motion-blurred Embree instances.
+  int movingGeometries() const { return moving_; }
   int prototypes() const { return int(prototypes_.size()); }
 
  private:
@@ -186,6 +191,7 @@ class RtScene {
   int alphaMasked_ = 0;
   int analytic_ = 0;
   int instanced_ = 0;
+  int moving_ = 0;
   RTCScene scene_ = nullptr;
   std::vector<RTCScene> prototypes_;  // released after scene_
   RayCounter raysTraced_;

@@ -1,8 +1,12 @@
 #include "engine/rt/rt_scene_instancing.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cstring>
 #include <map>
 #include <tuple>
+
+#include "engine/scene/camera_math.h"
 
 namespace diptych::rt_detail {
 
@@ -87,17 +91,9 @@ RTCScene newPrototypeScene(const RtDevice& device, const Scene& scene, const Wor
   const Mesh& m = scene.meshes[scene.instances[std::size_t(mesh.instance)].mesh];
   std::vector<std::uint32_t> indices(m.indices.size());
   for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = sourceIndex(m, mesh.mirrored, k);
-  RTCScene proto = rtcNewScene(device.handle());
-  device.check("rtcNewScene (prototype of " + m.name + ")");
-  rtcSetSceneBuildQuality(proto, quality);
-  rtcSetSceneFlags(proto, flags);
   RTCGeometry geom = newTriangleGeometry(device, m.positions, indices, quality, m.name);
   rtcCommitGeometry(geom);
-  rtcAttachGeometryByID(proto, geom, 0);
-  rtcReleaseGeometry(geom);
-  rtcCommitScene(proto);
-  device.check("building the prototype of " + m.name);
-  return proto;
+  return newSceneOf(device, geom, quality, flags, m.name);
 }
 
 RTCGeometry newInstanceGeometry(const RtDevice& device, RTCScene prototype, const mat4& transform) {
@@ -106,6 +102,33 @@ RTCGeometry newInstanceGeometry(const RtDevice& device, RTCScene prototype, cons
   rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &transform[0][0]);
   rtcCommitGeometry(inst);
   device.check("instancing a prototype");
+  return inst;
+}
+
+RTCScene newSceneOf(const RtDevice& device, RTCGeometry geometry, RTCBuildQuality quality,
+                    RTCSceneFlags flags, const std::string& what) {
+  RTCScene scene = rtcNewScene(device.handle());
+  device.check("rtcNewScene (prototype of " + what + ")");
+  rtcSetSceneBuildQuality(scene, quality);
+  rtcSetSceneFlags(scene, flags);
+  rtcAttachGeometryByID(scene, geometry, 0);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene);
+  device.check("building the prototype of " + what);
+  return scene;
+}
+
+RTCGeometry newMovingInstanceGeometry(const RtDevice& device, RTCScene prototype,
+                                      const vec3& motion) {
+  RTCGeometry inst = rtcNewGeometry(device.handle(), RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(inst, prototype);
+  rtcSetGeometryTimeStepCount(inst, 2);
+  for (unsigned step = 0; step < 2; ++step) {
+    const mat4 moved = glm::translate(mat4(1.f), (float(step) - kFrameTime) * motion);
+    rtcSetGeometryTransform(inst, step, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &moved[0][0]);
+  }
+  rtcCommitGeometry(inst);
+  device.check("a moving instance");
   return inst;
 }
 

@@ -48,4 +48,16 @@ RTCScene newPrototypeScene(const RtDevice& device, const Scene& scene, const Wor
 // An instance of `prototype` placed by `transform` (the Instance's), committed.
 RTCGeometry newInstanceGeometry(const RtDevice& device, RTCScene prototype, const mat4& transform);
 
+// A committed scene holding one committed geometry (released into it) at geomID 0.
+RTCScene newSceneOf(const RtDevice& device, RTCGeometry geometry, RTCBuildQuality quality,
+                    RTCSceneFlags flags, const std::string& what);
+
+// A motion-blurred instance of `prototype` (geometry in the world space of kFrameTime) moving by
+// `motion` over the shutter: two time steps, translate((0 - kFrameTime) motion) at time 0 and
+// translate((1 - kFrameTime) motion) at time 1, which Embree interpolates linearly at each
+// ray's time (Embree 3 docs, rtcSetGeometryTimeStepCount: instance motion blur). At kFrameTime
+// the translation is exactly zero: (1 - t) a + t b with b = -a.
+RTCGeometry newMovingInstanceGeometry(const RtDevice& device, RTCScene prototype,
+                                      const vec3& motion);
+
 }  // namespace diptych::rt_detail

@@ -32,6 +32,7 @@ class ReceiverRays {
     OcclusionRay ray;
     ray.tnear = 0.f;
     ray.tfar = -1.f;  // inactive until proven otherwise
+    ray.time = receiver_.time;
     if (!light_.castsShadows) return ray;
     const bool directional = light_.type == LightType::Directional;
     const vec3 towardLight = directional ? -light_.direction : target - receiver_.position;
@@ -129,7 +130,8 @@ float lightVisibility(const RtScene& rt, const Light& light, const ShadowReceive
   ReceiverRays rays(light, receiver);
   for (int s = 0; s < count; ++s) {
     const OcclusionRay r = rays.sample(s, count, seed);
-    visible += (r.tnear > r.tfar || !rt.occluded(r.origin, r.direction, r.tnear, r.tfar)) ? 1 : 0;
+    visible +=
+        (r.tnear > r.tfar || !rt.occluded(r.origin, r.direction, r.tnear, r.tfar, r.time)) ? 1 : 0;
   }
   return float(visible) / float(count);
 }
@@ -139,7 +141,8 @@ float occluderDistance(const RtScene& rt, const Light& light, const ShadowReceiv
   const float inf = std::numeric_limits<float>::infinity();
   if (r.tnear > r.tfar) return inf;
   const float len = glm::length(r.direction);
-  const auto hit = rt.intersect(Ray{r.origin, r.direction / len}, r.tnear * len, r.tfar * len);
+  const auto hit =
+      rt.intersect(Ray{r.origin, r.direction / len, r.time}, r.tnear * len, r.tfar * len);
   return hit ? hit->t : inf;
 }
 

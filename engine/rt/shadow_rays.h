@@ -14,10 +14,13 @@ namespace diptych {
 // A receiver: a point on the world geometry and its unit geometric (face) normal, either side.
 // magnitude: per-axis max |vertex coordinate| of its triangle (SurfacePoint::positionMagnitude);
 // zero means "use the position itself" (the paper's plain offset).
+// time: the shutter time of the ray that found the point (SurfacePoint::time), which its shadow
+// rays keep, so that a moving occluder is where it was when the point was seen.
 struct ShadowReceiver {
   vec3 position{0.f};
   vec3 geometricNormal{0.f};
   vec3 magnitude{0.f};
+  float time = kFrameTime;
 };
 
 // The receiver at a surface hit: the position, face normal and offset magnitude that

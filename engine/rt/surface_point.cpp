@@ -314,7 +314,16 @@ vec4 resolvedColorAt(const Scene& scene, const WorldGeometry& world, const Surfa
 Ray spawnRay(const SurfacePoint& p, const vec3& direction) {
   const vec3 n =
       glm::dot(direction, p.geometricNormal) >= 0.f ? p.geometricNormal : -p.geometricNormal;
-  return {offsetRayOrigin(p.position, n, p.positionMagnitude), direction};
+  return {offsetRayOrigin(p.position, n, p.positionMagnitude), direction, p.time};
+}
+
+void atShutterTime(SurfacePoint& p, const WorldGeometry& world, float time) {
+  p.time = time;
+  const vec3& motion = world.meshes[std::size_t(p.hit.instance)].motion;
+  if (time == kFrameTime || motion == vec3(0.f)) return;
+  const vec3 displacement = (time - kFrameTime) * motion;
+  p.position += displacement;
+  p.positionMagnitude += glm::abs(displacement);
 }
 
 }  // namespace diptych

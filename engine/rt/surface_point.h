@@ -35,6 +35,7 @@ struct SurfacePoint {
   vec2 uv{0.f};  // analytic sphere: (0, 0) unless materialReadsUv (engine/scene/analytic_hit.h)
   int material = -1;                    // index into Scene::materials (-1: default)
   shading::ShadingMaterial resolved{};  // C with texture/checker, M_E with its texture
+  float time = kFrameTime;  // the shutter time of the ray that found it (atShutterTime)
 };
 
 // Hot loops construct points in place in raw or reused storage (placement new, never destroyed:
@@ -54,6 +55,13 @@ SurfacePoint makeSurfacePoint(const Scene& scene, const WorldGeometry& world, co
 // Throws Error as makeSurfacePoint does.
 vec4 resolvedColorAt(const Scene& scene, const WorldGeometry& world, const SurfaceHit& hit);
 
+// p (made by makeSurfacePoint, at kFrameTime) as a ray at shutter time `time` found it: a moving
+// instance's point displaced by (time - kFrameTime) * WorldMesh::motion, the translation Embree
+// applied to that ray (rt_scene_instancing.h), its offset magnitude grown by the displacement so
+// that offsetRayOrigin covers the rounding of the sum; p.time = time, which spawnRay and the
+// shadow receivers pass on. Normals are unchanged: the motion is a translation.
+void atShutterTime(SurfacePoint& p, const WorldGeometry& world, float time);
+
 // A raster (G-buffer) hit on the tessellation of an analytic instance, moved onto the exact
 // surface: the closest hit of `primary` (the pixel's ray, the one the G-buffer intersected)
 // with that instance's shape, computed by the very function Embree's callback calls, so the
@@ -64,7 +72,7 @@ SurfaceHit liftToAnalytic(const WorldGeometry& world, const SurfaceHit& hit, con
 
 // A secondary ray leaving p along the unit `direction`: its origin is offset (offsetRayOrigin,
 // engine/rt/ray_offset.h) along the geometric normal on the side the direction points to, so
-// reflected rays leave from the front and transmitted rays from the back.
+// reflected rays leave from the front and transmitted rays from the back. It keeps p's time.
 Ray spawnRay(const SurfacePoint& p, const vec3& direction);
 
 // The material's parameters at uv: C = color * colorTexture (or the checker, which replaces C),

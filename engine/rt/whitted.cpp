@@ -60,6 +60,7 @@ SurfacePoint WhittedTracer::surfaceAt(const Ray& ray, const Hit& h, const RayCon
   // narrower stores: a store-forwarding stall per ray, perf annotate).
   SurfacePoint p = makeSurfacePoint(scene_, world_, {h.instance, h.primitive, h.u, h.v, h.analytic},
                                     ray.direction);
+  atShutterTime(p, world_, ray.time);
   coned = cone && settings_.rayCones;
   if (!coned) return p;
   at = {cone->width + cone->spread * h.t * glm::length(ray.direction), cone->spread};
@@ -86,7 +87,7 @@ bool WhittedTracer::lightTerm(std::size_t i, const SurfacePoint& p, const vec3& 
 
 vec3 WhittedTracer::direct(const SurfacePoint& p, const vec3& v, std::uint32_t seed) const {
   vec3 sum(0.f);
-  const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
+  const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude, p.time};
   for (std::size_t i = 0; i < lights_.size(); ++i) {
     shading::LightSample s;
     vec3 response;

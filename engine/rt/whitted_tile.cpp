@@ -90,7 +90,7 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
     if (!textureSignal.empty()) applyTextureSignal(p, scene_, textureSignal[i]);
     shaded[i] = true;
     // direct()'s tests (lightTerm); the shadow rays go to the stream instead of rtcOccluded1.
-    const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude};
+    const ShadowReceiver receiver{p.position, p.faceNormal, p.positionMagnitude, p.time};
     for (std::size_t l = 0; l < lights; ++l) {
       PendingLight& q = pending[i * lights + l];
       shading::LightSample s;

@@ -10,9 +10,16 @@ mat4 viewMatrix(const Camera& camera);
 // glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) with a D32F buffer cleared to 0 and GL_GREATER.
 mat4 reversedZProjection(const Camera& camera, float aspect);
 
+// The instant of the shutter interval [0, 1] that a frame shows: raster passes draw every moving
+// instance there (Instance::motion is centred on it), and every ray that carries no time of its
+// own is traced there. Distributed ray tracing spreads its samples over the whole interval
+// (motion blur: Cook, Porter and Carpenter 1984; docs/reference-renderers.md).
+inline constexpr float kFrameTime = 0.5f;
+
 struct Ray {
   vec3 origin;
   vec3 direction;  // unit length
+  float time = kFrameTime;  // in the shutter interval [0, 1] (Embree's RTCRay::time)
 };
 
 // Ray through the point (x + sx, y + sy) of the image, sx, sy in [0,1); (0.5, 0.5) is the centre.

@@ -492,6 +492,10 @@ void includeGltf(JsonObject& o, const mat4& transform, const Context& ctx, Scene
 void readObject(JsonObject o, Context& ctx, Scene& scene) {
   const std::string type = o.requiredString("type");
   const mat4 transform = readTransform(o, ctx);
+  // "motion": [dx, dy, dz], the world-space displacement over the shutter (Instance::motion);
+  // a glTF file's instances all move by it.
+  const vec3 motion = o.vector3("motion", vec3(0.f));
+  const std::size_t firstInstance = scene.instances.size();
   if (type == "gltf") {
     includeGltf(o, transform, ctx, scene);
   } else {
@@ -503,6 +507,8 @@ void readObject(JsonObject o, Context& ctx, Scene& scene) {
     scene.meshes.push_back(std::move(mesh));
     scene.instances.push_back({name, int(scene.meshes.size()) - 1, transform});
   }
+  for (std::size_t i = firstInstance; i < scene.instances.size(); ++i)
+    scene.instances[i].motion = motion;
   o.rejectUnknownKeys();
 }
 

@@ -9,6 +9,12 @@ const Material& Scene::material(int index) const {
   return materials[index];
 }
 
+bool Scene::hasMotion() const {
+  for (const Instance& inst : instances)
+    if (inst.motion != vec3(0.f)) return true;
+  return false;
+}
+
 Aabb Scene::bounds() const {
   Aabb box;
   for (const Instance& inst : instances) {

@@ -41,7 +41,11 @@ struct Mesh {
 struct Instance {
   std::string name;
   int mesh = 0;
-  mat4 transform{1.f};
+  mat4 transform{1.f};  // the placement at kFrameTime (engine/scene/camera_math.h)
+  // World-space displacement over the shutter interval [0, 1], centred on the frame's instant:
+  // at time t the instance is translate((t - kFrameTime) * motion) * transform. Zero: static.
+  // Only rays that carry a time see it move (distributed ray tracing's motion blur).
+  vec3 motion{0.f};
 };
 
 enum class WrapMode { Repeat, ClampToEdge, MirroredRepeat };
@@ -210,6 +214,7 @@ struct Scene {
 
   const Material& material(int index) const;  // -1 or out of range -> default material
   Aabb bounds() const;                        // world-space bounds of all instances
+  bool hasMotion() const;  // an instance with a non-zero Instance::motion (motion blur)
 };
 
 }  // namespace diptych

@@ -26,7 +26,10 @@ Scene similarityTransformed(const Scene& input, double scale, const dvec3& trans
   Scene s = input;
   const glm::dmat4 similarity = glm::dmat4(scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0,
                                            translation.x, translation.y, translation.z, 1);
-  for (Instance& inst : s.instances) inst.transform = mat4(similarity * glm::dmat4(inst.transform));
+  for (Instance& inst : s.instances) {
+    inst.transform = mat4(similarity * glm::dmat4(inst.transform));
+    inst.motion = vec3(dvec3(inst.motion) * scale);  // a displacement: scaled, not translated
+  }
   Camera& c = s.camera;
   c.position = moved(c.position, scale, translation);
   c.target = moved(c.target, scale, translation);

@@ -278,6 +278,7 @@ void validateScene(Scene& scene) {
     if (inst.mesh < 0 || inst.mesh >= int(scene.meshes.size()))
       check.fail(place + " mesh", "mesh " + std::to_string(inst.mesh) + " does not exist");
     check.finiteValue(inst.transform, place + " transform");
+    check.magnitude(inst.motion, kMaxCoordinate, place + " motion");
   }
   for (std::size_t i = 0; i < scene.materials.size(); ++i)
     checkMaterial(scene.materials[i], i, scene, check);

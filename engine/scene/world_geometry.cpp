@@ -217,6 +217,7 @@ WorldGeometry flattenScene(const Scene& scene) {
     w.instance = int(i);
     w.material = mesh.material;
     w.mirrored = glm::determinant(mat3(inst.transform)) < 0.f;
+    w.motion = inst.motion;
     w.positions.reserve(mesh.positions.size());
     for (const vec3& p : mesh.positions) w.positions.push_back(vec3(inst.transform * vec4(p, 1.f)));
     w.indices = mesh.indices;

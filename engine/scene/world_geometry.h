@@ -56,6 +56,7 @@ struct WorldMesh {
   // (issue 14's profile). Empty in a mesh built by hand: geometricNormal then computes it.
   std::vector<vec3> faceNormals;
   bool mirrored = false;                     // det(transform) < 0
+  vec3 motion{0.f};  // Instance::motion: positions are at kFrameTime, displaced by it over time
   std::optional<AnalyticInstance> analytic;  // the exact surface, for ray tracers (see Mesh)
 };
 

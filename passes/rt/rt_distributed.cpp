@@ -25,6 +25,7 @@ namespace {
 // Primary rays per Embree stream call (RtScene::intersectRays): a row's samples are traced in
 // tiles of this many, the most WhittedTracer::radianceTile shades at once.
 constexpr std::size_t kPrimaryTile = WhittedTracer::kMaxTile;
+constexpr std::uint32_t kTimeSalt = 0x54494d45u;  // "TIME": the time strata's own hashes
 
 // A per-pixel random permutation of 0..n-1 (Fisher-Yates driven by pcgHash). Pairing pixel
 // stratum s with lens stratum perm[s] keeps both sets stratified while decorrelating them, as
@@ -86,21 +87,33 @@ void RtDistributedPass::execute(PassContext& c) {
   const ThinLensFrame lensFrame(camera, frame.width, frame.height);
   const PinholeFrame& pinhole = lensFrame.pinhole();
   const bool lens = camera.aperture > 0.f;
+  // Motion blur (Cook et al.'s time dimension): each sample at its own time in the shutter, a
+  // per-pixel permutation of spp jittered strata of [0, 1), decorrelated from the pixel and lens
+  // strata as those are from each other. Only where something moves: a static scene's rays
+  // keep kFrameTime and its image stays bit for bit what it was; rt_whitted, like the raster
+  // passes, shows the frame's instant.
+  const bool shutter = thinLens_ && world.scene().hasMotion();
   // rt_whitted's texture_samples (rt_whitted.h): each pixel's texture signal, traced first.
   const bool textureSignal =
       textureSamples_ > 1 && sceneSatisfies(world.scene(), SceneNeed::TexturedMaterial);
   std::atomic<std::int64_t> textureRays = 0;
   // The primary ray of pixel x's sample s (its seed in `seed`), as below.
   const auto sampleRay = [&](int x, int y, int s, std::span<const int> lensStratum,
-                             std::uint32_t& seed) {
+                             std::span<const int> timeStratum, std::uint32_t& seed) {
     const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
     // The hashes only where they are read (pcgHash is out of line: an unused one still ran).
     const vec2 offset = spp_ == 1 ? vec2(0.5f) : stratifiedSample(s, spp_, pcgHash(pixel));
     const float px = float(x) + offset.x, py = float(y) + offset.y;
     seed = spp_ == 1 ? pixel : pcgHash(pixel * 4096u + std::uint32_t(s));
-    if (!lens) return pinhole.ray(px, py);                        // == thinLensRay with no aperture
-    const std::uint32_t lensSeed = pcgHash(pixel ^ 0x4c454e53u);  // "LENS"
-    return lensFrame.ray(px, py, stratifiedSample(lensStratum[std::size_t(s)], spp_, lensSeed));
+    // pinhole.ray == thinLensRay with no aperture; the lens's hash only with a lens ("LENS").
+    Ray ray = !lens ? pinhole.ray(px, py)
+                    : lensFrame.ray(px, py,
+                                    stratifiedSample(lensStratum[std::size_t(s)], spp_,
+                                                     pcgHash(pixel ^ 0x4c454e53u)));
+    if (shutter)
+      ray.time = (float(timeStratum[std::size_t(s)]) + unitFloat(pcgHash(seed ^ kTimeSalt))) /
+                 float(spp_);
+    return ray;
   };
   // Without SDF objects a row's sample rays (neighbouring pixels, or one pixel's strata: all
   // coherent) are traced in tiles of 64 as Embree streams and shaded by radianceTile, whose
@@ -111,7 +124,7 @@ void RtDistributedPass::execute(PassContext& c) {
   if (!steps) {
     const RtScene& rt = world.rtScene();
     tbb::parallel_for(0, frame.height, [&](int y) {
-      std::vector<int> lensStratum(std::size_t(spp_), 0);
+      std::vector<int> lensStratum(std::size_t(spp_), 0), timeStratum(std::size_t(spp_), 0);
       std::vector<vec3> sum(std::size_t(frame.width), vec3(0.f));
       std::vector<vec4> signal(textureSignal ? std::size_t(frame.width) : 0);
       std::vector<SecondarySignals> secondary(signal.size());
@@ -146,8 +159,9 @@ void RtDistributedPass::execute(PassContext& c) {
       for (int x = 0; x < frame.width; ++x) {
         const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
         if (lens) shuffle(lensStratum, pcgHash(pixel ^ 0x4c454e53u));
+        if (shutter) shuffle(timeStratum, pcgHash(pixel ^ kTimeSalt));
         for (int s = 0; s < spp_; ++s) {
-          rays[filled] = sampleRay(x, y, s, lensStratum, seeds[filled]);
+          rays[filled] = sampleRay(x, y, s, lensStratum, timeStratum, seeds[filled]);
           pixelOf[filled] = x;
           if (++filled == kPrimaryTile) flush();
         }
@@ -164,12 +178,13 @@ void RtDistributedPass::execute(PassContext& c) {
     return;
   }
   tbb::parallel_for(0, frame.height, [&](int y) {
-    std::vector<int> lensStratum(std::size_t(spp_), 0);
+    std::vector<int> lensStratum(std::size_t(spp_), 0), timeStratum(std::size_t(spp_), 0);
     for (int x = 0; x < frame.width; ++x) {
       const std::uint32_t pixel = std::uint32_t(y * frame.width + x);
       // The same pixel pattern and seeds as rt_whitted, so that the two differ only by the lens.
       // A pinhole (rt_whitted) never reads the lens sample: skip its shuffle and strata.
       if (lens) shuffle(lensStratum, pcgHash(pixel ^ 0x4c454e53u));  // "LENS"
+      if (shutter) shuffle(timeStratum, pcgHash(pixel ^ kTimeSalt));
       beginSdfPixel();
       // Inside the pixel's step count, whose sum is RtScene::sdfStepStats (sdf_steps.h); ray by
       // ray, as this loop traces: the streams' signal up to Embree's packet rounding.
@@ -198,7 +213,7 @@ void RtDistributedPass::execute(PassContext& c) {
       vec3 sum(0.f);
       for (int s = 0; s < spp_; ++s) {
         std::uint32_t seed;
-        const Ray ray = sampleRay(x, y, s, lensStratum, seed);
+        const Ray ray = sampleRay(x, y, s, lensStratum, timeStratum, seed);
         sum += tracer.radiance(ray, 1, seed, cone, nullptr, textureSignal ? &signal : nullptr,
                                textureSignal ? &secondary : nullptr);
       }

@@ -7,9 +7,11 @@ namespace diptych {
 // SIGGRAPH 1984; the lecture's "Ray-Tracing distribuido"): each pixel averages `spp` primary
 // rays distributed over the pixel area (antialiasing, a stratified k x k jittered grid, box
 // filter), over the lens disc (thin-lens depth of field from Camera::aperture, the lens radius,
-// and Camera::focusDistance; aperture 0 is a pinhole), and, through the Whitted tracer, over
-// the area lights (stratified shadow rays, `area_samples` per light per hit). Everything after
-// the primary ray is WhittedTracer (engine/rt/whitted.h): the same recursion and shading.
+// and Camera::focusDistance; aperture 0 is a pinhole), over the shutter where an instance moves
+// (motion blur: Instance::motion; each sample's time, a per-pixel permutation of spp jittered
+// strata, is kept by every ray of its tree), and, through the Whitted tracer, over the area
+// lights (stratified shadow rays, `area_samples` per light per hit). Everything after the
+// primary ray is WhittedTracer (engine/rt/whitted.h): the same recursion and shading.
 // With spp = 1 the single ray goes through the pixel centre with the pixel index as its seed,
 // so that spp = 1 and aperture 0 reproduce rt_whitted bit for bit.
 // Params: schema() (`diptych passes` lists them). Output: color RGBA32F, and sdf_steps

@@ -54,6 +54,7 @@ void RtPathPass::execute(PassContext& c) {
   const float spread = pixelSpreadAngle(frame.camera, frame.height) / std::sqrt(float(spp_));
   std::atomic<std::uint64_t> rays{0}, invalid{0};
   const ThinLensFrame lensFrame(frame.camera, frame.width, frame.height);
+  const bool shutter = world.scene().hasMotion();
   // Paths k = 0..n-1 of row y (n <= kChunk), pixel x and pass of sampleOf(k): their camera
   // rays traced as one coherent Embree stream (CameraRays::intersectRays), then the chunk as
   // PathTracer's wavefront; each sample handed to add(k, sample) in order.
@@ -71,6 +72,9 @@ void RtPathPass::execute(PassContext& c) {
       const vec2 jitter = rngs[k].next2();
       const vec2 lens = rngs[k].next2();
       rays[k] = lensFrame.ray(float(x) + jitter.x, float(y) + jitter.y, lens);
+      // Motion blur: each path at its own time in the shutter (drawn only where something
+      // moves, so a static scene's paths keep their random sequence).
+      if (shutter) rays[k].time = rngs[k].next();
     }
     const std::size_t count = std::size_t(n);
     camera.intersectRays({rays, count}, {hits, count}, {found, count}, false);
