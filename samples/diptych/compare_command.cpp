@@ -214,6 +214,21 @@ void runCompare(const CompareOptions& o) {
   const bool textured = sceneSatisfies(scene, SceneNeed::TexturedMaterial);
   // rt_whitted takes --texture-samples; distributed and path references integrate the pixel.
   const bool referenceFootprint = textured && reference.passType == "rt_whitted";
+  // Motion blur (docs/reference-renderers.md): only the distributed and path references draw
+  // times over the shutter; rt_whitted and every variant show the frame's instant. Said once,
+  // so that an error that is mostly the missing blur is read as such.
+  int moving = 0;
+  for (const Instance& inst : scene.instances) moving += inst.motion != vec3(0.f);
+  const bool blurredReference = moving > 0 && reference.passType != "rt_whitted";
+  if (moving > 0)
+    std::fprintf(stderr, "compare: %d moving instance(s): %s\n", moving,
+                 blurredReference
+                     ? "the reference integrates them over the shutter (motion blur); every "
+                       "variant shows the frame's instant t = 0.5, so its error includes the "
+                       "missing blur"
+                     : "the reference (whitted) and every variant show the frame's instant "
+                       "t = 0.5, so no motion blur is compared (--reference distributed:SPP or "
+                       "path:SPP blurs them)");
   if (o.variants.empty() && bumped) {
     for (const Variant& v : surfaceDetailVariants()) {
       variants.push_back(v);
@@ -543,6 +558,11 @@ void runCompare(const CompareOptions& o) {
         // The time too, from the run that cached the image; with rounds it is this run's.
         {"ms_cached", referenceCached && o.rounds == 1},
         {"surfaces", bumped ? "displaced" : "as authored"},
+        // "shutter": the reference integrates moving instances over the shutter [0, 1];
+        // "instant": it shows t = 0.5 as the variants do; null: nothing moves.
+        {"time", moving == 0        ? nlohmann::json()
+                 : blurredReference ? nlohmann::json("shutter")
+                                    : nlohmann::json("instant")},
         // The footprint each pixel's texture colour is averaged over, N x N rays (rt_whitted's
         // texture_samples; null: no colour textures, or a reference whose own samples
         // integrate the pixel).

@@ -73,3 +73,21 @@ string(FIND "${sdf_page}" "id=\"sdf-steps\"" pos)
 if(pos EQUAL -1)
   message(FATAL_ERROR "report.html lacks the sphere-tracing steps section")
 endif()
+
+# A scene with moving objects: the stderr line and results.json say whether the reference
+# integrates them over the shutter (distributed, path) or shows the frame's instant (whitted).
+foreach(case "distributed:4;shutter" "whitted;instant")
+  list(GET case 0 spec)
+  list(GET case 1 expected)
+  expect_success(compare-motion-${expected} ARGS compare "${SOURCE_DIR}/samples/scenes/motion.json"
+                 --variants hybrid-exact --reference ${spec} --size 48x32 --frames 1 --warmup 0
+                 --out cmp-motion-${expected} FILES cmp-motion-${expected}/results.json)
+  file(READ "${WORK_DIR}/cmp-motion-${expected}/results.json" motion_results)
+  string(JSON time GET "${motion_results}" reference time)
+  if(NOT time STREQUAL expected)
+    message(FATAL_ERROR "reference ${spec}: results.json reference.time is '${time}', not '${expected}'")
+  endif()
+  if(NOT LAST_STDERR MATCHES "2 moving instance")
+    message(FATAL_ERROR "compare must say the scene has 2 moving instances: ${LAST_STDERR}")
+  endif()
+endforeach()
