@@ -55,7 +55,7 @@ RayProbe probeSecondaryRays(const Scene& scene, const WorldGeometry& world, cons
         const OcclusionRay s = makeShadowRay(scene.lights[l], receiver);
         if (s.tnear > s.tfar) continue;
         ++nSecondary;
-        const auto h = rt.intersect(Ray{s.origin, s.direction}, s.tnear, s.tfar);
+        const auto h = rt.intersect(Ray{s.origin, s.direction, s.time}, s.tnear, s.tfar);
         nSelf += selfHit(h, p, s.direction) ? 1 : 0;
         probe.occluded[(std::size_t(y) * width + x) * lights + l] = h ? 1 : 0;
       }

@@ -1,5 +1,6 @@
 #include "engine/scene/scene_transform.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat4x4.hpp>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/scene/camera_math.h"
 
 namespace diptych {
 namespace {
@@ -47,6 +49,16 @@ Scene similarityTransformed(const Scene& input, double scale, const dvec3& trans
       l.intensity = float(double(l.intensity) * scale * scale);
   }
   for (Material& m : s.materials) m.attenuationDistance = float(m.attenuationDistance * scale);
+  return s;
+}
+
+Scene sceneAtTime(const Scene& input, float time) {
+  Scene s = input;
+  for (Instance& inst : s.instances) {
+    if (inst.motion == vec3(0.f)) continue;
+    inst.transform = glm::translate(mat4(1.f), (time - kFrameTime) * inst.motion) * inst.transform;
+    inst.motion = vec3(0.f);
+  }
   return s;
 }
 

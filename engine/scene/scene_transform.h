@@ -15,6 +15,13 @@ namespace diptych {
 // scale. Throws Error for a scale that is not finite and positive.
 Scene similarityTransformed(const Scene& scene, double scale, const glm::dvec3& translation);
 
+// The static snapshot of a scene at shutter time `time` in [0, 1]: every instance with a
+// motion placed where it is then, translate((time - kFrameTime) * motion) * transform, and its
+// motion zeroed. The raster side's motion blur renders such snapshots and averages them (the
+// accumulation buffer, Haeberli and Akeley, SIGGRAPH 1990); a ray at `time` sees the moving
+// scene as a ray at kFrameTime sees the snapshot (tested).
+Scene sceneAtTime(const Scene& scene, float time);
+
 // Camera-relative world: every instance translation, light position and the camera are moved by
 // -origin, computed in double and rounded to float once, so that float coordinates hold the
 // geometry near the camera to the precision of its own size rather than of |origin|. Geometry,

@@ -299,6 +299,12 @@ void validateScene(Scene& scene) {
   if (const Aabb box = scene.bounds(); !box.empty()) {
     check.magnitude(box.lo, kMaxCoordinate, "scene bounds (lowest corner)");
     check.magnitude(box.hi, kMaxCoordinate, "scene bounds (highest corner)");
+    // Moving instances reach half their motion beyond the frame instant's bounds.
+    vec3 reach(0.f);
+    for (const Instance& inst : scene.instances) reach = glm::max(reach, 0.5f * glm::abs(inst.motion));
+    if (reach != vec3(0.f))
+      check.magnitude(glm::max(glm::abs(box.lo), glm::abs(box.hi)) + reach, kMaxCoordinate,
+                      "scene bounds swept by the motion");
   }
   if (env.type == EnvironmentType::Equirect) {
     if (env.equirect.empty()) check.fail("environment equirect", "image is empty");

@@ -13,7 +13,8 @@ namespace diptych {
 // lights (stratified shadow rays, `area_samples` per light per hit). Everything after the
 // primary ray is WhittedTracer (engine/rt/whitted.h): the same recursion and shading.
 // With spp = 1 the single ray goes through the pixel centre with the pixel index as its seed,
-// so that spp = 1 and aperture 0 reproduce rt_whitted bit for bit.
+// so that spp = 1 and aperture 0 reproduce rt_whitted bit for bit on a static scene (where
+// something moves, its time is still drawn from the shutter).
 // Params: schema() (`diptych passes` lists them). Output: color RGBA32F, and sdf_steps
 // (passes/rt/sdf_steps.h) where the scene has SDF objects.
 class RtDistributedPass : public Pass {

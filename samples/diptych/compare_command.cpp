@@ -23,6 +23,7 @@
 #include "engine/scene/default_lighting.h"
 #include "engine/scene/load.h"
 #include "engine/scene/primitives.h"
+#include "engine/scene/scene_transform.h"
 #include "engine/shading/shading.h"
 #include "engine/shading/surface_detail.h"
 #include "passes/registry.h"
@@ -84,7 +85,8 @@ std::optional<std::size_t> exactVariant(const std::vector<Variant>& variants,
                                         const std::vector<int>& sameAs) {
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const Variant& v = variants[i];
-    if (v.recipeFile.empty() && v.slots.empty() && v.tessellation == 0 && v.surfaceDetail.empty())
+    if (v.recipeFile.empty() && v.slots.empty() && v.tessellation == 0 &&
+        v.surfaceDetail.empty() && v.shutterSamples == 0)
       return sameAs[i] < 0 ? i : std::size_t(sameAs[i]);
   }
   return std::nullopt;
@@ -229,6 +231,13 @@ void runCompare(const CompareOptions& o) {
                      : "the reference (whitted) and every variant show the frame's instant "
                        "t = 0.5, so no motion blur is compared (--reference distributed:SPP or "
                        "path:SPP blurs them)");
+  // And the motion-blur axis where something moves: the accumulation buffer (variants.h).
+  if (o.variants.empty() && moving > 0) {
+    for (const Variant& v : motionVariants(registry)) {
+      variants.push_back(v);
+      recipes.push_back(v.build(registry, o.textureSamples));
+    }
+  }
   if (o.variants.empty() && bumped) {
     for (const Variant& v : surfaceDetailVariants()) {
       variants.push_back(v);
@@ -361,6 +370,19 @@ void runCompare(const CompareOptions& o) {
   const auto variantWorld = [&](std::size_t i) -> RenderWorld& {
     return variantWorlds[i] ? *variantWorlds[i] : world;
   };
+  // Per accumulation-buffer variant (Variant::shutterSamples): its snapshots' scenes and worlds.
+  std::vector<std::vector<std::unique_ptr<Scene>>> instantScenes(variants.size());
+  std::vector<std::vector<std::unique_ptr<RenderWorld>>> instantWorlds(variants.size());
+  // A variant's frame: through its accumulation buffer where it has one (runAccumulated).
+  const auto runVariant = [&](std::size_t i, CompiledGraph* compiled) {
+    if (!instantWorlds[i].empty())
+      return runAccumulated(recipes[i], instantWorlds[i], frame, variantOutputs[i], o.warmup,
+                            o.frames);
+    if (compiled)
+      return runCompiled(std::move(*compiled), variantWorld(i), variantOutputs[i], o.warmup,
+                         o.frames);
+    return runGraph(recipes[i], variantWorld(i), frame, variantOutputs[i], o.warmup, o.frames);
+  };
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const Variant& v = variants[i];
     const Recipe& recipe = recipes[i];
@@ -380,6 +402,15 @@ void runCompare(const CompareOptions& o) {
         log().warn("{}: {}", v.name, tessellated.warnings[w]);
       variantWorlds[i] = std::make_unique<RenderWorld>(tessellated, context.get());
     }
+    // The accumulation buffer: the scene's snapshot at each of its instants, on a world of its
+    // own (its BVH build and GL upload are one-time costs); only the image is averaged, so the
+    // per-slot signals, which belong to one instant, are not compared.
+    for (int k = 0; k < v.shutterSamples; ++k) {
+      const float time = (float(k) + 0.5f) / float(v.shutterSamples);
+      instantScenes[i].push_back(std::make_unique<Scene>(sceneAtTime(variantWorld(i).scene(), time)));
+      instantWorlds[i].push_back(std::make_unique<RenderWorld>(*instantScenes[i].back(), context.get()));
+    }
+    if (v.shutterSamples > 0) outs = {recipe.outputs.front()};
     variantOutputs[i] = outs;
     // The geometry the ray tracers hold (Embree's input, without its BVH): 12 bytes per vertex
     // and per triangle; an analytic or SDF instance is its AnalyticInstance.
@@ -419,7 +450,7 @@ void runCompare(const CompareOptions& o) {
       results.push_back(std::move(rv));  // `same` may move with it
       continue;
     }
-    const GraphRun run = runCompiled(std::move(graph), variantWorld(i), outs, o.warmup, o.frames);
+    const GraphRun run = runVariant(i, &graph);
     rounds[i].totalMs.push_back(run.totalMs);
     rounds[i].passMs.push_back(run.passMs);
     // Work this variant did once for the world (a static shadow map, a prefiltered environment),
@@ -447,8 +478,10 @@ void runCompare(const CompareOptions& o) {
                  {"rays", run.rays},
                  {"speedup_vs_reference", run.totalMs > 0 ? referenceMs / run.totalMs : 0.0},
                  {"metrics", metrics},
-                 {"signals", hasGbuffer ? signalErrors(scene, run, recipe, exact, exactRecipe)
-                                        : nlohmann::json::object()},
+                 {"shutter_samples", v.shutterSamples},
+                 {"signals", hasGbuffer && v.shutterSamples == 0
+                                 ? signalErrors(scene, run, recipe, exact, exactRecipe)
+                                 : nlohmann::json::object()},
                  {"culled", culledPasses(run.graph)},
                  {"graph", graphToJson(run.graph, &run.timings)}};
     results.push_back(std::move(rv));
@@ -483,8 +516,7 @@ void runCompare(const CompareOptions& o) {
         progress("compare", ++step, steps, round + variants[i].name + " (same frame)");
         continue;
       }
-      const GraphRun run =
-          runGraph(recipes[i], variantWorld(i), frame, variantOutputs[i], o.warmup, o.frames);
+      const GraphRun run = runVariant(i, nullptr);
       rounds[i].totalMs.push_back(run.totalMs);
       rounds[i].passMs.push_back(run.passMs);
       progress("compare", ++step, steps, round + variants[i].name);

@@ -239,6 +239,18 @@ void runRender(const RenderOptions& o) {
     std::printf("wrote %s\n", o.timingsOut.c_str());
   }
   printTimingTable(graph, executor, o);
+  if (scene.hasMotion()) {  // which frame of a moving scene this is (docs/reference-renderers.md)
+    int moving = 0;
+    for (const Instance& inst : scene.instances) moving += inst.motion != vec3(0.f);
+    std::string blurredBy;
+    for (const GraphPass& p : graph.passes)
+      if (!p.culled && (p.type == "rt_distributed" || p.type == "rt_path"))
+        blurredBy += (blurredBy.empty() ? "" : ", ") + p.name + " (" + p.type + ")";
+    std::printf("motion: %d moving instance(s), %s\n", moving,
+                blurredBy.empty()
+                    ? "shown at the frame's instant t = 0.5 (rt_distributed and rt_path blur them)"
+                    : ("blurred over the shutter by " + blurredBy).c_str());
+  }
   for (const auto& [what, ms] : world.oneTimeMs)  // not in the frame medians above
     std::printf("one-time: %s %.3f ms\n", what.c_str(), ms);
   std::printf("%s\n", firstFrameLine(graph, measured).c_str());

@@ -91,3 +91,18 @@ foreach(case "distributed:4;shutter" "whitted;instant")
     message(FATAL_ERROR "compare must say the scene has 2 moving instances: ${LAST_STDERR}")
   endif()
 endforeach()
+
+# The raster side's motion blur, the accumulation buffer (Variant::shutterSamples): 8 snapshots
+# averaged come closer to the blurred reference than the frame's instant does, and say so.
+expect_success(compare-accumulation ARGS compare "${SOURCE_DIR}/samples/scenes/motion.json"
+               --variants raster,raster-accumulation-8 --reference distributed:16 --size 96x64
+               --frames 1 --warmup 0 --out cmp-accumulation FILES cmp-accumulation/results.json
+               cmp-accumulation/images/raster-accumulation-8.exr)
+execute_process(COMMAND /usr/bin/python3 -c
+  "import json, sys; v = {x['name']: x for x in json.load(open(sys.argv[1]))['variants']}; a, r = v['raster-accumulation-8'], v['raster']; print(a['metrics']['flip_mean'], r['metrics']['flip_mean']); sys.exit(0 if a['shutter_samples'] == 8 and r['shutter_samples'] == 0 and a['metrics']['flip_mean'] < 0.75 * r['metrics']['flip_mean'] and a['signals'] == {} else 1)"
+  "${WORK_DIR}/cmp-accumulation/results.json" RESULT_VARIABLE rc OUTPUT_VARIABLE accumulation_flip)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "raster-accumulation-8 must have shutter_samples 8, no per-slot signals and "
+          "a FLIP below 3/4 of raster's against the blurred reference: ${accumulation_flip}")
+endif()
+message(STATUS "FLIP against distributed:16, accumulation buffer / frame instant: ${accumulation_flip}")

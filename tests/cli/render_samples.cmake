@@ -105,3 +105,17 @@ if(NOT sync STREQUAL "frame (asked)" OR NOT frameWait EQUAL 2 OR noWait STREQUAL
 endif()
 expect_failure(bad-gl-sync EXPECT "--gl-sync" "always" ARGS render "${SOURCE_DIR}/samples/scenes/shadow-sphere.json"
                --gl-sync always)
+
+# A scene with moving objects says which frame it is: blurred by the distributed reference, the
+# frame's instant in the hybrid.
+expect_success(motion-distributed ARGS render "${SOURCE_DIR}/samples/scenes/motion.json"
+               --recipe "${SOURCE_DIR}/samples/graphs/distributed.json" --size 32x24 --frames 1
+               --warmup 0 --out motion-distributed.png FILES motion-distributed.png)
+if(NOT LAST_STDOUT MATCHES "motion: 2 moving instance\\(s\\), blurred over the shutter by distributed \\(rt_distributed\\)")
+  message(FATAL_ERROR "render must say the distributed frame blurs the motion: ${LAST_STDOUT}")
+endif()
+expect_success(motion-hybrid ARGS render "${SOURCE_DIR}/samples/scenes/motion.json" --size 32x24
+               --frames 1 --warmup 0 --out motion-hybrid.png FILES motion-hybrid.png)
+if(NOT LAST_STDOUT MATCHES "motion: 2 moving instance\\(s\\), shown at the frame's instant")
+  message(FATAL_ERROR "render must say the hybrid frame shows the frame's instant: ${LAST_STDOUT}")
+endif()

@@ -23,6 +23,7 @@
 #include "engine/rt/whitted.h"
 #include "engine/scene/camera_math.h"
 #include "engine/scene/load.h"
+#include "engine/scene/scene_transform.h"
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
@@ -64,17 +65,19 @@ std::string edgeScene(float motion) {
 // Pixels per world unit in the plane z = 0: kH / (2 * 5 * tan(22.5 deg)).
 const double kPixelsPerUnit = kH / (2.0 * 5.0 * std::tan(glm::radians(22.5)));
 
-// A lit sphere (radius 1, centre (0, 1, 0), analytic or tessellated) moving by (4, 0, 0) over
-// the shutter, over a static floor y = 0, under a directional light straight down.
-std::string ballScene(bool analytic) {
-  return std::string(R"({"camera": {"position": [0, 6, 9], "target": [0, 0.5, 0], "fov": 40},
+// A lit sphere (radius 1, centre (0, 1, 0): "analytic", "tessellated" or "sdf") moving by
+// (4, 0, 0) over the shutter, over a static floor y = 0, under a directional light straight down.
+std::string ballScene(const std::string& kind = "analytic") {
+  const std::string ball =
+      kind == "sdf" ? R"("type": "sdf", "shape": {"type": "sphere", "radius": 1},)"
+                    : R"("type": "sphere", "radius": 1, "segments": [128, 64], "geometry": ")" +
+                          kind + R"(",)";
+  return R"({"camera": {"position": [0, 6, 9], "target": [0, 0.5, 0], "fov": 40},
     "materials": {"floor": {"color": [0.8, 0.8, 0.8], "kd": 1},
                   "ball": {"color": [0.9, 0.3, 0.2], "kd": 0.7, "ks": 0.3, "exponent": 20}},
     "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": 1}],
     "objects": [{"type": "plane", "size": [40, 40], "material": "floor"},
-                {"type": "sphere", "radius": 1, "segments": [128, 64], "material": "ball",
-                 "geometry": ")") +
-         (analytic ? "analytic" : "tessellated") + R"(",
+                {)" + ball + R"( "material": "ball",
                  "transform": {"translate": [0, 1, 0]}, "motion": [4, 0, 0]}]})";
 }
 
@@ -83,7 +86,7 @@ std::string ballScene(bool analytic) {
 // The scene format: "motion" lands on every instance the object makes and is checked like a
 // coordinate; a malformed one is an error naming its place.
 TEST(MotionBlur, SceneFileMotionIsReadAndChecked) {
-  const Scene scene = loadScene(writeScene("ball.json", ballScene(true)));
+  const Scene scene = loadScene(writeScene("ball.json", ballScene()));
   ASSERT_EQ(scene.instances.size(), 2u);
   EXPECT_EQ(scene.instances[0].motion, vec3(0.f));
   EXPECT_EQ(scene.instances[1].motion, vec3(4.f, 0.f, 0.f));
@@ -107,6 +110,19 @@ TEST(MotionBlur, SceneFileMotionIsReadAndChecked) {
   const std::string far = failure("[1e30, 0, 0]");
   EXPECT_NE(far.find("motion"), std::string::npos) << far;
   EXPECT_NE(far.find("magnitude"), std::string::npos) << far;
+  // Motion and placement each within the limit, but the sweep reaches past it:
+  // 6e11 + 40 + 9e11 / 2 > 1e12.
+  const std::string swept =
+      failure(R"([9e11, 0, 0], "transform": {"translate": [6e11, 0, 0]})");
+  EXPECT_NE(swept.find("swept by the motion"), std::string::npos) << swept;
+  // A glTF include's instances all move; a similarity transform scales the motion.
+  const Scene included = loadScene(writeScene(
+      "include.json", R"({"objects": [{"type": "gltf", "file": ")" + DIPTYCH_SAMPLES_DIR +
+                          R"(/scenes/blender-point-light.gltf", "motion": [0, 2, 0]}]})"));
+  ASSERT_FALSE(included.instances.empty());
+  for (const Instance& inst : included.instances) EXPECT_EQ(inst.motion, vec3(0.f, 2.f, 0.f));
+  const Scene scaled = similarityTransformed(scene, 3.0, glm::dvec3(5.0, 0.0, 0.0));
+  EXPECT_EQ(scaled.instances[1].motion, vec3(12.f, 0.f, 0.f));
 }
 
 // Embree's motion-blurred instance at each ray's time, for the analytic sphere (user geometry
@@ -114,8 +130,8 @@ TEST(MotionBlur, SceneFileMotionIsReadAndChecked) {
 // exactly when |x - (t - 1/2) 4| < 1, at the height of the sphere there; occlusion agrees; and
 // the surface point of the hit, moved to the ray's time, lies on the moved sphere.
 TEST(MotionBlur, RaysMeetAMovingInstanceWhereTheirTimePutsIt) {
-  for (const bool analytic : {true, false}) {
-    const Scene scene = loadScene(writeScene("ball.json", ballScene(analytic)));
+  for (const std::string kind : {"analytic", "tessellated", "sdf"}) {
+    const Scene scene = loadScene(writeScene("ball.json", ballScene(kind)));
     const WorldGeometry world = flattenScene(scene);
     const RtDevice device;
     const RtScene rt(device, world, scene);
@@ -128,11 +144,12 @@ TEST(MotionBlur, RaysMeetAMovingInstanceWhereTheirTimePutsIt) {
         Hit hit;
         ASSERT_TRUE(rt.intersect(ray, 0.f, inf, hit, true));
         const bool onBall = std::fabs(dx) < 1.f;
-        EXPECT_EQ(hit.instance, onBall ? 1 : 0) << "t " << time << " dx " << dx;
+        EXPECT_EQ(hit.instance, onBall ? 1 : 0) << kind << " t " << time << " dx " << dx;
         EXPECT_EQ(rt.occluded(ray.origin, ray.direction, 0.f, 9.5f, time), onBall);
         if (!onBall) continue;
         const float height = 1.f + std::sqrt(1.f - dx * dx);  // the top of the sphere at dx
-        const float tol = analytic ? 1e-5f : 2e-3f;           // the tessellation's sag
+        // The tessellation's sag; sphere tracing's tolerance (1e-5 of the box diagonal).
+        const float tol = kind == "analytic" ? 1e-5f : kind == "sdf" ? 2e-4f : 2e-3f;
         EXPECT_NEAR(hit.t, 10.f - height, tol) << "t " << time << " dx " << dx;
         SurfacePoint p = makeSurfacePoint(
             scene, world, {hit.instance, hit.primitive, hit.u, hit.v, hit.analytic},
@@ -153,7 +170,7 @@ TEST(MotionBlur, RaysMeetAMovingInstanceWhereTheirTimePutsIt) {
 // by -(t - 1/2) motion at the frame's instant wherever the floor does not matter (on the ball),
 // and the floor under the ball's position at t (not at 1/2) is the one in shadow.
 TEST(MotionBlur, ShadingAndShadowRaysKeepTheHitsTime) {
-  const Scene scene = loadScene(writeScene("ball.json", ballScene(true)));
+  const Scene scene = loadScene(writeScene("ball.json", ballScene()));
   const WorldGeometry world = flattenScene(scene);
   const RtDevice device;
   const RtScene rt(device, world, scene);
@@ -244,21 +261,17 @@ TEST(MotionBlur, AnEdgeSweepingTheShutterBecomesALinearRamp) {
   EXPECT_LT(worstPath, 0.04);
 }
 
-// Nothing moves: the distributed image is what it was without the key (no time drawn, no
-// instance built), and a moving object at the frame's instant is where its transform puts it
-// (the raster passes' and rt_whitted's view), bit for bit against the static scene.
+// Nothing moves: a zero motion is no motion (no time drawn, no motion-blurred instance built),
+// and a moving object at the frame's instant is where its transform puts it (the raster
+// passes' and rt_whitted's view), bit for bit against the static scene.
 TEST(MotionBlur, StaticScenesAndTheFrameInstantAreUnchanged) {
   const Scene zero = loadScene(writeScene("zero.json", edgeScene(0.f)));
-  std::string text = edgeScene(0.f);
-  const std::string key = "\"motion\": [0.000000, 0, 0],";
-  text.erase(text.find(key), key.size());
-  const Scene none = loadScene(writeScene("none.json", text));
-  const nlohmann::json p = {{"spp", 16}, {"depth", 1}};
-  const CpuImage a = renderPass(zero, "rt_distributed", p, kW, kH);
-  const CpuImage b = renderPass(none, "rt_distributed", p, kW, kH);
-  EXPECT_EQ(a.words, b.words);
-  for (const bool analytic : {true, false}) {
-    const Scene moving = loadScene(writeScene("ball.json", ballScene(analytic)));
+  EXPECT_FALSE(zero.hasMotion());
+  const WorldGeometry zeroWorld = flattenScene(zero);
+  const RtDevice device;
+  EXPECT_EQ(RtScene(device, zeroWorld, zero).movingGeometries(), 0);
+  for (const std::string kind : {"analytic", "tessellated", "sdf"}) {
+    const Scene moving = loadScene(writeScene("ball.json", ballScene(kind)));
     Scene still = moving;
     for (Instance& inst : still.instances) inst.motion = vec3(0.f);
     const nlohmann::json w = {{"spp", 1}, {"depth", 3}};
@@ -266,6 +279,36 @@ TEST(MotionBlur, StaticScenesAndTheFrameInstantAreUnchanged) {
     const CpuImage s = renderPass(still, "rt_whitted", w, 64, 48);
     int differing = 0;
     for (std::size_t i = 0; i < m.words.size(); ++i) differing += m.words[i] != s.words[i];
-    EXPECT_EQ(differing, 0) << (analytic ? "analytic" : "tessellated");
+    EXPECT_EQ(differing, 0) << kind;
+  }
+}
+
+// The raster side's snapshots (sceneAtTime, the accumulation buffer's scenes): the scene at time
+// t is static, its moving instances placed where the rays at t meet them, so that a ray at t on
+// the moving scene and the same ray at the frame's instant on the snapshot see the same thing.
+TEST(MotionBlur, SnapshotAtATimeIsWhatRaysAtThatTimeSee) {
+  const Scene moving = loadScene(writeScene("ball.json", ballScene()));
+  const WorldGeometry movingWorld = flattenScene(moving);
+  const RtDevice device;
+  const RtScene movingRt(device, movingWorld, moving);
+  const WhittedTracer movingTracer(moving, movingWorld, movingRt, {5, 1});
+  for (const float time : {0.f, 0.3f, 0.9f}) {
+    const Scene snapshot = sceneAtTime(moving, time);
+    EXPECT_FALSE(snapshot.hasMotion());
+    EXPECT_EQ(vec3(snapshot.instances[1].transform[3]), vec3((time - 0.5f) * 4.f, 1.f, 0.f));
+    EXPECT_EQ(snapshot.instances[0].transform, moving.instances[0].transform);
+    const WorldGeometry world = flattenScene(snapshot);
+    const RtScene rt(device, world, snapshot);
+    EXPECT_EQ(rt.movingGeometries(), 0);
+    const WhittedTracer tracer(snapshot, world, rt, {5, 1});
+    for (int k = 0; k < 16; ++k) {
+      const vec3 target((float(k % 4) - 1.5f) * 1.2f + (time - 0.5f) * 4.f, 0.6f,
+                        (float(k / 4) - 1.5f) * 0.8f);
+      const vec3 eye(0.f, 6.f, 9.f);
+      const vec3 d = glm::normalize(target - eye);
+      const vec3 a = movingTracer.radiance(Ray{eye, d, time}, 1, 0u);
+      const vec3 b = tracer.radiance(Ray{eye, d, kFrameTime}, 1, 0u);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 1e-4f) << "t " << time << " ray " << k;
+    }
   }
 }

@@ -2,8 +2,11 @@
 
 #include <unistd.h>
 
+#include <bit>
+#include <cstdint>
 #include <cstdio>
 
+#include "engine/core/error.h"
 #include "engine/core/timing.h"
 #include "engine/graph/export.h"
 #include "passes/registry.h"
@@ -59,6 +62,40 @@ GraphRun runCompiled(CompiledGraph graph, RenderWorld& world,
     run.outputs[name] = ex.output(name);
   }
   return run;
+}
+
+GraphRun runAccumulated(const Recipe& recipe,
+                        std::span<const std::unique_ptr<RenderWorld>> worlds,
+                        const FrameSettings& frame, const std::vector<std::string>& outputs,
+                        int warmup, int frames) {
+  GraphRun total;
+  for (std::size_t k = 0; k < worlds.size(); ++k) {
+    GraphRun run = runGraph(recipe, *worlds[k], frame, {outputs.front()}, warmup, frames);
+    const CpuImage& image = run.outputs.at(outputs.front());
+    if (image.desc.format != Format::RGBA32F)
+      throw Error("the accumulation buffer averages RGBA32F images; " + outputs.front() +
+                  " is not one");
+    if (k == 0) {
+      total = std::move(run);
+      continue;
+    }
+    CpuImage& sum = total.outputs.at(outputs.front());
+    for (std::size_t w = 0; w < sum.words.size(); ++w)
+      sum.words[w] = std::bit_cast<std::uint32_t>(std::bit_cast<float>(sum.words[w]) +
+                                                  std::bit_cast<float>(image.words[w]));
+    total.totalMs += run.totalMs;
+    total.firstFrameMs += run.firstFrameMs;
+    total.rays += run.rays;
+    for (const auto& [node, ms] : run.passMs.items())
+      total.passMs[node] = total.passMs.value(node, 0.0) + ms.get<double>();
+    for (const auto& [what, ms] : run.oneTimeMs) total.oneTimeMs[what] += ms;
+  }
+  if (worlds.size() > 1) {
+    CpuImage& sum = total.outputs.at(outputs.front());
+    const float scale = 1.f / float(worlds.size());
+    for (std::uint32_t& w : sum.words) w = std::bit_cast<std::uint32_t>(std::bit_cast<float>(w) * scale);
+  }
+  return total;
 }
 
 // One line of progress: a bar on a terminal, a plain line otherwise (logs, CI).

@@ -2,6 +2,8 @@
 // Runs one recipe for a comparison: warm-up frames, measured frames, and copies of the
 // requested outputs.
 #include <map>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,16 @@ GraphRun runGraph(const Recipe& recipe, RenderWorld& world, const FrameSettings&
 // The same for a graph already compiled for `world` with `outputs` (compare inspects it first).
 GraphRun runCompiled(CompiledGraph graph, RenderWorld& world,
                      const std::vector<std::string>& outputs, int warmup, int frames);
+
+// The accumulation buffer (Haeberli and Akeley, "The Accumulation Buffer", SIGGRAPH 1990): the
+// recipe run on each world (a scene's snapshot at one instant of the shutter, sceneAtTime) and
+// the first output averaged over them; the other outputs are dropped. The N frames make one
+// frame of the technique: times (totalMs, passMs, firstFrameMs), rays and one-time costs are
+// summed; graph, timings and first-frame details are the first instant's.
+GraphRun runAccumulated(const Recipe& recipe,
+                        std::span<const std::unique_ptr<RenderWorld>> worlds,
+                        const FrameSettings& frame, const std::vector<std::string>& outputs,
+                        int warmup, int frames);
 
 // The resource that feeds shade's input for `slot` ("visibility" -> "shadows.visibility"),
 // or empty when the recipe has no producer for it.

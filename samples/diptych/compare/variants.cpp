@@ -95,6 +95,21 @@ std::vector<Variant> surfaceDetailVariants() {
   return out;
 }
 
+std::vector<Variant> motionVariants(const PassRegistry& registry) {
+  constexpr int kInstants = 8;
+  const std::vector<Variant> defaults = defaultVariants(registry);  // hybrid-exact, raster first
+  std::vector<Variant> out;
+  for (const char* base : {"raster", "hybrid-exact"}) {
+    Variant v = *std::find_if(defaults.begin(), defaults.end(),
+                              [&](const Variant& d) { return d.name == base; });
+    v.name = std::string(base == std::string("raster") ? "raster" : "hybrid") + "-accumulation-" +
+             std::to_string(kInstants);
+    v.shutterSamples = kInstants;
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
 namespace {
 bool changesDetail(const Scene& scene, const Variant& variant) {
   const auto detail = parseSurfaceDetail(variant.surfaceDetail);
@@ -105,7 +120,8 @@ bool changesDetail(const Scene& scene, const Variant& variant) {
 nlohmann::json variantSceneState(const Scene& scene, const Variant& variant) {
   return {{"tessellation", std::max(variant.tessellation, 0)},
           {"surface_detail",
-           changesDetail(scene, variant) ? variant.surfaceDetail : std::string("as authored")}};
+           changesDetail(scene, variant) ? variant.surfaceDetail : std::string("as authored")},
+          {"shutter_samples", std::max(variant.shutterSamples, 0)}};
 }
 
 std::optional<Scene> variantScene(const Scene& scene, const Variant& variant) {
@@ -132,7 +148,7 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
         throw InputError(spec, place, "expected an object with a \"name\"");
       for (const auto& [key, value] : v.items())
         if (key != "name" && key != "recipe" && key != "slots" && key != "tessellation" &&
-            key != "surface_detail")
+            key != "surface_detail" && key != "shutter_samples")
           throw InputError(spec, place + "." + key, "unknown key");
       Variant variant{v["name"].get<std::string>(), "", {}};
       if (!names.insert(variant.name).second)
@@ -163,6 +179,12 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
                            "expected \"flat\", \"bump\", \"normal_map\" or \"displaced\"");
         variant.surfaceDetail = d.get<std::string>();
       }
+      if (v.contains("shutter_samples")) {
+        const auto& n = v["shutter_samples"];
+        if (!n.is_number_integer() || n.get<long long>() < 2 || n.get<long long>() > 256)
+          throw InputError(spec, place + ".shutter_samples", "expected an integer in 2..256");
+        variant.shutterSamples = n.get<int>();
+      }
       out.push_back(variant);
     }
     return out;
@@ -171,6 +193,7 @@ std::vector<Variant> loadVariants(const std::string& spec, const PassRegistry& r
   for (const Variant& v : geometryVariants()) all.push_back(v);
   for (const Variant& v : surfaceDetailVariants()) all.push_back(v);
   for (const Variant& v : textureLodVariants(true, true)) all.push_back(v);
+  for (const Variant& v : motionVariants(registry)) all.push_back(v);
   std::vector<Variant> out;
   std::size_t start = 0;
   while (start <= spec.size()) {

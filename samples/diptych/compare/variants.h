@@ -33,6 +33,11 @@ struct Variant {
   // "flat", "bump", "normal_map" or "displaced": how bump-mapped materials are rendered, the
   // "surface detail" axis (engine/shading/surface_detail.h); empty: as the scene says (bump).
   std::string surfaceDetail;
+  // > 1: the accumulation buffer (Haeberli and Akeley, SIGGRAPH 1990), the raster side's motion
+  // blur: the frame rendered on the scene's static snapshots (sceneAtTime) at the N instants
+  // (k + 1/2) / N of the shutter, k = 0..N-1, and the images averaged; its time is the N frames'.
+  // 0: the frame's instant, as every other variant.
+  int shutterSamples = 0;
   // The recipe with the overrides applied. exactTextureSamples > 0: the recipe's (built-in or
   // file) texture_supersample, the texture_filtering slot's exact producer, takes N = that many
   // samples per axis before the overrides (compare's --texture-samples), and so do its
@@ -53,12 +58,16 @@ std::vector<Variant> textureLodVariants(bool reflective, bool transmissive);
 // The surface-detail axis, added to the defaults when the scene has bump maps: the all-exact
 // hybrid with them flat, bump-mapped, normal-mapped (baked from the same height) and displaced.
 std::vector<Variant> surfaceDetailVariants();
+// The motion-blur axis, added to the defaults when something in the scene moves: the all-raster
+// and the all-exact hybrid frames through the accumulation buffer of 8 instants.
+std::vector<Variant> motionVariants(const PassRegistry& registry);
 // The scene a variant runs on: tessellated (geometry axis), then with its surface detail
 // rendered as the variant says; std::nullopt when that is the scene itself.
 std::optional<Scene> variantScene(const Scene& scene, const Variant& variant);
 // The scene state variantScene gives a variant, for compare's frame signature (same_frame.h):
 // {"tessellation": N, or 0 for as authored; "surface_detail": the mode it applies, or "as
-// authored" (also where the scene has no bump maps, or the mode is bump: nothing changes)}.
+// authored" (also where the scene has no bump maps, or the mode is bump: nothing changes);
+// "shutter_samples": its accumulation buffer's N, or 0}.
 nlohmann::json variantSceneState(const Scene& scene, const Variant& variant);
 // A .json file ({"variants": [{"name", "recipe"?, "slots"?}]}) or comma-separated names from
 // the default set. Throws InputError naming the file/element or the unknown name.
