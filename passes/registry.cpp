@@ -3,6 +3,7 @@
 #include "engine/core/error.h"
 #include "passes/cpu/no_shadows.h"
 #include "passes/cpu/shade.h"
+#include "passes/cpu/wag_shadows.h"
 #include "passes/raster/env_cube.h"
 #include "passes/raster/env_dynamic_cube.h"
 #include "passes/raster/env_equirect.h"
@@ -63,6 +64,13 @@ const PassRegistry& builtinPasses() {
         {.name = "planar_shadows",
          .slot = "visibility",
          .summary = "light visibility by shadow polygons projected onto planar receivers (GL)"});
+    r.add<WagShadowsPass>(
+        {.name = "wag_shadows",
+         .slot = "visibility",
+         .summary = "light visibility by object-precision shadows: lit polygons clipped from "
+                    "the light, Weiler-Atherton-Greenberg (CPU)",
+         .presets = {{"wag-shadows", "update=static"},
+                     {"wag-shadows-per-frame", "update=every_frame"}}});
     r.add<NoShadowsPass>({.name = "no_shadows",
                           .slot = "visibility",
                           .summary = "no shadows: V_i = 1 everywhere, the baseline (CPU)"});

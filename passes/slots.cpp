@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 
+#include "engine/core/check.h"
 #include "engine/core/error.h"
 #include "engine/core/known.h"
 
@@ -93,6 +94,13 @@ const TechniqueSlot* findTechniqueSlot(const std::string& name) {
   for (const TechniqueSlot& s : techniqueSlots())
     if (s.name == name) return &s;
   return nullptr;
+}
+
+void checkVisibilitySignal(const CpuImage& out, int w, int h, std::size_t lights,
+                           const std::string& pass) {
+  DIPTYCH_CHECK(out.channels() == 1 && out.desc.width == w && out.desc.height == h &&
+                    out.desc.layers >= int(lights),
+                pass + ": visibility is not R32F of the frame's size with a layer per light");
 }
 
 SlotIo slotIo(PassBuilder& b, const std::string& name) {

@@ -43,6 +43,10 @@ struct SlotIo {
   ResourceId hits = kNoResource, signal = kNoResource;
 };
 SlotIo slotIo(PassBuilder& builder, const std::string& slot);
+// A CPU visibility producer's output as its row writes assume: R32F of the frame's w x h, a
+// layer per light (at least). Throws Error naming the pass otherwise.
+void checkVisibilitySignal(const CpuImage& out, int w, int h, std::size_t lights,
+                           const std::string& pass);
 
 struct SlotOverride {
   std::string slot, type;

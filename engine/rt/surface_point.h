@@ -58,8 +58,9 @@ vec4 resolvedColorAt(const Scene& scene, const WorldGeometry& world, const Surfa
 // p (made by makeSurfacePoint, at kFrameTime) as a ray at shutter time `time` found it: a moving
 // instance's point displaced by (time - kFrameTime) * WorldMesh::motion, the translation Embree
 // applied to that ray (rt_scene_instancing.h), its offset magnitude grown by half the motion so
-// that offsetRayOrigin covers the rounding of Embree's translation and of the sum; p.time = time, which spawnRay and the
-// shadow receivers pass on. Normals are unchanged: the motion is a translation.
+// that offsetRayOrigin covers the rounding of Embree's translation and of the sum; p.time =
+// time, which spawnRay and the shadow receivers pass on. Normals are unchanged: the motion is a
+// translation.
 void atShutterTime(SurfacePoint& p, const WorldGeometry& world, float time);
 
 // A raster (G-buffer) hit on the tessellation of an analytic instance, moved onto the exact

@@ -301,7 +301,8 @@ void validateScene(Scene& scene) {
     check.magnitude(box.hi, kMaxCoordinate, "scene bounds (highest corner)");
     // Moving instances reach half their motion beyond the frame instant's bounds.
     vec3 reach(0.f);
-    for (const Instance& inst : scene.instances) reach = glm::max(reach, 0.5f * glm::abs(inst.motion));
+    for (const Instance& inst : scene.instances)
+      reach = glm::max(reach, 0.5f * glm::abs(inst.motion));
     if (reach != vec3(0.f))
       check.magnitude(glm::max(glm::abs(box.lo), glm::abs(box.hi)) + reach, kMaxCoordinate,
                       "scene bounds swept by the motion");

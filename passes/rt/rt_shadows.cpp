@@ -7,7 +7,6 @@
 #include <bit>
 #include <vector>
 
-#include "engine/core/check.h"
 #include "engine/graph/render_world.h"
 #include "engine/rt/ray_offset.h"
 #include "engine/rt/shadow_rays.h"
@@ -34,9 +33,7 @@ void RtShadowsPass::execute(PassContext& c) {
   const RtScene& rt = world.rtScene();
 
   // The row-pointer writes below assume one float per texel, the frame's size, a layer a light.
-  DIPTYCH_CHECK(out.channels() == 1 && out.desc.width == w && out.desc.height == h &&
-                    out.desc.layers >= int(lights.size()),
-                "rt_shadows: visibility is not R32F of the frame's size with a layer per light");
+  checkVisibilitySignal(out, w, h, lights.size(), "rt_shadows");
   const ExactHitBuffer& exact = exactHits(c, io_.hits);
   const std::size_t lightCount = lights.size();
   std::atomic<std::size_t> covered{0};

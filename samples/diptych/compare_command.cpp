@@ -85,8 +85,8 @@ std::optional<std::size_t> exactVariant(const std::vector<Variant>& variants,
                                         const std::vector<int>& sameAs) {
   for (std::size_t i = 0; i < variants.size(); ++i) {
     const Variant& v = variants[i];
-    if (v.recipeFile.empty() && v.slots.empty() && v.tessellation == 0 &&
-        v.surfaceDetail.empty() && v.shutterSamples == 0)
+    if (v.recipeFile.empty() && v.slots.empty() && v.tessellation == 0 && v.surfaceDetail.empty() &&
+        v.shutterSamples == 0)
       return sameAs[i] < 0 ? i : std::size_t(sameAs[i]);
   }
   return std::nullopt;
@@ -407,8 +407,10 @@ void runCompare(const CompareOptions& o) {
     // per-slot signals, which belong to one instant, are not compared.
     for (int k = 0; k < v.shutterSamples; ++k) {
       const float time = (float(k) + 0.5f) / float(v.shutterSamples);
-      instantScenes[i].push_back(std::make_unique<Scene>(sceneAtTime(variantWorld(i).scene(), time)));
-      instantWorlds[i].push_back(std::make_unique<RenderWorld>(*instantScenes[i].back(), context.get()));
+      instantScenes[i].push_back(
+          std::make_unique<Scene>(sceneAtTime(variantWorld(i).scene(), time)));
+      instantWorlds[i].push_back(
+          std::make_unique<RenderWorld>(*instantScenes[i].back(), context.get()));
     }
     if (v.shutterSamples > 0) outs = {recipe.outputs.front()};
     variantOutputs[i] = outs;

@@ -77,7 +77,8 @@ std::string ballScene(const std::string& kind = "analytic") {
                   "ball": {"color": [0.9, 0.3, 0.2], "kd": 0.7, "ks": 0.3, "exponent": 20}},
     "lights": [{"type": "directional", "direction": [0, -1, 0], "intensity": 1}],
     "objects": [{"type": "plane", "size": [40, 40], "material": "floor"},
-                {)" + ball + R"( "material": "ball",
+                {)" +
+         ball + R"( "material": "ball",
                  "transform": {"translate": [0, 1, 0]}, "motion": [4, 0, 0]}]})";
 }
 
@@ -112,8 +113,7 @@ TEST(MotionBlur, SceneFileMotionIsReadAndChecked) {
   EXPECT_NE(far.find("magnitude"), std::string::npos) << far;
   // Motion and placement each within the limit, but the sweep reaches past it:
   // 6e11 + 40 + 9e11 / 2 > 1e12.
-  const std::string swept =
-      failure(R"([9e11, 0, 0], "transform": {"translate": [6e11, 0, 0]})");
+  const std::string swept = failure(R"([9e11, 0, 0], "transform": {"translate": [6e11, 0, 0]})");
   EXPECT_NE(swept.find("swept by the motion"), std::string::npos) << swept;
   // A glTF include's instances all move; a similarity transform scales the motion.
   const Scene included = loadScene(writeScene(
@@ -152,8 +152,7 @@ TEST(MotionBlur, RaysMeetAMovingInstanceWhereTheirTimePutsIt) {
         const float tol = kind == "analytic" ? 1e-5f : kind == "sdf" ? 2e-4f : 2e-3f;
         EXPECT_NEAR(hit.t, 10.f - height, tol) << "t " << time << " dx " << dx;
         SurfacePoint p = makeSurfacePoint(
-            scene, world, {hit.instance, hit.primitive, hit.u, hit.v, hit.analytic},
-            ray.direction);
+            scene, world, {hit.instance, hit.primitive, hit.u, hit.v, hit.analytic}, ray.direction);
         atShutterTime(p, world, time);
         EXPECT_EQ(p.time, time);
         EXPECT_NEAR(p.position.x, centre + dx, 1e-5f);
@@ -225,7 +224,8 @@ TEST(MotionBlur, ShadingAndShadowRaysKeepTheHitsTime) {
 TEST(MotionBlur, AnEdgeSweepingTheShutterBecomesALinearRamp) {
   const double D = 1.0;
   const Scene scene = loadScene(writeScene("edge.json", edgeScene(float(D))));
-  const CpuImage blurred = renderPass(scene, "rt_distributed", {{"spp", 256}, {"depth", 1}}, kW, kH);
+  const CpuImage blurred =
+      renderPass(scene, "rt_distributed", {{"spp", 256}, {"depth", 1}}, kW, kH);
   const CpuImage sharp = renderPass(scene, "rt_whitted", {{"spp", 1}}, kW, kH);
   const CpuImage path = renderPass(scene, "rt_path", {{"spp", 64}, {"max_depth", 1}}, kW, kH);
   const double halfSweep = 0.5 * D * kPixelsPerUnit;  // pixels either side of the centre line

@@ -64,8 +64,7 @@ GraphRun runCompiled(CompiledGraph graph, RenderWorld& world,
   return run;
 }
 
-GraphRun runAccumulated(const Recipe& recipe,
-                        std::span<const std::unique_ptr<RenderWorld>> worlds,
+GraphRun runAccumulated(const Recipe& recipe, std::span<const std::unique_ptr<RenderWorld>> worlds,
                         const FrameSettings& frame, const std::vector<std::string>& outputs,
                         int warmup, int frames) {
   GraphRun total;
@@ -93,7 +92,8 @@ GraphRun runAccumulated(const Recipe& recipe,
   if (worlds.size() > 1) {
     CpuImage& sum = total.outputs.at(outputs.front());
     const float scale = 1.f / float(worlds.size());
-    for (std::uint32_t& w : sum.words) w = std::bit_cast<std::uint32_t>(std::bit_cast<float>(w) * scale);
+    for (std::uint32_t& w : sum.words)
+      w = std::bit_cast<std::uint32_t>(std::bit_cast<float>(w) * scale);
   }
   return total;
 }

@@ -44,8 +44,7 @@ GraphRun runCompiled(CompiledGraph graph, RenderWorld& world,
 // the first output averaged over them; the other outputs are dropped. The N frames make one
 // frame of the technique: times (totalMs, passMs, firstFrameMs), rays and one-time costs are
 // summed; graph, timings and first-frame details are the first instant's.
-GraphRun runAccumulated(const Recipe& recipe,
-                        std::span<const std::unique_ptr<RenderWorld>> worlds,
+GraphRun runAccumulated(const Recipe& recipe, std::span<const std::unique_ptr<RenderWorld>> worlds,
                         const FrameSettings& frame, const std::vector<std::string>& outputs,
                         int warmup, int frames);
 
