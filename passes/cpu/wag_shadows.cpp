@@ -5,8 +5,10 @@
 #include <bit>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
+#include "engine/core/error.h"
 #include "engine/core/timing.h"
 #include "engine/graph/render_world.h"
 #include "engine/scene/lit_polygons.h"
@@ -82,7 +84,14 @@ void WagShadowsPass::execute(PassContext& c) {
   tbb::parallel_for(0, h, [&](int y) {
     thread_local std::vector<std::optional<SurfaceHit>> row;
     row.resize(std::size_t(w));
-    for (int x = 0; x < w; ++x) row[std::size_t(x)] = triangleTexel(hits, geometry, pinhole, x, y);
+    for (int x = 0; x < w; ++x) {
+      row[std::size_t(x)] = triangleTexel(hits, geometry, pinhole, x, y);
+      // A texel naming no triangle of this world is an Error (hits_texel.h), not a stray read.
+      if (const auto& hit = row[std::size_t(x)];
+          hit && hit->primitive >= texelMesh(geometry, *hit).indices.size() / 3)
+        throw Error("G-buffer hits texel: primitive " + std::to_string(hit->primitive) +
+                    " out of range in instance " + std::to_string(hit->instance));
+    }
     for (int l = 0; l < out.desc.layers; ++l) {
       std::uint32_t* texels = out.row(y, l);
       for (int x = 0; x < w; ++x) {

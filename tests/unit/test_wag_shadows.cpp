@@ -119,6 +119,32 @@ TEST(WagShadows, ShadowOfASquareIsItsProjection) {
       LitPolygons::Coverage::Lit);
 }
 
+// The thresholds are local (review of session 25): a 5 mm square 5 cm above a floor triangle
+// with 2e4-unit legs, lit from straight above, still shadows its own area, where thresholds
+// relative to the floor's area or the scene's extent dropped it (the floor stayed lit).
+TEST(WagShadows, ASmallOccluderOnAHugeFloorStillCastsItsShadow) {
+  WorldGeometry world;
+  world.meshes.push_back(
+      mesh({vec3(-1e4f, 0, -1e4f), vec3(-1e4f, 0, 1e4f), vec3(1e4f, 0, -1e4f)}, 0));
+  // The square spans x, z in [-1, -1 + a], inside the floor triangle (x + z <= 0).
+  const float a = 0.005f, y = 0.05f, o = -1.f;
+  world.meshes.push_back(mesh({vec3(o, y, o), vec3(o, y, o + a), vec3(o + a, y, o),
+                               vec3(o + a, y, o), vec3(o, y, o + a), vec3(o + a, y, o + a)},
+                              1));
+  const LitPolygons sun(world, {true, true},
+                        light(LightType::Directional, vec3(0), vec3(0, -1, 0)));
+  ASSERT_EQ(sun.coverage(0, 0), LitPolygons::Coverage::Partial);
+  // Floor barycentrics of (x, z): u = (z + 1e4) / 2e4 (vertex 1), v = (x + 1e4) / 2e4 (vertex 2).
+  const auto at = [](double x, double z) {
+    return vec2(float((z + 1e4) / 2e4), float((x + 1e4) / 2e4));
+  };
+  // The square's centre is shadowed; a point 1 cm beside it is lit. (Float barycentrics of a
+  // 2e4 floor resolve ~1 mm.)
+  const double c = o + 0.5 * a;
+  EXPECT_EQ(sun.visibility(0, 0, at(c, c).x, at(c, c).y), 0.f);
+  EXPECT_EQ(sun.visibility(0, 0, at(c + 0.01, c).x, at(c + 0.01, c).y), 1.f);
+}
+
 // Two triangles that pass through each other (an X seen from the side), lit from straight
 // above: each is in front of the other on one side of their crossing line, so each shadows the
 // other there and only there. A receiver's lit part is where its plane lies above the other's,
