@@ -363,8 +363,31 @@ LitPolygons::LitPolygons(const WorldGeometry& world, const std::vector<bool>& ca
     std::vector<std::uint64_t> clips(polys.size(), 0);
     tbb::parallel_for(std::size_t(0), polys.size(), [&](std::size_t k) {
       const Projected& r = polys[k];
-      std::vector<Poly> pieces = {r.corners};
-      std::vector<Box> boxes = {r.box};
+      // A receiver spanning many cells of the caster grid starts as its parts in those cells:
+      // every cut then stays inside the cells its occluder reaches. Whole, each of thousands of
+      // small occluders scattered over a floor cut strips across all of it that the next ones
+      // cut again (5k made 66k pieces in 2 s, 20k made 614k in 116 s; review of session 25).
+      std::vector<Poly> pieces;
+      std::vector<Box> boxes;
+      const glm::ivec2 lo = cellOf(r.box.lo), hi = cellOf(r.box.hi);
+      if ((hi.x - lo.x + 1) * (hi.y - lo.y + 1) <= 4) {
+        pieces = {r.corners};
+        boxes = {r.box};
+      } else {
+        const dvec2 step = size / double(g);
+        for (int y = lo.y; y <= hi.y; ++y)
+          for (int x = lo.x; x <= hi.x; ++x) {
+            // Shared boundaries computed by the same expression on both sides: no gaps.
+            const dvec2 a = all.lo + dvec2(x, y) * step, b = all.lo + dvec2(x + 1, y + 1) * step;
+            Poly part = r.corners;
+            for (const HalfPlane& side : {HalfPlane{-1.0, 0.0, a.x}, HalfPlane{1.0, 0.0, -b.x},
+                                          HalfPlane{0.0, -1.0, a.y}, HalfPlane{0.0, 1.0, -b.y}})
+              part = clipped(part, side);
+            if (part.empty() || std::abs(signedArea(part)) <= 1e-12 * r.area) continue;
+            boxes.push_back(boxOf(part));
+            pieces.push_back(std::move(part));
+          }
+      }
       // What counts as rounding: relative to the smaller of receiver and occluder (below), so
       // that a small occluder on a large receiver still counts.
       const double receiverTiny = 1e-12 * r.area;
@@ -377,7 +400,6 @@ LitPolygons::LitPolygons(const WorldGeometry& world, const std::vector<bool>& ca
       }
       // The receiver's cells, then the wide casters (cell index g * g).
       std::vector<std::size_t> cells;
-      const glm::ivec2 lo = cellOf(r.box.lo), hi = cellOf(r.box.hi);
       for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x) cells.push_back(std::size_t(y) * g + x);
       cells.push_back(std::size_t(g) * g);
