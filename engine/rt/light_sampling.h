@@ -43,6 +43,8 @@ vec3 sampleCosine(const vec3& n, vec2 u);
 std::uint32_t pcgHash(std::uint32_t v);
 
 // The 24 high bits of a hash as a float in [0, 1): exactly representable, never 1.
-inline float unitFloat(std::uint32_t h) { return float(h >> 8) * (1.f / 16777216.f); }
+inline float unitFloat(std::uint32_t h) {
+  return float(h >> 8) * (1.f / 16777216.f);
+}
 
 }  // namespace diptych

@@ -289,7 +289,7 @@ RTCIntersectContextFlags RtScene::streamFlag(bool coherent) const {
   // ms, rt_reflection 53.2 against 71.7, same image); on whitted, which has no instances, the
   // coherent flag saves rt_shadows a fifth (22.9 against 28.3): docs/benchmarks.md, session 17.
   return coherent && instanced_ == 0 && moving_ == 0 ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                     : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+                                                     : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
 }
 
 void RtScene::occludedTile(std::span<RTCRay> rays, bool coherent) const {

@@ -35,7 +35,7 @@ struct SurfacePoint {
   vec2 uv{0.f};  // analytic sphere: (0, 0) unless materialReadsUv (engine/scene/analytic_hit.h)
   int material = -1;                    // index into Scene::materials (-1: default)
   shading::ShadingMaterial resolved{};  // C with texture/checker, M_E with its texture
-  float time = kFrameTime;  // the shutter time of the ray that found it (atShutterTime)
+  float time = kFrameTime;              // the shutter time of the ray that found it (atShutterTime)
 };
 
 // Hot loops construct points in place in raw or reused storage (placement new, never destroyed:

@@ -18,7 +18,7 @@ inline constexpr float kFrameTime = 0.5f;
 
 struct Ray {
   vec3 origin;
-  vec3 direction;  // unit length
+  vec3 direction;           // unit length
   float time = kFrameTime;  // in the shutter interval [0, 1] (Embree's RTCRay::time)
 };
 

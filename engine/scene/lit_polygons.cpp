@@ -157,11 +157,11 @@ HalfPlane inFront(const View& view, const Projected& o, const Projected& r) {
           o.c / o.n.z - r.c / r.n.z + 1e-9 * std::max(o.magnitude, r.magnitude)};
 }
 
-// The inside of edge e of the convex polygon c (counter-clockwise when ccw, else walked
-// backwards): left of a -> b, cross(b - a, p - a) >= 0, as a half-plane -cross <= 0.
-HalfPlane leftOf(const Poly& c, std::size_t e, bool ccw) {
-  const dvec2 a = ccw ? c[e] : c[(e + 1) % c.size()];
-  const dvec2 b = ccw ? c[(e + 1) % c.size()] : c[e];
+// The inside of edge e of the counter-clockwise convex polygon c (a hull()): left of a -> b,
+// cross(b - a, p - a) >= 0, as a half-plane -cross <= 0.
+HalfPlane leftOf(const Poly& c, std::size_t e) {
+  const dvec2 a = c[e];
+  const dvec2 b = c[(e + 1) % c.size()];
   const dvec2 d = b - a;
   return {d.y, -d.x, d.x * a.y - d.y * a.x};
 }
@@ -171,7 +171,6 @@ HalfPlane leftOf(const Poly& c, std::size_t e, bool ccw) {
 // nothing changed.
 bool subtract(std::vector<Poly>& pieces, std::vector<Box>& boxes, const Poly& c, double tiny) {
   const Box cb = boxOf(c);
-  const bool ccw = true;  // c is a hull()
   bool changed = false;
   std::vector<Poly> out;
   std::vector<Box> outBoxes;
@@ -184,7 +183,7 @@ bool subtract(std::vector<Poly>& pieces, std::vector<Box>& boxes, const Poly& c,
     // Untouched unless the piece and c overlap in more than rounding.
     Poly inside = pieces[i];
     for (std::size_t e = 0; e < c.size() && !inside.empty(); ++e)
-      inside = clipped(inside, leftOf(c, e, ccw));
+      inside = clipped(inside, leftOf(c, e));
     if (inside.empty() || std::abs(signedArea(inside)) <= tiny) {
       out.push_back(std::move(pieces[i]));
       outBoxes.push_back(boxes[i]);
@@ -214,7 +213,7 @@ bool subtract(std::vector<Poly>& pieces, std::vector<Box>& boxes, const Poly& c,
       rest = clipped(rest, side);
     }
     for (std::size_t e = 0; e < c.size() && !rest.empty(); ++e) {
-      const HalfPlane left = leftOf(c, e, ccw);
+      const HalfPlane left = leftOf(c, e);
       // Right of the edge: outside c. As a hull: a sliver that rounding left slightly reflex
       // would answer the lookup's same-side test in a wedge beyond itself.
       Poly part = hull(clipped(rest, {-left.a, -left.b, -left.c}));
@@ -268,21 +267,14 @@ LitPolygons::LitPolygons(const WorldGeometry& world, const std::vector<bool>& ca
       views.push_back(v);
     }
   }
-  // The scene's extent (its box's diagonal, or the farthest vertex from a positional light), for
-  // the orthographic depth margin and the near plane.
-  dvec3 lo(1e300), hi(-1e300);
-  double extent = 0.0;
-  for (const WorldMesh& m : world.meshes)
-    for (const vec3& p : m.positions) {
-      lo = glm::min(lo, dvec3(p));
-      hi = glm::max(hi, dvec3(p));
-      if (light.type != LightType::Directional)
-        extent = std::max(extent, glm::length(dvec3(p) - dvec3(light.position)));
-    }
-  if (light.type == LightType::Directional && lo.x <= hi.x) extent = glm::length(hi - lo);
-  const double nearPlane = 1e-7 * std::max(extent, 1e-30);
+  // The near plane of a positional light's frusta: 1e-7 of its reach (the farthest vertex).
+  double reach = 0.0;
+  if (light.type != LightType::Directional)
+    for (const WorldMesh& m : world.meshes)
+      for (const vec3& p : m.positions)
+        reach = std::max(reach, glm::length(dvec3(p) - dvec3(light.position)));
+  const double nearPlane = 1e-7 * std::max(reach, 1e-30);
 
-  std::vector<std::vector<Piece>> lit;  // per projected polygon of a view, in barycentrics
   std::vector<std::uint8_t> touchedTriangle;
   std::vector<std::size_t> base(world.meshes.size() + 1, 0);
   for (std::size_t m = 0; m < world.meshes.size(); ++m)
@@ -429,8 +421,9 @@ LitPolygons::LitPolygons(const WorldGeometry& world, const std::vector<bool>& ca
       for (const Poly& piece : result[k]) {
         Piece bary;
         for (const dvec2& c : piece) {
-          const dvec3 q = view.perspective ? dvec3(c, 1.0) * (p.c / glm::dot(p.n, dvec3(c, 1.0)))
-                                           : dvec3(c, depthAt(view, p, c));
+          // Perspective: s (u, v, 1) at the plane's depth s; orthographic: (u, v, depth).
+          const double depth = depthAt(view, p, c);
+          const dvec3 q = view.perspective ? dvec3(c, 1.0) * depth : dvec3(c, depth);
           const dvec3 d = q - p.q0;
           bary.push_back(
               {glm::dot(glm::cross(d, p.e2), p.n) / nn, glm::dot(glm::cross(p.e1, d), p.n) / nn});

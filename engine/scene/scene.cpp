@@ -9,10 +9,10 @@ const Material& Scene::material(int index) const {
   return materials[index];
 }
 
-bool Scene::hasMotion() const {
-  for (const Instance& inst : instances)
-    if (inst.motion != vec3(0.f)) return true;
-  return false;
+int Scene::movingInstances() const {
+  int n = 0;
+  for (const Instance& inst : instances) n += inst.motion != vec3(0.f);
+  return n;
 }
 
 Aabb Scene::bounds() const {

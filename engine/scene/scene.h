@@ -214,7 +214,8 @@ struct Scene {
 
   const Material& material(int index) const;  // -1 or out of range -> default material
   Aabb bounds() const;                        // world-space bounds of all instances
-  bool hasMotion() const;  // an instance with a non-zero Instance::motion (motion blur)
+  int movingInstances() const;  // instances with a non-zero Instance::motion (motion blur)
+  bool hasMotion() const { return movingInstances() > 0; }
 };
 
 }  // namespace diptych

@@ -55,7 +55,7 @@ struct WorldMesh {
   // that a ray hit reads it instead of a cross product, a square root and three divisions
   // (issue 14's profile). Empty in a mesh built by hand: geometricNormal then computes it.
   std::vector<vec3> faceNormals;
-  bool mirrored = false;                     // det(transform) < 0
+  bool mirrored = false;  // det(transform) < 0
   vec3 motion{0.f};  // Instance::motion: positions are at kFrameTime, displaced by it over time
   std::optional<AnalyticInstance> analytic;  // the exact surface, for ray tracers (see Mesh)
 };

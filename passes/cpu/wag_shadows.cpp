@@ -69,11 +69,13 @@ void WagShadowsPass::execute(PassContext& c) {
   LitPolygons::Stats stats;
   for (const auto& l : *lit) {
     stats.polygons += l->stats().polygons;
+    stats.clips += l->stats().clips;
     stats.pieces += l->stats().pieces;
     stats.partial += l->stats().partial;
     stats.shadowed += l->stats().shadowed;
   }
   c.count("wag_polygons", double(stats.polygons));
+  c.count("wag_occluder_clips", double(stats.clips));
   c.count("wag_lit_pieces", double(stats.pieces));
   c.count("wag_partial_triangles", double(stats.partial));
   c.count("wag_shadowed_triangles", double(stats.shadowed));

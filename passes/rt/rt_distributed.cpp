@@ -111,8 +111,8 @@ void RtDistributedPass::execute(PassContext& c) {
                                     stratifiedSample(lensStratum[std::size_t(s)], spp_,
                                                      pcgHash(pixel ^ 0x4c454e53u)));
     if (shutter)
-      ray.time = (float(timeStratum[std::size_t(s)]) + unitFloat(pcgHash(seed ^ kTimeSalt))) /
-                 float(spp_);
+      ray.time =
+          (float(timeStratum[std::size_t(s)]) + unitFloat(pcgHash(seed ^ kTimeSalt))) / float(spp_);
     return ray;
   };
   // Without SDF objects a row's sample rays (neighbouring pixels, or one pixel's strata: all

@@ -219,8 +219,7 @@ void runCompare(const CompareOptions& o) {
   // Motion blur (docs/reference-renderers.md): only the distributed and path references draw
   // times over the shutter; rt_whitted and every variant show the frame's instant. Said once,
   // so that an error that is mostly the missing blur is read as such.
-  int moving = 0;
-  for (const Instance& inst : scene.instances) moving += inst.motion != vec3(0.f);
+  const int moving = scene.movingInstances();
   const bool blurredReference = moving > 0 && reference.passType != "rt_whitted";
   if (moving > 0)
     std::fprintf(stderr, "compare: %d moving instance(s): %s\n", moving,

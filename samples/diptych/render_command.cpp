@@ -240,8 +240,7 @@ void runRender(const RenderOptions& o) {
   }
   printTimingTable(graph, executor, o);
   if (scene.hasMotion()) {  // which frame of a moving scene this is (docs/reference-renderers.md)
-    int moving = 0;
-    for (const Instance& inst : scene.instances) moving += inst.motion != vec3(0.f);
+    const int moving = scene.movingInstances();
     std::string blurredBy;
     for (const GraphPass& p : graph.passes)
       if (!p.culled && (p.type == "rt_distributed" || p.type == "rt_path"))

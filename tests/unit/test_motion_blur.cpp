@@ -197,8 +197,9 @@ TEST(MotionBlur, ShadingAndShadowRaysKeepTheHitsTime) {
     rays.push_back(Ray{eye, toFloor, time});
     EXPECT_EQ(tracer.radiance(rays.back(), 1, 0u), vec3(0.f)) << time;
     const float lit = tracer.radiance(Ray{eye, toFloor, kFrameTime}, 1, 0u).x;
-    if (std::fabs(shift.x) > 1.f)
+    if (std::fabs(shift.x) > 1.f) {
       EXPECT_NEAR(lit, 0.8f, 1e-4f) << time;  // k_d C max(0, n.l) S = 0.8
+    }
   }
   EXPECT_EQ(onBall, 12);
   // The tiles rt_distributed shades (radianceTile: the hits' shadow rays as one stream) keep
