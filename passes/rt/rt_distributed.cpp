@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <new>
 #include <numeric>
 #include <span>
 #include <vector>
@@ -161,7 +162,11 @@ void RtDistributedPass::execute(PassContext& c) {
         if (lens) shuffle(lensStratum, pcgHash(pixel ^ 0x4c454e53u));
         if (shutter) shuffle(timeStratum, pcgHash(pixel ^ kTimeSalt));
         for (int s = 0; s < spp_; ++s) {
-          rays[filled] = sampleRay(x, y, s, lensStratum, timeStratum, seeds[filled]);
+          // In place (guaranteed copy elision): assigning the returned Ray reloaded its
+          // just-stored floats as 16-byte loads, a store-forwarding stall per sample (perf
+          // annotate: about half of this loop's own time).
+          ::new (static_cast<void*>(&rays[filled]))
+              Ray(sampleRay(x, y, s, lensStratum, timeStratum, seeds[filled]));
           pixelOf[filled] = x;
           if (++filled == kPrimaryTile) flush();
         }

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <new>
 #include <vector>
 
 #include "engine/graph/render_world.h"
@@ -71,7 +72,9 @@ void RtPathPass::execute(PassContext& c) {
       rngs[k] = PathRng{std::uint32_t(i), std::uint32_t(pass), std::uint32_t(seed_)};
       const vec2 jitter = rngs[k].next2();
       const vec2 lens = rngs[k].next2();
-      rays[k] = lensFrame.ray(float(x) + jitter.x, float(y) + jitter.y, lens);
+      // In place, as rt_distributed's sample rays (a store-forwarding stall when assigned).
+      ::new (static_cast<void*>(&rays[k]))
+          Ray(lensFrame.ray(float(x) + jitter.x, float(y) + jitter.y, lens));
       // Motion blur: each path at its own time in the shutter (drawn only where something
       // moves, so a static scene's paths keep their random sequence).
       if (shutter) rays[k].time = rngs[k].next();
