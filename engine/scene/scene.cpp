@@ -2,11 +2,10 @@
 
 namespace diptych {
 
-const Material& Scene::material(int index) const {
+const Material& Scene::defaultMaterial() {
   // Both sides visible (meshes without a material, JSON's default; docs/materials.md).
-  static const Material defaultMaterial{.name = "default", .doubleSided = true};
-  if (index < 0 || index >= int(materials.size())) return defaultMaterial;
-  return materials[index];
+  static const Material material{.name = "default", .doubleSided = true};
+  return material;
 }
 
 int Scene::movingInstances() const {

@@ -212,7 +212,13 @@ struct Scene {
   vec3 ambient{0.f};                  // A_G
   std::vector<std::string> warnings;  // recoveries made while loading, each naming the place
 
-  const Material& material(int index) const;  // -1 or out of range -> default material
+  // -1 or out of range -> the default material. Inline: every traced hit asks (several times);
+  // the default's function-local static paid a guard test and a call on each.
+  const Material& material(int index) const {
+    return index >= 0 && index < int(materials.size()) ? materials[std::size_t(index)]
+                                                       : defaultMaterial();
+  }
+  static const Material& defaultMaterial();
   Aabb bounds() const;                        // world-space bounds of all instances
   int movingInstances() const;  // instances with a non-zero Instance::motion (motion blur)
   bool hasMotion() const { return movingInstances() > 0; }
