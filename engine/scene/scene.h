@@ -219,7 +219,7 @@ struct Scene {
                                                        : defaultMaterial();
   }
   static const Material& defaultMaterial();
-  Aabb bounds() const;                        // world-space bounds of all instances
+  Aabb bounds() const;          // world-space bounds of all instances
   int movingInstances() const;  // instances with a non-zero Instance::motion (motion blur)
   bool hasMotion() const { return movingInstances() > 0; }
 };
