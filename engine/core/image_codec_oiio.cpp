@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/core/image_codec.h"
@@ -17,6 +18,7 @@ namespace {
 
 // A refusal inside the module, turned into Codec's false and message at its boundary.
 struct Failure {
+  explicit Failure(std::string text) : message(std::move(text)) {}
   std::string message;
 };
 
