@@ -51,7 +51,7 @@ vec3 WhittedTracer::radianceAt(const Ray& ray, int depth, std::uint32_t seed, co
 
 void WhittedTracer::countRay(const Ray& ray, int depth, const Hit* hit) const {
   rays_.add(1);
-  if (observer_) observer_({ray, depth, hit ? std::optional<Hit>(*hit) : std::nullopt});
+  observeRay(ray, depth, hit);
 }
 
 SurfacePoint WhittedTracer::surfaceAt(const Ray& ray, const Hit& h, const RayCone* cone,

@@ -165,6 +165,10 @@ class WhittedTracer {
   // with its texture LOD from the ray's cone where asked (coned: then `at` is the cone at the
   // point); EVALUAMILREC given the direct light's sum.
   void countRay(const Ray& ray, int depth, const Hit* hit) const;
+  // countRay without the count (radianceTile counts its whole tile at once).
+  void observeRay(const Ray& ray, int depth, const Hit* hit) const {
+    if (observer_) observer_({ray, depth, hit ? std::optional<Hit>(*hit) : std::nullopt});
+  }
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit, const RayCone* cone, RayCone& at,
                          bool& coned) const;
   vec3 shadeGiven(const SurfacePoint& point, const vec3& v, int depth, std::uint32_t seed,

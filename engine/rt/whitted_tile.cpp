@@ -79,7 +79,7 @@ void WhittedTracer::radianceTile(std::span<const Ray> rays, std::span<const Hit*
   rays_.add(n);  // countRay's count for the whole tile: one add, not one per ray
   for (std::size_t i = 0; i < n; ++i) {
     const Ray& ray = rays[i];
-    if (observer_) observer_({ray, depth, hits[i] ? std::optional<Hit>(*hits[i]) : std::nullopt});
+    observeRay(ray, depth, hits[i]);
     if (!hits[i]) {
       out[i] = sampleEnvironment(scene_.environment, ray.direction);
       continue;

@@ -132,7 +132,7 @@ void RtSecondaryPass::execute(PassContext& c) {
     };
     for (int x = 0; x < frame.width; ++x) {
       vec3 radiance(0.f);
-      if (steps) beginSdfPixel();  // a thread-local call per pixel otherwise (perf: ~1%)
+      if (steps) beginSdfPixel();  // else a thread-local call and four stores per pixel
       if (isCandidate(x)) {
         const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
         const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction);
