@@ -58,11 +58,20 @@ SHADING_FN LectureCoefficients gltfPbrToLecture(vec3 base, float metallic, float
   // Diffuse: metals have none, and transmission replaces diffuse (the glTF dielectric BRDF is
   // mix(diffuse, transmission, transmissionFactor)). Mirror fraction: the normal-incidence
   // reflectance, fading out as roughness blurs the mirror. glTF transmission is tinted by the
-  // base colour.
-  return LectureCoefficients(gltfDiffuseColor(base, metallic), 1.0f - transmission, ks,
-                             max(2.0f / (alpha * alpha) - 2.0f, 1.0f), specularColor,
-                             ks * (1.0f - roughness), specularColor,
-                             transmission * (1.0f - metallic), base);
+  // base colour. Built member by member, not with shading.glsl's constructor syntax (its rule 5):
+  // the loaders compile this file under the fuzz preset too, and clang 14 (Debian 12's) has no
+  // parenthesised aggregate initialisation.
+  LectureCoefficients c;
+  c.color = gltfDiffuseColor(base, metallic);
+  c.kd = 1.0f - transmission;
+  c.ks = ks;
+  c.exponent = max(2.0f / (alpha * alpha) - 2.0f, 1.0f);
+  c.specularColor = specularColor;
+  c.kps = ks * (1.0f - roughness);
+  c.mirrorColor = specularColor;
+  c.kt = transmission * (1.0f - metallic);
+  c.transmitColor = base;
+  return c;
 }
 
 #endif
