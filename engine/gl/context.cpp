@@ -1,6 +1,7 @@
 #include "engine/gl/context.h"
 
 #include <cstdio>
+#include <string_view>
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
@@ -82,6 +83,13 @@ void GlContext::initialize() {
   if (info_.major * 10 + info_.minor < 45 || !info_.coreProfile) {
     throw Error("OpenGL context '" + contextName + "' is '" + info_.version + "' (" +
                 (info_.coreProfile ? "core" : "not core") + "); Diptych needs 4.5 core");
+  }
+  GLint extensions = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &extensions);
+  for (GLint i = 0; i < extensions; ++i) {
+    const GLubyte* e = glGetStringi(GL_EXTENSIONS, GLuint(i));
+    if (e && std::string_view(reinterpret_cast<const char*>(e)) == "GL_MESA_pack_invert")
+      functions_->packInvert = true;
   }
   enableDebugOutput();
   log().info("GL context {}: {} | {} | GLSL {}{}", contextName, info_.renderer, info_.version,

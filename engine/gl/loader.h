@@ -21,6 +21,10 @@ struct GlFunctionTable {
 #define DIPTYCH_GL_FUNCTION(type, name) type name = nullptr;
 #include "engine/gl/gl_functions.inl"
 #undef DIPTYCH_GL_FUNCTION
+  // GL_MESA_pack_invert (every Mesa driver, llvmpipe included): the context packs images
+  // top row first on request (GL_PACK_INVERT_MESA), so a readback needs no row flip on the CPU
+  // (engine/gl/transfer.cpp). Set by GlContext::initialize, per context like the functions.
+  bool packInvert = false;
 };
 
 using ProcAddressFn = std::function<void*(const char* name)>;

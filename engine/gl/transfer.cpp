@@ -27,6 +27,9 @@ void checkLayer(const Texture& t, int layer) {
   }
 }
 
+// GL_MESA_pack_invert's pixel-store parameter (its spec; glcorearb.h has no vendor extensions).
+constexpr GLenum kPackInvertMesa = 0x8758;
+
 // Reverses the row order in place: top-first <-> bottom-first.
 void flipRows(std::span<std::uint32_t> words, std::size_t rowWords, int rows) {
   for (int top = 0, bottom = rows - 1; top < bottom; ++top, --bottom) {
@@ -54,9 +57,18 @@ void readTextureInto(const Texture& t, std::span<std::uint32_t> words, int layer
   // it anyway since it is global state another pass may have changed.
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   const int zoffset = t.kind() == TextureKind::Tex2D ? 0 : layer;
+  // Where the driver can pack top row first (Mesa), it writes the rows in the CPU order as it
+  // copies them, instead of a second pass over the image here (a 640x480 RGBA32UI G-buffer is
+  // 4.9 MB swapped row by row). The state is reset at once: it applies to every later pack.
+  const GlFunctionTable* functions = installedGlFunctions();
+  const bool invert = functions && functions->packInvert;
+  if (invert) glPixelStorei(kPackInvertMesa, GL_TRUE);
   glGetTextureSubImage(t.id(), level, 0, 0, zoffset, s.width, s.height, 1, f.pixelFormat,
                        f.pixelType, GLsizei(words.size() * 4), words.data());
-  flipRows(words, std::size_t(s.width) * f.components, s.height);
+  if (invert)
+    glPixelStorei(kPackInvertMesa, GL_FALSE);
+  else
+    flipRows(words, std::size_t(s.width) * f.components, s.height);
 }
 
 std::vector<std::uint32_t> readTexture(const Texture& t, int layer, int level) {
@@ -65,8 +77,7 @@ std::vector<std::uint32_t> readTexture(const Texture& t, int layer, int level) {
   return words;
 }
 
-void uploadTexture(const Texture& t, const std::vector<std::uint32_t>& words, int layer,
-                   int level) {
+void uploadTexture(const Texture& t, std::span<const std::uint32_t> words, int layer, int level) {
   checkLayer(t, layer);
   const LevelSize s = levelSize(t, level);
   const FormatInfo& f = formatInfo(t.format());
@@ -75,8 +86,13 @@ void uploadTexture(const Texture& t, const std::vector<std::uint32_t>& words, in
                 std::to_string(s.width) + "x" + std::to_string(s.height) + " " +
                 std::string(f.name) + " level needs " + std::to_string(texelWordCount(t, level)));
   }
-  std::vector<std::uint32_t> flipped = words;
-  flipRows(flipped, std::size_t(s.width) * f.components, s.height);
+  // GL's rows are bottom first: copied in that order in one pass (no unpack-side inversion
+  // exists to spare the copy).
+  const std::size_t rowWords = std::size_t(s.width) * f.components;
+  std::vector<std::uint32_t> flipped(words.size());
+  for (int row = 0; row < s.height; ++row)
+    std::copy_n(words.begin() + std::ptrdiff_t(std::size_t(row) * rowWords), rowWords,
+                flipped.begin() + std::ptrdiff_t(std::size_t(s.height - 1 - row) * rowWords));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   if (t.kind() == TextureKind::Tex2D) {
     glTextureSubImage2D(t.id(), level, 0, 0, s.width, s.height, f.pixelFormat, f.pixelType,

@@ -21,7 +21,8 @@ std::vector<std::uint32_t> readTexture(const Texture& texture, int layer = 0, in
 // The same into caller storage of exactly texelWordCount(texture, level) words (no copy).
 void readTextureInto(const Texture& texture, std::span<std::uint32_t> words, int layer = 0,
                      int level = 0);
-void uploadTexture(const Texture& texture, const std::vector<std::uint32_t>& words, int layer = 0,
+// Top row first, as readTexture returns it; exactly texelWordCount(texture, level) words.
+void uploadTexture(const Texture& texture, std::span<const std::uint32_t> words, int layer = 0,
                    int level = 0);
 
 // Convenience views of the same data for float formats.

@@ -62,11 +62,10 @@ void GlBackend::upload(const CpuImage& from, int handle) {
   if (!(from.desc == d))
     throw Error("upload from a CPU image of another description: " + describe(from.desc));
   const std::size_t layerWords = std::size_t(d.width) * d.height * formatChannels(d.format);
-  for (int layer = 0; layer < d.layers; ++layer) {
-    const auto first = from.words.begin() + std::ptrdiff_t(layer * layerWords);
+  for (int layer = 0; layer < d.layers; ++layer)
     gl::uploadTexture(textures_[handle],
-                      std::vector<std::uint32_t>(first, first + std::ptrdiff_t(layerWords)), layer);
-  }
+                      std::span(from.words).subspan(std::size_t(layer) * layerWords, layerWords),
+                      layer);
 }
 
 void GlBackend::fill(int handle, const vec4& value) {

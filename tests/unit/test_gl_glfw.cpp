@@ -89,7 +89,7 @@ TEST(GlfwContext, OsmesaAndGlfwContextsCoexist) {
   for (GlContext* c : {window.get(), offscreen.get(), window.get()}) {
     c->makeCurrent();
     const Texture t = Texture::create2D(TextureFormat::R32UI, 2, 2);
-    uploadTexture(t, {1, 2, 3, 4});
+    uploadTexture(t, std::vector<std::uint32_t>{1, 2, 3, 4});
     EXPECT_EQ(readTexture(t), (std::vector<std::uint32_t>{1, 2, 3, 4})) << c->name();
   }
 }

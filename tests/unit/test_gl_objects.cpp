@@ -7,6 +7,7 @@
 
 #include "engine/core/error.h"
 #include "engine/gl/debug.h"
+#include "engine/gl/loader.h"
 #include "engine/gl/objects.h"
 #include "engine/gl/transfer.h"
 #include "gl_test_context.h"
@@ -42,7 +43,15 @@ TEST_F(GlObjects, ClearedRgba32fReadsBackExactly) {
   }
 }
 
-TEST_F(GlObjects, ReadbackPutsTheTopRowFirst) {
+// Both readback paths: the driver packing rows top first (GL_MESA_pack_invert, which llvmpipe
+// has) and the row flip on the CPU that other drivers get, forced here by installing a copy of
+// the context's table without the extension.
+TEST_F(GlObjects, ReadbackPutsTheTopRowFirstWithAndWithoutPackInvert) {
+  const GlFunctionTable* own = installedGlFunctions();
+  ASSERT_NE(own, nullptr);
+  EXPECT_TRUE(own->packInvert) << "Mesa drivers have GL_MESA_pack_invert";
+  GlFunctionTable withoutExtension = *own;
+  withoutExtension.packInvert = false;
   const int w = 4, h = 3;
   const Texture t = Texture::create2D(TextureFormat::R32F, w, h);
   Framebuffer fbo = Framebuffer::create();
@@ -54,10 +63,21 @@ TEST_F(GlObjects, ReadbackPutsTheTopRowFirst) {
   glScissor(0, 0, w, 1);
   glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, one);
   glDisable(GL_SCISSOR_TEST);
-  const std::vector<float> back = readTextureFloats(t);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) EXPECT_EQ(back[y * w + x], y == h - 1 ? 1.f : 0.f) << x << "," << y;
+  for (const GlFunctionTable* table :
+       {own, static_cast<const GlFunctionTable*>(&withoutExtension), own}) {
+    installGlFunctions(table);
+    const std::vector<float> back = readTextureFloats(t);
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x)
+        EXPECT_EQ(back[y * w + x], y == h - 1 ? 1.f : 0.f)
+            << x << "," << y << (table->packInvert ? " (pack invert)" : " (CPU flip)");
+    }
+    // The inversion is pack state: it must not outlive the readback.
+    GLint invert = -1;
+    glGetIntegerv(0x8758 /* GL_PACK_INVERT_MESA */, &invert);
+    EXPECT_EQ(invert, 0);
   }
+  installGlFunctions(own);
 }
 
 TEST_F(GlObjects, Rgba32uiRoundTrip) {
