@@ -1,5 +1,6 @@
 #include "engine/scene/camera_math.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -34,6 +35,34 @@ Ray PinholeFrame::ray(float x, float y) const {
   const float ndcY = 1.f - 2.f * y / height_;
   const vec3 d = forward_ + (ndcX * aspect_ * tanHalf_) * right_ + (ndcY * tanHalf_) * up_;
   return {position_, glm::normalize(d)};
+}
+
+void PinholeFrame::rowDirections(int y, std::span<vec3> out) const {
+  const float ndcY = 1.f - 2.f * (float(y) + 0.5f) / height_;
+  const vec3 rowTerm = (ndcY * tanHalf_) * up_;
+  // Structure of arrays in chunks on the stack, so that each statement is one vector loop:
+  // ray()'s d = (forward + s right) + t up, then d * (1 / sqrt((dx dx + dy dy) + dz dz)), as
+  // glm::normalize computes it (dot of vec3 as (x x + y y) + z z; inversesqrt as 1 / sqrt).
+  constexpr std::size_t kChunk = 64;
+  float dx[kChunk], dy[kChunk], dz[kChunk];
+  for (std::size_t first = 0; first < out.size(); first += kChunk) {
+    const std::size_t n = std::min(kChunk, out.size() - first);
+    for (std::size_t i = 0; i < n; ++i) {
+      // An int to float conversion (a 64-bit unsigned one does not vectorise).
+      const float ndcX = 2.f * (float(int(first + i)) + 0.5f) / width_ - 1.f;
+      const float s = ndcX * aspect_ * tanHalf_;
+      dx[i] = (forward_.x + s * right_.x) + rowTerm.x;
+      dy[i] = (forward_.y + s * right_.y) + rowTerm.y;
+      dz[i] = (forward_.z + s * right_.z) + rowTerm.z;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const float inv = 1.f / std::sqrt((dx[i] * dx[i] + dy[i] * dy[i]) + dz[i] * dz[i]);
+      dx[i] *= inv;
+      dy[i] *= inv;
+      dz[i] *= inv;
+    }
+    for (std::size_t i = 0; i < n; ++i) out[first + i] = vec3(dx[i], dy[i], dz[i]);
+  }
 }
 
 Ray primaryRay(const Camera& c, int width, int height, float x, float y) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <vector>
 
 #include "engine/graph/render_world.h"
 #include "passes/common/hits_texel.h"
@@ -23,14 +24,15 @@ bool sameCamera(const Camera& a, const Camera& b) {
 // on an analytic instance the lift tried first, since its hit replaces the triangle point's
 // (u, v) altogether: alongRay then runs only where the lift misses (a silhouette texel).
 // cache: the row's last triangle (alongRay; all of a row's rays leave the camera's position).
+// direction: the pixel-centre ray's (PinholeFrame::rowDirections, == ray()'s bit for bit).
 SurfaceHit liftedTexel(const std::uint32_t* t, const WorldGeometry& world,
-                       const PinholeFrame& pinhole, int x, int y, AlongRayCache& cache) {
+                       const PinholeFrame& pinhole, const vec3& direction, AlongRayCache& cache) {
   if (t[0] == 0u) return SurfaceHit{};  // instance -1: background
   SurfaceHit hit{int(t[0] - 1u), t[1], std::bit_cast<float>(t[2]), std::bit_cast<float>(t[3])};
   const WorldMesh& mesh = texelMesh(world, hit);  // throws for a forged instance
   const bool computed = !std::isnan(hit.u);
   if (computed && !mesh.analytic) return hit;
-  const Ray ray = pinhole.ray(float(x) + 0.5f, float(y) + 0.5f);
+  const Ray ray{pinhole.position(), direction};
   // A forged primitive is an error whether or not the lift would hit (alongRay's check).
   if (mesh.analytic && hit.primitive < mesh.indices.size() / 3) {
     const SurfaceHit lifted = liftToAnalytic(world, hit, ray);
@@ -64,8 +66,12 @@ void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camer
     if (rgba) {
       const std::uint32_t* texel = hits.row(y);
       AlongRayCache cache;
+      // The row's pixel-centre directions at once (vectorised), also where no texel needs one.
+      thread_local std::vector<vec3> directions;
+      directions.resize(std::size_t(width_));
+      pinhole.rowDirections(y, directions);
       for (int x = 0; x < width_; ++x, texel += 4)
-        row[x] = liftedTexel(texel, geometry, pinhole, x, y, cache);
+        row[x] = liftedTexel(texel, geometry, pinhole, directions[std::size_t(x)], cache);
       return;
     }
     for (int x = 0; x < width_; ++x) {

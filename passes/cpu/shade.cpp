@@ -76,8 +76,8 @@ void ShadePass::execute(PassContext& c) {
     points.resize(std::size_t(frame.width));
     eyes.resize(std::size_t(frame.width));
     covered.resize(std::size_t(frame.width));
+    pinhole.rowDirections(y, eyes);
     for (int x = 0; x < frame.width; ++x) {
-      eyes[x] = pinhole.ray(x + 0.5f, y + 0.5f).direction;
       const auto hit = exact.at(x, y);
       covered[x] = hit.has_value();
       if (!hit) continue;

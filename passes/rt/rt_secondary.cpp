@@ -82,6 +82,16 @@ void RtSecondaryPass::execute(PassContext& c) {
     const auto isCandidate = [&](int x) {
       return hit[x].instance >= 0 && candidate[std::size_t(hit[x].instance)];
     };
+    // The camera ray of pixel x: the row's directions computed at once (vectorised,
+    // PinholeFrame::rowDirections) at its first candidate; rows without one compute none.
+    std::vector<vec3> directions;
+    const auto eyeRay = [&](int x) {
+      if (directions.empty()) {
+        directions.resize(std::size_t(frame.width));
+        pinhole.rowDirections(y, directions);
+      }
+      return Ray{pinhole.position(), directions[std::size_t(x)]};
+    };
     const std::uint8_t kind =
         reflection ? FootprintTarget::kReflected : FootprintTarget::kTransmitted;
     std::int64_t rowFootprintRays = 0;
@@ -98,7 +108,7 @@ void RtSecondaryPass::execute(PassContext& c) {
       traced.assign(std::size_t(frame.width), 0);
       for (int x = 0; x < frame.width; ++x) {
         if (!isCandidate(x)) continue;
-        const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
+        const Ray eye = eyeRay(x);
         targets[std::size_t(x)] =
             texturedAt(makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction), eye);
         traced[std::size_t(x)] = targets[std::size_t(x)].kinds != 0;
@@ -134,7 +144,7 @@ void RtSecondaryPass::execute(PassContext& c) {
       vec3 radiance(0.f);
       if (steps) beginSdfPixel();  // else a thread-local call and four stores per pixel
       if (isCandidate(x)) {
-        const Ray eye = pinhole.ray(x + 0.5f, y + 0.5f);
+        const Ray eye = eyeRay(x);
         const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction);
         // Per point, as Whitted decides (a texture may make this texel rough or not metal).
         if (reflection ? shading::hasReflection(p.resolved, false)

@@ -2,9 +2,12 @@
 
 #include <unistd.h>
 
+#include <bit>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
@@ -80,6 +83,50 @@ TEST(Camera, CentreRayLooksAtTargetAndReversedZMapsNearToOne) {
   EXPECT_NEAR(nearPoint.z / nearPoint.w, 1.f, 1e-6f);
   const vec4 farPoint = p * vec4(0, 0, -1e6f, 1);
   EXPECT_LT(farPoint.z / farPoint.w, 1e-6f);
+}
+
+// rowDirections is the vectorised form of ray() for a row's pixel centres; every per-pixel loop
+// that uses it relies on the two agreeing bit for bit (the hybrid's exact hits against the
+// reference's primary rays). Widths below, at and across its 64-pixel chunks; odd cameras.
+TEST(Camera, RowDirectionsAreTheRaysOfThePixelCentresBitForBit) {
+  const Camera cameras[] = {[] {
+                              Camera c;
+                              c.position = {0, 0, 5};
+                              c.target = {0, 0, 0};
+                              return c;
+                            }(),
+                            [] {
+                              Camera c;
+                              c.position = {3.7f, -1.25f, 0.3f};
+                              c.target = {-2.f, 0.5f, 7.f};
+                              c.up = {0.2f, 1.f, -0.1f};
+                              c.verticalFov = 1.9f;
+                              return c;
+                            }(),
+                            [] {
+                              Camera c;
+                              c.position = {1e4f, 2e3f, -5e3f};
+                              c.target = {1e4f + 1.f, 2e3f, -5e3f - 1e-3f};
+                              c.verticalFov = 0.01f;
+                              return c;
+                            }()};
+  for (const Camera& c : cameras) {
+    for (const auto& [w, h] : {std::pair{1, 1}, {63, 7}, {64, 3}, {129, 97}, {640, 480}}) {
+      const PinholeFrame frame(c, w, h);
+      std::vector<vec3> row(static_cast<std::size_t>(w));
+      for (int y = 0; y < h; ++y) {
+        frame.rowDirections(y, row);
+        for (int x = 0; x < w; ++x) {
+          const Ray r = frame.ray(float(x) + 0.5f, float(y) + 0.5f);
+          ASSERT_EQ(r.origin, frame.position());
+          for (int k = 0; k < 3; ++k)
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(row[std::size_t(x)][k]),
+                      std::bit_cast<std::uint32_t>(r.direction[k]))
+                << w << "x" << h << " pixel (" << x << ", " << y << ") component " << k;
+        }
+      }
+    }
+  }
 }
 
 TEST(WorldGeometry, MirroredInstanceKeepsOutwardGeometricNormal) {
