@@ -138,6 +138,14 @@ void RtDistributedPass::execute(PassContext& c) {
       std::uint32_t seeds[kPrimaryTile];
       int pixelOf[kPrimaryTile];
       std::size_t filled = 0;
+      // One sample through a pinhole at the frame's instant (the Whitted reference): sampleRay's
+      // ray is the pixel centre's, whose directions the row computes at once (vectorised,
+      // PinholeFrame::rowDirections, bit for bit ray()'s).
+      std::vector<vec3> centres;
+      if (spp_ == 1 && !lens && !shutter) {
+        centres.resize(std::size_t(frame.width));
+        pinhole.rowDirections(y, centres);
+      }
       const auto flush = [&] {
         Hit hits[kPrimaryTile];
         const Hit* found[kPrimaryTile];
@@ -165,8 +173,14 @@ void RtDistributedPass::execute(PassContext& c) {
           // In place (guaranteed copy elision): assigning the returned Ray reloaded its
           // just-stored floats as 16-byte loads, a store-forwarding stall per sample (perf
           // annotate: about half of this loop's own time).
-          ::new (static_cast<void*>(&rays[filled]))
-              Ray(sampleRay(x, y, s, lensStratum, timeStratum, seeds[filled]));
+          if (!centres.empty()) {
+            seeds[filled] = pixel;  // sampleRay's seed for one sample
+            ::new (static_cast<void*>(&rays[filled]))
+                Ray{pinhole.position(), centres[std::size_t(x)]};
+          } else {
+            ::new (static_cast<void*>(&rays[filled]))
+                Ray(sampleRay(x, y, s, lensStratum, timeStratum, seeds[filled]));
+          }
           pixelOf[filled] = x;
           if (++filled == kPrimaryTile) flush();
         }
