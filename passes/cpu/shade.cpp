@@ -77,14 +77,14 @@ void ShadePass::execute(PassContext& c) {
     eyes.resize(std::size_t(frame.width));
     covered.resize(std::size_t(frame.width));
     pinhole.rowDirections(y, eyes);
+    const SurfaceHit* hit = exact.row(y);  // instance -1: background (no optional per pixel)
     for (int x = 0; x < frame.width; ++x) {
-      const auto hit = exact.at(x, y);
-      covered[x] = hit.has_value();
-      if (!hit) continue;
+      covered[x] = hit[x].instance >= 0;
+      if (!covered[x]) continue;
       // Built in place (the prvalue initialises the slot: C++17 guaranteed elision); assigned,
       // the ~250-byte point went through a stack temporary and was copied (perf, issue 14).
       // SurfacePoint is trivially destructible, so the slot's old value needs no destructor.
-      ::new (&points[x]) SurfacePoint(makeSurfacePoint(scene, world.geometry(), *hit, eyes[x]));
+      ::new (&points[x]) SurfacePoint(makeSurfacePoint(scene, world.geometry(), hit[x], eyes[x]));
       // The texture_filtering signal replaces shade's own level-0 lookup (a < 0: none there).
       if (albedoRow) applyTextureSignal(points[x], scene, vec4(albedoRow.rgb(x), albedoRow(x, 3)));
     }
