@@ -2,7 +2,10 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <bit>
 #include <new>
+#include <vector>
 
 #include "engine/graph/companion.h"
 #include "engine/graph/render_world.h"
@@ -64,6 +67,11 @@ void ShadePass::execute(PassContext& c) {
     const CpuFloatRow reflectionRow(reflection, y), transmissionRow(transmission, y);
     const CpuFloatRow albedoRow(albedo, y);
     std::uint32_t* outRow = out.row(y);
+    // Light i's visibility row (layer i, R32F: pixel x is word x), for the lights it covers.
+    thread_local std::vector<const std::uint32_t*> visibilityRows;
+    visibilityRows.resize(std::size_t(std::min<int>(visibilityLayers, int(lights.size()))));
+    for (std::size_t i = 0; i < visibilityRows.size(); ++i)
+      visibilityRows[i] = visibility->row(y, int(i));
     // Two sweeps per row: first every surface point, then the shading. In one sweep the shading
     // copied each point's material (passed by value, shading.glsl) right after makeSurfacePoint
     // wrote it, and those loads stalled on the not yet retired stores (store-to-load forwarding
@@ -97,7 +105,9 @@ void ShadePass::execute(PassContext& c) {
         const vec3 v = -eyes[x];
         radiance = shading::emittedAndAmbient(sp.resolved, scene.ambient);
         for (std::size_t i = 0; i < lights.size(); ++i) {
-          const float vis = int(i) < visibilityLayers ? visibility->f(x, y, 0, int(i)) : 1.f;
+          const float vis = i < visibilityRows.size()
+                                ? std::bit_cast<float>(visibilityRows[i][std::size_t(x)])
+                                : 1.f;
           const shading::LightSample s = shading::sampleLight(lights[i], sp.position);
           radiance += shading::lightContribution(sp.resolved, sp.shadingNormal, v, s, vis);
         }
