@@ -3,11 +3,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <vector>
 
 #include "engine/graph/render_world.h"
+#include "engine/shading/shading.h"
 #include "passes/common/hits_texel.h"
 
 namespace diptych {
@@ -61,6 +63,16 @@ void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camer
   const PinholeFrame pinhole(camera, width_, height_);
   const WorldGeometry& geometry = world.geometry();
   const bool rgba = hits.channels() == 4;
+  // The instances whose pixels several consumers make a SurfacePoint of (point()): rt_reflection's
+  // and rt_transmission's candidates (rt_secondary.cpp's test), all of which shade makes too.
+  const Scene& scene = world.scene();
+  std::vector<char> shared(scene.instances.size());
+  for (std::size_t i = 0; i < shared.size(); ++i) {
+    const Material& m = scene.material(scene.meshes[scene.instances[i].mesh].material);
+    shared[i] = shading::materialHasReflection(m) || shading::materialHasTransmission(m);
+  }
+  sharedIndex_.resize(hits_.size());
+  rowShared_.resize(std::size_t(height_));
   tbb::parallel_for(0, height_, [&](int y) {
     SurfaceHit* row = hits_.data() + std::size_t(y) * std::size_t(width_);
     if (rgba) {
@@ -72,15 +84,57 @@ void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camer
       pinhole.rowDirections(y, directions);
       for (int x = 0; x < width_; ++x, texel += 4)
         row[x] = liftedTexel(texel, geometry, pinhole, directions[std::size_t(x)], cache);
-      return;
+    } else {
+      for (int x = 0; x < width_; ++x) {
+        const auto hit = exactTexel(hits, geometry, pinhole, x, y);
+        row[x] = hit ? *hit : SurfaceHit{};  // instance -1: background
+      }
     }
-    for (int x = 0; x < width_; ++x) {
-      const auto hit = exactTexel(hits, geometry, pinhole, x, y);
-      row[x] = hit ? *hit : SurfaceHit{};  // instance -1: background
-    }
+    std::int32_t* index = sharedIndex_.data() + std::size_t(y) * std::size_t(width_);
+    std::int32_t count = 0;
+    for (int x = 0; x < width_; ++x)
+      index[x] = row[x].instance >= 0 && shared[std::size_t(row[x].instance)] ? count++ : -1;
+    rowShared_[std::size_t(y)] = count;
   });
+  // Rows' counts to their first point's index, rows past the budget left out.
+  constexpr std::size_t kMaxPoints = kMaxSharedBytes / sizeof(SurfacePoint);
+  std::size_t points = 0;
+  for (std::int32_t& first : rowShared_) {
+    const std::size_t count = std::size_t(first);
+    first = points + count <= kMaxPoints ? std::int32_t(points) : -1;
+    if (first >= 0) points += count;
+  }
+  // Every point is constructed before it is read (point()): resize keeps last frame's storage.
+  points_.resize(points);
+  made_.assign(points, 0);
   camera_ = camera;
   ++builds_;
+}
+
+const SurfacePoint* ExactHitBuffer::point(const Scene& scene, const WorldGeometry& geometry, int x,
+                                           int y, const vec3& incoming) const {
+  const std::int32_t first = rowShared_[std::size_t(y)];
+  const std::size_t pixel = std::size_t(y) * std::size_t(width_) + std::size_t(x);
+  if (first < 0 || sharedIndex_[pixel] < 0) return nullptr;
+  const std::size_t i = std::size_t(first) + std::size_t(sharedIndex_[pixel]);
+  std::atomic_ref<std::uint8_t> state(made_[i]);
+  std::uint8_t expected = 0;
+  if (!state.compare_exchange_strong(expected, 1, std::memory_order_acquire))
+    return expected == 2 ? &points_[i] : nullptr;  // 1: another thread is making it
+  // Trivially destructible (surface_point.h): the slot's old value needs no destructor. A throw
+  // (a forged hit) leaves it "being made", so later callers make their own and throw too.
+  ::new (&points_[i]) SurfacePoint(makeSurfacePoint(scene, geometry, hits_[pixel], incoming));
+  state.store(2, std::memory_order_release);
+  return &points_[i];
+}
+
+const SurfacePoint* ExactHitBuffer::keptPoint(int x, int y) const {
+  const std::int32_t first = rowShared_[std::size_t(y)];
+  const std::size_t pixel = std::size_t(y) * std::size_t(width_) + std::size_t(x);
+  if (first < 0 || sharedIndex_[pixel] < 0) return nullptr;
+  const std::size_t i = std::size_t(first) + std::size_t(sharedIndex_[pixel]);
+  return std::atomic_ref<std::uint8_t>(made_[i]).load(std::memory_order_acquire) == 2 ? &points_[i]
+                                                                                     : nullptr;
 }
 
 const ExactHitBuffer& exactHits(PassContext& context, ResourceId hits) {

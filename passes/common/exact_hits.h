@@ -16,6 +16,13 @@
 // unless it was built from an equal image (a compare of the texels) and the same camera. Either
 // way a stale buffer cannot be read. Memory: 20 B (the hits) a pixel, plus 16 B (the texels) for
 // the image path, held for the world's lifetime (6 to 11 MB at 640x480).
+//
+// It also keeps the surface points that more than one consumer makes: a pixel whose material
+// has reflection or transmission is made a SurfacePoint by rt_reflection, rt_transmission and
+// shade alike (makeSurfacePoint, ~540 instructions a pixel, where the Whitted reference makes
+// it once), so the frame's first consumer keeps it (point()) and the later ones copy it
+// (keptPoint()). Memory: 4 B a pixel plus sizeof(SurfacePoint) (~230 B) a shared pixel, at most
+// kMaxSharedBytes (rows beyond it are not kept: their consumers make their own).
 #include <cstdint>
 #include <mutex>
 #include <optional>
@@ -42,6 +49,20 @@ class ExactHitBuffer {
   const SurfaceHit* row(int y) const { return hits_.data() + std::size_t(y) * std::size_t(width_); }
   int width() const { return width_; }
   int height() const { return height_; }
+  // Pixel (x, y)'s surface point seen along `incoming`, its camera ray's direction (as every
+  // consumer passes it: makeSurfacePoint(scene, geometry, *at(x, y), incoming) bit for bit),
+  // made on the frame's first call and kept for the later ones; nullptr where the pixel is not
+  // shared (its material has neither reflection nor transmission, or beyond kMaxSharedBytes) or
+  // is being made by another thread: the caller makes its own then. Callers never write a point
+  // twice concurrently (a pass's rows go to one thread each; passes run one at a time), but a
+  // flag per point makes a race harmless all the same.
+  const SurfacePoint* point(const Scene& scene, const WorldGeometry& geometry, int x, int y,
+                            const vec3& incoming) const;
+  // The point a consumer of this frame kept for pixel (x, y) (point()), or nullptr: for the
+  // frame's last consumer (shade), which has nobody to keep it for.
+  const SurfacePoint* keptPoint(int x, int y) const;
+  static constexpr std::size_t kMaxSharedBytes = std::size_t(256) << 20;
+
   // How many times this buffer was (re)built: once per frame and hits resource, or per distinct
   // hits image and camera.
   int builds() const { return builds_; }
@@ -58,6 +79,12 @@ class ExactHitBuffer {
   std::vector<SurfaceHit> hits_;             // instance -1: background
   std::vector<std::uint32_t> source_;        // image path: the texels it was built from
   std::optional<Camera> camera_;             // the camera whose pixel rays lifted them
+  // point(): per pixel, its index in its row's shared points (-1: none); per row, the index of
+  // its first in points_ (-1: the row is beyond kMaxSharedBytes); per point, 0 (not made),
+  // 1 (being made) or 2 (made), read and written through std::atomic_ref.
+  std::vector<std::int32_t> sharedIndex_, rowShared_;
+  mutable std::vector<SurfacePoint> points_;
+  mutable std::vector<std::uint8_t> made_;
   std::mutex mutex_;
 };
 

@@ -92,7 +92,12 @@ void ShadePass::execute(PassContext& c) {
       // Built in place (the prvalue initialises the slot: C++17 guaranteed elision); assigned,
       // the ~250-byte point went through a stack temporary and was copied (perf, issue 14).
       // SurfacePoint is trivially destructible, so the slot's old value needs no destructor.
-      ::new (&points[x]) SurfacePoint(makeSurfacePoint(scene, world.geometry(), hit[x], eyes[x]));
+      // A mirror's or a glass's point was made by rt_reflection or rt_transmission this frame
+      // (ExactHitBuffer::point): copied, ~30 instructions against makeSurfacePoint's ~540.
+      if (const SurfacePoint* kept = exact.keptPoint(x, y))
+        ::new (&points[x]) SurfacePoint(*kept);
+      else
+        ::new (&points[x]) SurfacePoint(makeSurfacePoint(scene, world.geometry(), hit[x], eyes[x]));
       // The texture_filtering signal replaces shade's own level-0 lookup (a < 0: none there).
       if (albedoRow) applyTextureSignal(points[x], scene, vec4(albedoRow.rgb(x), albedoRow(x, 3)));
     }

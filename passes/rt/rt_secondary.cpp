@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <bit>
+#include <optional>
 #include <vector>
 
 #include "engine/core/check.h"
@@ -92,6 +93,14 @@ void RtSecondaryPass::execute(PassContext& c) {
       }
       return Ray{pinhole.position(), directions[std::size_t(x)]};
     };
+    // Pixel x's surface point: the one kept for the frame's consumers (ExactHitBuffer::point;
+    // rt_reflection makes it, rt_transmission and shade copy it), or made into `own`.
+    const auto surfacePoint = [&](int x, const Ray& eye,
+                                  std::optional<SurfacePoint>& own) -> const SurfacePoint& {
+      if (const SurfacePoint* kept = exact.point(scene, world.geometry(), x, y, eye.direction))
+        return *kept;
+      return own.emplace(makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction));
+    };
     const std::uint8_t kind =
         reflection ? FootprintTarget::kReflected : FootprintTarget::kTransmitted;
     std::int64_t rowFootprintRays = 0;
@@ -109,8 +118,8 @@ void RtSecondaryPass::execute(PassContext& c) {
       for (int x = 0; x < frame.width; ++x) {
         if (!isCandidate(x)) continue;
         const Ray eye = eyeRay(x);
-        targets[std::size_t(x)] =
-            texturedAt(makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction), eye);
+        std::optional<SurfacePoint> own;
+        targets[std::size_t(x)] = texturedAt(surfacePoint(x, eye, own), eye);
         traced[std::size_t(x)] = targets[std::size_t(x)].kinds != 0;
       }
       const SecondaryFootprint rowFootprint{tracer, targets, signals, false};
@@ -145,7 +154,8 @@ void RtSecondaryPass::execute(PassContext& c) {
       if (steps) beginSdfPixel();  // else a thread-local call and four stores per pixel
       if (isCandidate(x)) {
         const Ray eye = eyeRay(x);
-        const SurfacePoint p = makeSurfacePoint(scene, world.geometry(), hit[x], eye.direction);
+        std::optional<SurfacePoint> own;
+        const SurfacePoint& p = surfacePoint(x, eye, own);
         // Per point, as Whitted decides (a texture may make this texel rough or not metal).
         if (reflection ? shading::hasReflection(p.resolved, false)
                        : shading::hasTransmission(p.resolved)) {

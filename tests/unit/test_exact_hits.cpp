@@ -10,6 +10,7 @@
 
 #include "engine/core/error.h"
 #include "passes/common/exact_hits.h"
+#include "engine/shading/shading.h"
 #include "passes/common/hits_texel.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
@@ -50,6 +51,71 @@ TEST(ExactHits, EqualsLiftingEachTexel) {
   }
   EXPECT_GT(lifted, 500) << "whitted.json's spheres should cover many pixels";
   EXPECT_GT(background, 0);
+}
+
+// The points kept for the frame's consumers (ExactHitBuffer::point) are makeSurfacePoint's, on
+// exactly the pixels of a material with reflection or transmission, made once and kept: the
+// second call and keptPoint return the same point.
+TEST(ExactHits, KeepsTheSharedPixelsSurfacePointsAsMadeOnce) {
+  auto f = whittedFrame();
+  const CpuImage& hits = f->output("gbuffer.hits");
+  const Camera camera = cameraOf(f->scene);
+  const ExactHitBuffer& exact = exactHits(*f->world, hits, camera);  // a new build: none kept
+  const Scene& scene = f->scene;
+  const WorldGeometry& geometry = f->world->geometry();
+  const PinholeFrame pinhole(camera, kW, kH);
+  int shared = 0, other = 0, sx = -1, sy = -1;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      ASSERT_EQ(exact.keptPoint(x, y), nullptr) << "pixel " << x << "," << y;
+      const auto hit = exact.at(x, y);
+      const vec3 incoming = pinhole.ray(float(x) + 0.5f, float(y) + 0.5f).direction;
+      const SurfacePoint* kept = exact.point(scene, geometry, x, y, incoming);
+      bool sharedMaterial = false;
+      if (hit) {
+        const Material& m = scene.material(scene.meshes[scene.instances[hit->instance].mesh].material);
+        sharedMaterial = shading::materialHasReflection(m) || shading::materialHasTransmission(m);
+      }
+      if (!sharedMaterial) {
+        EXPECT_EQ(kept, nullptr) << "pixel " << x << "," << y;
+        other += hit ? 1 : 0;
+        continue;
+      }
+      ++shared;
+      sx = x;
+      sy = y;
+      ASSERT_NE(kept, nullptr) << "pixel " << x << "," << y;
+      const SurfacePoint made = makeSurfacePoint(scene, geometry, *hit, incoming);
+      EXPECT_EQ(kept->position, made.position);
+      EXPECT_EQ(kept->positionMagnitude, made.positionMagnitude);
+      EXPECT_EQ(kept->geometricNormal, made.geometricNormal);
+      EXPECT_EQ(kept->shadingNormal, made.shadingNormal);
+      EXPECT_EQ(kept->frontFacing, made.frontFacing);
+      EXPECT_EQ(kept->material, made.material);
+      EXPECT_EQ(kept->resolved.kps, made.resolved.kps);
+      EXPECT_EQ(kept->resolved.kt, made.resolved.kt);
+      EXPECT_EQ(kept->resolved.color, made.resolved.color);
+      EXPECT_EQ(exact.point(scene, geometry, x, y, incoming), kept) << "made once";
+      EXPECT_EQ(exact.keptPoint(x, y), kept);
+    }
+  EXPECT_GT(shared, 500) << "whitted.json's mirror and glass spheres";
+  EXPECT_GT(other, 500) << "its diffuse floor";
+  // The next build forgets them (a frame's points are that frame's).
+  CpuImage edited = hits;
+  edited.setU(sx, sy, 0, 0u);  // now background
+  const ExactHitBuffer& rebuilt = exactHits(*f->world, edited, camera);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) ASSERT_EQ(rebuilt.keptPoint(x, y), nullptr);
+}
+
+// In a hybrid frame rt_reflection keeps its mirror pixels' points for rt_transmission and shade.
+TEST(ExactHits, AHybridFrameKeepsItsMirrorPixelsPoints) {
+  auto f = whittedFrame();
+  const ExactHitBuffer& exact = f->world->cpuCached<ExactHitBuffer>();
+  int kept = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) kept += exact.keptPoint(x, y) != nullptr;
+  EXPECT_GT(kept, 500);
 }
 
 TEST(ExactHits, BuiltOncePerFrameForAllConsumers) {

@@ -244,10 +244,17 @@ TEST(WhittedTile, RadianceTileRejectsDepthsOutsideTheRecursion) {
 }
 
 TEST(WhittedTile, TracedTileEqualsReflectedAndTransmitted) {
-  const Scene scene = sample("techniques.json");
+  Scene scene = sample("techniques.json");
+  // The glass box rests on the floor: its bottom face and the floor are coplanar, and which of
+  // the two a ray reports there depends on the kernel's traversal order, which differs between
+  // Embree's single-ray and stream kernels and between ISAs (9 of 741 rays differed on an Intel
+  // Xeon, 33 on an AMD EPYC with AVX2). Raised 1 cm there is no tie, and nothing else differs.
+  for (Instance& instance : scene.instances)
+    if (instance.name == "blue glass box")
+      instance.transform = glm::translate(mat4(1.f), vec3(0.f, 0.01f, 0.f)) * instance.transform;
   RenderWorld world(scene);
-  // Without streams (rtcIntersect1 at every level) bit for bit; with them within the budget of
-  // expectTileEqualsRayByRay (the glass box's coplanar tie with the ground: 9 of 741 rays).
+  // Without streams (rtcIntersect1 at every level) bit for bit; with them too but for a rounding
+  // difference of a packet kernel (none on AVX2; a budget of 1% for other ISAs).
   const WhittedTracer tracer(scene, world.geometry(), world.rtScene(), {5, 16, true, false});
   const WhittedTracer streamed(scene, world.geometry(), world.rtScene(), {5, 16, true, true});
   std::vector<WhittedTracer::SecondaryRay> rays;
@@ -282,7 +289,7 @@ TEST(WhittedTile, TracedTileEqualsReflectedAndTransmitted) {
   streamed.tracedTile(rays, out);
   int differ = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) differ += out[i] == expected[i] ? 0 : 1;
-  EXPECT_LE(differ, int(rays.size()) / 40) << "streamed rays that differ, of " << rays.size();
+  EXPECT_LE(differ, int(rays.size()) / 100) << "streamed rays that differ, of " << rays.size();
   // At the last depth there is no secondary ray (its radiance is 0).
   WhittedTracer::SecondaryRay s;
   const Ray eye = primaryRay(scene.camera, kW, kH, kW / 2.f, kH / 2.f);
