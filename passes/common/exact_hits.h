@@ -21,7 +21,7 @@
 // has reflection or transmission is made a SurfacePoint by rt_reflection, rt_transmission and
 // shade alike (makeSurfacePoint, ~540 instructions a pixel, where the Whitted reference makes
 // it once), so the frame's first consumer keeps it (point()) and the later ones copy it
-// (keptPoint()). Memory: 4 B a pixel plus sizeof(SurfacePoint) (~230 B) a shared pixel, at most
+// (keptPoint()). Memory: 4 B a pixel plus sizeof(SurfacePoint) (248 B) a shared pixel, at most
 // kMaxSharedBytes (rows beyond it are not kept: their consumers make their own).
 #include <cstdint>
 #include <mutex>
