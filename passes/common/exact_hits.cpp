@@ -111,30 +111,33 @@ void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camer
   ++builds_;
 }
 
-const SurfacePoint* ExactHitBuffer::point(const Scene& scene, const WorldGeometry& geometry, int x,
-                                           int y, const vec3& incoming) const {
+std::ptrdiff_t ExactHitBuffer::sharedSlot(int x, int y) const {
   const std::int32_t first = rowShared_[std::size_t(y)];
-  const std::size_t pixel = std::size_t(y) * std::size_t(width_) + std::size_t(x);
-  if (first < 0 || sharedIndex_[pixel] < 0) return nullptr;
-  const std::size_t i = std::size_t(first) + std::size_t(sharedIndex_[pixel]);
-  std::atomic_ref<std::uint8_t> state(made_[i]);
+  const std::int32_t index = sharedIndex_[std::size_t(y) * std::size_t(width_) + std::size_t(x)];
+  return first < 0 || index < 0 ? -1 : std::ptrdiff_t(first) + index;
+}
+
+const SurfacePoint* ExactHitBuffer::point(const Scene& scene, const WorldGeometry& geometry, int x,
+                                          int y, const vec3& incoming) const {
+  const std::ptrdiff_t i = sharedSlot(x, y);
+  if (i < 0) return nullptr;
+  std::atomic_ref<std::uint8_t> state(made_[std::size_t(i)]);
   std::uint8_t expected = 0;
   if (!state.compare_exchange_strong(expected, 1, std::memory_order_acquire))
-    return expected == 2 ? &points_[i] : nullptr;  // 1: another thread is making it
+    return expected == 2 ? &points_[std::size_t(i)] : nullptr;  // 1: another thread makes it
   // Trivially destructible (surface_point.h): the slot's old value needs no destructor. A throw
   // (a forged hit) leaves it "being made", so later callers make their own and throw too.
-  ::new (&points_[i]) SurfacePoint(makeSurfacePoint(scene, geometry, hits_[pixel], incoming));
+  const SurfaceHit& hit = hits_[std::size_t(y) * std::size_t(width_) + std::size_t(x)];
+  ::new (&points_[std::size_t(i)]) SurfacePoint(makeSurfacePoint(scene, geometry, hit, incoming));
   state.store(2, std::memory_order_release);
-  return &points_[i];
+  return &points_[std::size_t(i)];
 }
 
 const SurfacePoint* ExactHitBuffer::keptPoint(int x, int y) const {
-  const std::int32_t first = rowShared_[std::size_t(y)];
-  const std::size_t pixel = std::size_t(y) * std::size_t(width_) + std::size_t(x);
-  if (first < 0 || sharedIndex_[pixel] < 0) return nullptr;
-  const std::size_t i = std::size_t(first) + std::size_t(sharedIndex_[pixel]);
-  return std::atomic_ref<std::uint8_t>(made_[i]).load(std::memory_order_acquire) == 2 ? &points_[i]
-                                                                                     : nullptr;
+  const std::ptrdiff_t i = sharedSlot(x, y);
+  if (i < 0) return nullptr;
+  const std::atomic_ref<std::uint8_t> state(made_[std::size_t(i)]);
+  return state.load(std::memory_order_acquire) == 2 ? &points_[std::size_t(i)] : nullptr;
 }
 
 const ExactHitBuffer& exactHits(PassContext& context, ResourceId hits) {

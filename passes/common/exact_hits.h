@@ -23,6 +23,7 @@
 // it once), so the frame's first consumer keeps it (point()) and the later ones copy it
 // (keptPoint()). Memory: 4 B a pixel plus sizeof(SurfacePoint) (248 B) a shared pixel, at most
 // kMaxSharedBytes (rows beyond it are not kept: their consumers make their own).
+#include <cstddef>
 #include <cstdint>
 #include <mutex>
 #include <optional>
@@ -71,6 +72,7 @@ class ExactHitBuffer {
   friend const ExactHitBuffer& exactHits(RenderWorld&, const CpuImage&, const Camera&);
   friend const ExactHitBuffer& exactHits(PassContext&, ResourceId);
   bool builtFrom(const CpuImage& hits, const Camera& camera) const;
+  std::ptrdiff_t sharedSlot(int x, int y) const;  // index into points_, or -1
   void build(RenderWorld& world, const CpuImage& hits, const Camera& camera);
 
   int width_ = 0, height_ = 0, builds_ = 0;

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "engine/core/error.h"
-#include "passes/common/exact_hits.h"
 #include "engine/shading/shading.h"
+#include "passes/common/exact_hits.h"
 #include "passes/common/hits_texel.h"
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
@@ -73,7 +73,8 @@ TEST(ExactHits, KeepsTheSharedPixelsSurfacePointsAsMadeOnce) {
       const SurfacePoint* kept = exact.point(scene, geometry, x, y, incoming);
       bool sharedMaterial = false;
       if (hit) {
-        const Material& m = scene.material(scene.meshes[scene.instances[hit->instance].mesh].material);
+        const Material& m =
+            scene.material(scene.meshes[scene.instances[hit->instance].mesh].material);
         sharedMaterial = shading::materialHasReflection(m) || shading::materialHasTransmission(m);
       }
       if (!sharedMaterial) {
