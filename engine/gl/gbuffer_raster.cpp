@@ -65,6 +65,16 @@ const Program& GBufferRasterizer::program(bool alpha, bool normal, bool barycent
   return it->second;
 }
 
+const Program& GBufferRasterizer::impostorProgram() {
+  auto it = programs_.find("impostor");
+  if (it == programs_.end())
+    it = programs_
+             .emplace("impostor",
+                      loadProgram({"gbuffer_impostor.vert", "gbuffer_impostor.frag"}, {}))
+             .first;
+  return it->second;
+}
+
 const Program& GBufferRasterizer::surfaceProgram(const GlShadingBuffers& shading) {
   const std::string key = "surface:" + keyOf(shading.defines);
   auto it = programs_.find(key);
@@ -160,7 +170,10 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   const bool barycentrics = targets.barycentrics || withSurface;
   const Program& opaqueProgram = program(false, withNormal, barycentrics, shading);
   const Program* alphaProgram = alphaTested ? &program(true, withNormal, true, shading) : nullptr;
-  for (const Program* program : {&opaqueProgram, alphaProgram}) {
+  const bool impostors = targets.impostors && !barycentrics && !withNormal;
+  const Program* sphereProgram = impostors ? &impostorProgram() : nullptr;
+  if (sphereProgram) sphereProgram->set("uNear", camera.znear);
+  for (const Program* program : {&opaqueProgram, alphaProgram, sphereProgram}) {
     if (!program) continue;
     program->set("uViewProjection", reversedZProjection(camera, aspect) * viewMatrix(camera));
     program->set("uCameraPosition", camera.position);
@@ -176,11 +189,32 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   scene.bindStorage();
   if (shading) shading->bindStorage();
   culledMeshes_ = 0;
+  impostorMeshes_ = 0;
   const float nearReach = nearPlaneReach(camera.znear, camera.verticalFov, aspect);
   for (const GlMeshRange& mesh : scene.meshes) {
     if (mesh.triangleCount == 0) continue;
     const AlphaDraw mode = shading ? shading->alphaDraw(mesh.material) : AlphaDraw::Opaque;
     if (mode == AlphaDraw::Hidden) continue;
+    // The box with a margin around the sphere's (rounded outward) bounds: the conservative
+    // near-misses of the fragment test lie within a relative 5e-4 of the radius.
+    const vec3 margin = 1e-3f * (mesh.boundsHi - mesh.boundsLo) + vec3(1e-6f);
+    const vec3 boxLo = mesh.boundsLo - margin, boxHi = mesh.boundsHi + margin;
+    // Seen from outside, a sphere's nearest root is on its front: what its triangles would show
+    // (a single-sided material included); and the box's front faces, clear of the near plane,
+    // give each pixel it covers one fragment.
+    if (sphereProgram && mesh.sphere && mode == AlphaDraw::Opaque &&
+        outsideBounds(camera.position, boxLo, boxHi, nearReach)) {
+      glEnable(GL_CULL_FACE);  // back faces (gbuffer_impostor.vert winds them outward CCW)
+      sphereProgram->use();
+      sphereProgram->set("uInstance", std::uint32_t(mesh.instance));
+      sphereProgram->set("uToObject", mesh.toObject);
+      sphereProgram->set("uRadius", mesh.sphereRadius);
+      sphereProgram->set("uBoxLo", boxLo);
+      sphereProgram->set("uBoxHi", boxHi);
+      glDrawArrays(GL_TRIANGLES, 0, 36);
+      ++impostorMeshes_;
+      continue;
+    }
     const Program& program = mode == AlphaDraw::AlphaTested ? *alphaProgram : opaqueProgram;
     // A closed mesh seen from outside: its back faces are hidden by its own front faces
     // (closed_mesh.h). Alpha-tested meshes have holes: never culled.

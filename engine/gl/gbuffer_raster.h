@@ -57,6 +57,13 @@ struct GBufferTargets {
   // write them (their test needs them), and so does every mesh when the normal or the surface
   // is written (both are built from them): false is then ignored.
   bool barycentrics = true;
+  // With barycentrics false: analytic spheres seen from outside (GlMeshRange::sphere) are drawn
+  // as ray-cast impostors, their box and a fragment program that intersects the pixel's ray
+  // with the sphere (gbuffer_impostor.frag), instead of their triangles: texels (instance + 1,
+  // kImpostorPrimitive (world_geometry.h), NaN, NaN), which name no triangle, for readers that lift
+  // every texel onto the exact surface anyway (passes/common/hits_texel.h). A 128 x 64 sphere is
+  // 16k triangles that llvmpipe transforms and bins on one core; its box is 12.
+  bool impostors = false;
 };
 
 // Holds the compiled programs and framebuffers; create once per context, reuse every frame.
@@ -69,6 +76,8 @@ class GBufferRasterizer {
   // Meshes the last render drew with back-face culling of closed meshes (single-sided materials
   // are culled whatever cullClosed says, and counted only when closed and seen from outside).
   int culledMeshes() const { return culledMeshes_; }
+  // Meshes the last render drew as impostors (GBufferTargets::impostors).
+  int impostorMeshes() const { return impostorMeshes_; }
   // Renders into `targets` (the surface too when allocated), which must have the formats above at
   // any W x H (the viewport follows their size). Sets its own GL state: clip control
   // lower-left/zero-to-one, depth GREATER with clear 0, back faces culled for single-sided
@@ -93,10 +102,11 @@ class GBufferRasterizer {
               const GlShadingBuffers* shading, const Scene* materials = nullptr);
 
  private:
-  int culledMeshes_ = 0;
+  int culledMeshes_ = 0, impostorMeshes_ = 0;
   const Program& program(bool alpha, bool normal, bool barycentrics,
                          const GlShadingBuffers* shading);
   const Program& surfaceProgram(const GlShadingBuffers& shading);
+  const Program& impostorProgram();
   // gbuffer_surface.comp over the finished hits: one surfaceFromHits per pixel, not per fragment.
   void resolveSurface(const Texture& hits, const Texture& surface, const GlShadingBuffers& shading);
 

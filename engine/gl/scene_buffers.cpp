@@ -50,6 +50,11 @@ GlSceneBuffers uploadScene(const WorldGeometry& geometry) {
     for (const vec3& p : mesh.positions) box.extend(p);
     range.boundsLo = box.lo;
     range.boundsHi = box.hi;
+    if (mesh.analytic && !mesh.analytic->sdf && mesh.analytic->shape.type == ShapeType::Sphere) {
+      range.sphere = true;
+      range.sphereRadius = mesh.analytic->shape.radius;
+      range.toObject = mat4(mesh.analytic->toObject);
+    }
     out.meshes.push_back(range);
   }
   out.vertexCount = positions.size() / 3;

@@ -21,6 +21,13 @@ struct GlMeshRange {
   // G-buffer culls its back faces when the eye is outside them.
   bool closedOutward = false;
   vec3 boundsLo{0.f}, boundsHi{0.f};
+  // An analytic sphere (WorldMesh::analytic, not an SDF): the G-buffer may draw it as a
+  // ray-cast impostor instead of its triangles (gbuffer_raster.h, GBufferTargets::impostors).
+  // Object space is the sphere's (centre 0, `sphereRadius`); the world ray maps to it by
+  // `toObject` (the instance transform's inverse, rounded to float).
+  bool sphere = false;
+  float sphereRadius = 0.f;
+  mat4 toObject{1.f};
 };
 
 struct GlSceneBuffers {

@@ -19,6 +19,9 @@ class ReaderQuery {
   virtual bool readIn(ResourceId id, Domain domain) const = 0;
   // Whether any live pass reads `id`, or the frame outputs it.
   virtual bool consumed(ResourceId id) const = 0;
+  // Whether a live pass that reads `id` reads the triangles its texels name
+  // (Pass::readsHitTriangles).
+  virtual bool trianglesRead(ResourceId id) const = 0;
 };
 
 class AdaptivePass : public Pass {

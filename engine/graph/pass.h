@@ -81,6 +81,10 @@ class Pass {
   virtual Domain domain() const = 0;
   virtual void setup(PassBuilder& builder) = 0;
   virtual void execute(PassContext& context) = 0;
+  // Whether this pass reads the triangle a G-buffer hits texel names (the tessellation itself),
+  // not only the surface point it stands for: the G-buffer then draws analytic spheres as
+  // triangles, never as ray-cast impostors (passes/raster/gbuffer.h). Only wag_shadows does.
+  virtual bool readsHitTriangles() const { return false; }
 };
 
 }  // namespace diptych

@@ -89,6 +89,11 @@ class CompiledReaders final : public ReaderQuery {
       if (!g_.passes[q].culled && g_.passes[q].domain == domain) return true;
     return false;
   }
+  bool trianglesRead(ResourceId id) const override {
+    for (PassIndex q : g_.resources[id].readers)
+      if (!g_.passes[q].culled && g_.passes[q].pass->readsHitTriangles()) return true;
+    return false;
+  }
   bool consumed(ResourceId id) const override {
     if (std::find(g_.outputs.begin(), g_.outputs.end(), id) != g_.outputs.end()) return true;
     for (PassIndex q : g_.resources[id].readers)

@@ -12,6 +12,11 @@ namespace diptych {
 
 struct SdfStats;  // engine/scene/sdf.h
 
+// The primitive of a G-buffer hits texel that names no triangle of its instance but its
+// analytic surface: an analytic sphere drawn as a ray-cast impostor (engine/gl/gbuffer_raster.h,
+// GBufferTargets::impostors). Readers lift it onto the exact surface (passes/common/hits_texel.h).
+inline constexpr std::uint32_t kImpostorPrimitive = 0xffffffffu;
+
 // An analytic shape placed by its instance transform. Rays are intersected in object space in
 // double (intersectAnalytic); points and normals go back to world space once, rounded to float.
 struct AnalyticInstance {

@@ -27,7 +27,9 @@ bool sameCamera(const Camera& a, const Camera& b) {
 // (u, v) altogether: alongRay then runs only where the lift misses (a silhouette texel).
 // cache: the row's last triangle (alongRay; all of a row's rays leave the camera's position).
 // direction: the pixel-centre ray's (PinholeFrame::rowDirections, == ray()'s bit for bit).
-SurfaceHit liftedTexel(const std::uint32_t* t, const WorldGeometry& world,
+// traced: whose RtScene traces an impostor texel's ray where it misses its sphere (built on that
+// first need only).
+SurfaceHit liftedTexel(const std::uint32_t* t, const WorldGeometry& world, RenderWorld& traced,
                        const PinholeFrame& pinhole, const vec3& direction, AlongRayCache& cache) {
   if (t[0] == 0u) return SurfaceHit{};  // instance -1: background
   SurfaceHit hit{int(t[0] - 1u), t[1], std::bit_cast<float>(t[2]), std::bit_cast<float>(t[3])};
@@ -35,6 +37,10 @@ SurfaceHit liftedTexel(const std::uint32_t* t, const WorldGeometry& world,
   const bool computed = !std::isnan(hit.u);
   if (computed && !mesh.analytic) return hit;
   const Ray ray{pinhole.position(), direction};
+  if (!computed && hit.primitive == kImpostorPrimitive) {  // a sphere's impostor: no triangle
+    const SurfaceHit lifted = liftedImpostor(world, hit, ray);
+    return lifted.analytic ? lifted : tracedTexel(traced.rtScene(), ray);
+  }
   // A forged primitive is an error whether or not the lift would hit (alongRay's check).
   if (mesh.analytic && hit.primitive < mesh.indices.size() / 3) {
     const SurfaceHit lifted = liftToAnalytic(world, hit, ray);
@@ -83,10 +89,10 @@ void ExactHitBuffer::build(RenderWorld& world, const CpuImage& hits, const Camer
       directions.resize(std::size_t(width_));
       pinhole.rowDirections(y, directions);
       for (int x = 0; x < width_; ++x, texel += 4)
-        row[x] = liftedTexel(texel, geometry, pinhole, directions[std::size_t(x)], cache);
+        row[x] = liftedTexel(texel, geometry, world, pinhole, directions[std::size_t(x)], cache);
     } else {
       for (int x = 0; x < width_; ++x) {
-        const auto hit = exactTexel(hits, geometry, pinhole, x, y);
+        const auto hit = exactTexel(hits, geometry, pinhole, x, y, &world.rtScene());
         row[x] = hit ? *hit : SurfaceHit{};  // instance -1: background
       }
     }

@@ -5,6 +5,7 @@
 // hitsTexel then names the triangle only; exactTexel and triangleTexel compute them.
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include <string>
@@ -12,6 +13,7 @@
 #include "engine/core/error.h"
 #include "engine/graph/cpu_image.h"
 #include "engine/rt/ray_triangle.h"
+#include "engine/rt/rt_scene.h"
 #include "engine/rt/surface_point.h"
 
 namespace diptych {
@@ -83,21 +85,55 @@ inline std::optional<SurfaceHit> triangleTexel(const CpuImage& hits, const World
 // (exact_hits.h), built once from this. `pinhole`: the camera frame at the hits image's size,
 // built once per image by per-pixel loops (primaryRay would rebuild it for every texel; the ray
 // is the same bit for bit).
+// An impostor texel (kImpostorPrimitive, engine/gl/gbuffer_raster.h) names the sphere, not a
+// triangle: it is lifted the same way (liftToAnalytic along the pixel's ray). Where the exact
+// sphere is missed after all (the impostor's test is conservative: a sliver of a pixel at the
+// silhouette) the result is not analytic, and the pixel's ray is to be traced instead
+// (tracedTexel), which finds what lies behind.
+inline SurfaceHit liftedImpostor(const WorldGeometry& world, const SurfaceHit& texel,
+                                 const Ray& ray) {
+  const WorldMesh& mesh = texelMesh(world, texel);
+  if (!mesh.analytic || mesh.analytic->sdf)
+    throw Error("G-buffer hits texel: instance " + std::to_string(texel.instance) +
+                " has no analytic surface, but the texel names no triangle");
+  return liftToAnalytic(world, {texel.instance, 0u, 0.f, 0.f, false}, ray);
+}
+// The closest hit of a pixel's ray (instance -1: none), for the impostor texels that missed.
+inline SurfaceHit tracedTexel(const RtScene& rt, const Ray& ray) {
+  Hit h;
+  if (!rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity(), h, false))
+    return SurfaceHit{};
+  return SurfaceHit{h.instance, h.primitive, h.u, h.v, h.analytic};
+}
+// `rt`: where impostor texels (above) that miss their sphere are traced; without it such a
+// texel is an Error.
 inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeometry& world,
-                                            const PinholeFrame& pinhole, int x, int y) {
+                                            const PinholeFrame& pinhole, int x, int y,
+                                            const RtScene* rt = nullptr) {
   auto hit = hitsTexel(hits, x, y);
   if (!hit) return hit;
   const WorldMesh& mesh = texelMesh(world, *hit);
   const bool computed = !std::isnan(hit->u);
   if (computed && !mesh.analytic) return hit;
   const Ray ray = pinhole.ray(x + 0.5f, y + 0.5f);
+  if (!computed && hit->primitive == kImpostorPrimitive) {
+    const SurfaceHit lifted = liftedImpostor(world, *hit, ray);
+    if (lifted.analytic) return lifted;
+    if (!rt)
+      throw Error("G-buffer hits texel: the impostor of instance " + std::to_string(hit->instance) +
+                  " at pixel " + std::to_string(x) + "," + std::to_string(y) +
+                  " missed its sphere, and no ray-traced scene was given to trace the pixel");
+    const SurfaceHit traced = tracedTexel(*rt, ray);
+    return traced.instance < 0 ? std::nullopt : std::optional<SurfaceHit>(traced);
+  }
   if (!computed) hit = alongRay(mesh, *hit, ray);
   if (mesh.analytic) hit = liftToAnalytic(world, *hit, ray);
   return hit;
 }
 inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeometry& world,
-                                            const Camera& camera, int x, int y) {
-  return exactTexel(hits, world, PinholeFrame(camera, hits.desc.width, hits.desc.height), x, y);
+                                            const Camera& camera, int x, int y,
+                                            const RtScene* rt = nullptr) {
+  return exactTexel(hits, world, PinholeFrame(camera, hits.desc.width, hits.desc.height), x, y, rt);
 }
 
 }  // namespace diptych

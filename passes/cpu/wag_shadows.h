@@ -22,6 +22,7 @@ class WagShadowsPass : public Pass {
   Domain domain() const override { return Domain::Cpu; }
   void setup(PassBuilder& builder) override;
   void execute(PassContext& context) override;
+  bool readsHitTriangles() const override { return true; }  // the lit pieces are triangles'
 
  private:
   bool everyFrame_ = false;

@@ -13,7 +13,11 @@ ParamSchema GBufferPass::schema() {
   // (docs/benchmarks.md, "The stored G-buffer surface").
   return {ParamSpec::boolean("surface", false,
                              "resolve the surface point once into a 3-layer target that GL passes "
-                             "read (3 texels) instead of rebuilding it from the hits; same image")};
+                             "read (3 texels) instead of rebuilding it from the hits; same image"),
+          ParamSpec::boolean("impostors", true,
+                             "in a visibility buffer, draw analytic spheres as ray-cast impostors "
+                             "(their box) instead of their triangles, where no reader needs the "
+                             "triangles: the exact sphere's silhouette, at a box's raster cost")};
 }
 
 void GBufferPass::setup(PassBuilder& b) {
@@ -21,6 +25,7 @@ void GBufferPass::setup(PassBuilder& b) {
   const int w = b.frame().width, h = b.frame().height;
   hits_ = b.write(kHits, {Format::RGBA32UI, w, h}, vec4(0.f));
   normal_ = b.write("normal", {Format::RGBA32F, w, h}, vec4(0.f));
+  impostorsAllowed_ = b.params().boolean("impostors");
   if (b.params().boolean("surface"))
     surface_ = b.write(kSurface, {Format::RGBA32F, w, h, 3}, vec4(0.f));
   depth_ = b.write("depth", {Format::D32F, w, h}, vec4(0.f));
@@ -35,10 +40,17 @@ std::string GBufferPass::adapt(const ReaderQuery& readers) {
   const bool normal = readers.consumed(normal_);
   const bool surface = surface_ != kNoResource && readers.consumed(surface_);
   barycentrics_ = gl || !cpu || normal || surface;
+  // Every CPU reader lifts the texels onto the exact surface: analytic spheres need no triangles.
+  impostors_ = impostorsAllowed_ && !barycentrics_ && !readers.trianglesRead(hits_);
   if (!barycentrics_)
-    return "visibility buffer: only CPU passes read the hits, so the fragments leave their "
-           "(u, v) NaN and the CPU passes intersect the pixel ray with the named triangle "
-           "(passes/common/hits_texel.h)";
+    return std::string(
+               "visibility buffer: only CPU passes read the hits, so the fragments leave "
+               "their (u, v) NaN and the CPU passes intersect the pixel ray with the "
+               "named triangle (passes/common/hits_texel.h)") +
+           (impostors_          ? "; analytic spheres drawn as ray-cast impostors (their box, no "
+                                  "triangles), lifted onto the exact sphere by the same CPU passes"
+            : impostorsAllowed_ ? "; analytic spheres as triangles, which a reader needs"
+                                : "; analytic spheres as triangles (impostors false)");
   return std::string("exact hits: (u, v) computed per fragment, because ") +
          (gl       ? "a GL pass reads the hits"
           : !cpu   ? "no CPU pass reads the hits"
@@ -50,8 +62,10 @@ void GBufferPass::execute(PassContext& c) {
   const gl::GlSceneBuffers& scene = c.world().glScene();
   // Only what a live pass reads is written: the hybrid frame (CPU passes, which rebuild the
   // exact surface from the hits) pays for neither the normal nor the surface.
-  gl::GBufferTargets targets{
-      .hits = &c.glTexture(hits_), .depth = &c.glTexture(depth_), .barycentrics = barycentrics_};
+  gl::GBufferTargets targets{.hits = &c.glTexture(hits_),
+                             .depth = &c.glTexture(depth_),
+                             .barycentrics = barycentrics_,
+                             .impostors = impostors_};
   if (consumed(c, normal_)) targets.normal = &c.glTexture(normal_);
   if (surface_ != kNoResource && consumed(c, surface_)) targets.surface = &c.glTexture(surface_);
   // The shading buffers carry the alpha masks, so the G-buffer sees through the holes that

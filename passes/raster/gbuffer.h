@@ -21,7 +21,9 @@ class GBufferPass : public AdaptivePass {
   void execute(PassContext& context) override;
 
  private:
-  bool barycentrics_ = true;  // adapt()'s choice: false writes the visibility buffer
+  bool barycentrics_ = true;      // adapt()'s choice: false writes the visibility buffer
+  bool impostorsAllowed_ = true;  // the "impostors" parameter
+  bool impostors_ = false;  // GBufferTargets::impostors: allowed, and no reader needs triangles
   ResourceId hits_ = kNoResource, normal_ = kNoResource,
              surface_ = kNoResource;  // surface_: kNoResource with surface=false
   ResourceId depth_ = kNoResource;

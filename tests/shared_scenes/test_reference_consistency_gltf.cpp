@@ -43,7 +43,8 @@ TEST_P(GltfReferenceConsistency, AllExactHybridMatchesWhitted) {
     for (int x = 0; x < kW; ++x) {
       const Ray ray = primaryRay(camera, kW, kH, x + 0.5f, y + 0.5f);
       const auto traced = rt.intersect(ray, 0.f, std::numeric_limits<float>::infinity());
-      const auto raster = exactTexel(gbuffer, f->world->geometry(), camera, x, y);
+      const auto raster =
+          exactTexel(gbuffer, f->world->geometry(), camera, x, y, &f->world->rtScene());
       // Coverage and triangle must agree (silhouettes and shared edges may not), and the traced
       // hit must be of a non-culled face: the single-sided culling is tested elsewhere.
       if (!traced || !raster || traced->instance != raster->instance ||

@@ -62,6 +62,14 @@ inline std::unique_ptr<HybridFrame> renderHybridFrame(
   return renderHybridFrame(loadScene(file), width, height, outputs, recipe);
 }
 
+// `recipe` with its G-buffer drawing analytic spheres as triangles in a visibility buffer too
+// (parameter impostors false, passes/raster/gbuffer.h): for tests of the rasterized triangles.
+inline Recipe withoutImpostors(Recipe recipe) {
+  for (RecipePass& p : recipe.passes)
+    if (p.type == "gbuffer") p.params["impostors"] = false;
+  return recipe;
+}
+
 // `recipe` with its shade pass duplicated: shade_gl forced to GL and shade_cpu to the CPU, both
 // reading the same resources, so one frame gives both sides the same inputs.
 inline Recipe withShadeInBothDomains(Recipe recipe) {

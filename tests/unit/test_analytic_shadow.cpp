@@ -71,7 +71,8 @@ TEST(AnalyticShadow, SphereOverPlaneShadowDiscHasTheExactRadius) {
   const PinholeFrame pinhole(frame->graph.frame.camera, w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      if (const auto hit = exactTexel(gbuffer, frame->world->geometry(), pinhole, x, y);
+      if (const auto hit = exactTexel(gbuffer, frame->world->geometry(), pinhole, x, y,
+                                      &frame->world->rtScene());
           hit && hit->instance == plane)
         position[std::size_t(y) * w + x] =
             interpolatePosition(mesh, hit->primitive, hit->u, hit->v);

@@ -43,7 +43,8 @@ TEST(ExactHits, EqualsLiftingEachTexel) {
   int lifted = 0, background = 0;
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {
-      const auto expected = exactTexel(hits, f->world->geometry(), camera, x, y);
+      const auto expected =
+          exactTexel(hits, f->world->geometry(), camera, x, y, &f->world->rtScene());
       ASSERT_TRUE(sameHit(exact.at(x, y), expected)) << "pixel " << x << "," << y;
       lifted += expected && expected->analytic ? 1 : 0;
       background += expected ? 0 : 1;
@@ -156,9 +157,10 @@ TEST(ExactHits, RebuiltWhenTheHitsOrTheCameraChange) {
   Camera moved = camera;
   moved.position += vec3(0.f, 0.05f, 0.f);
   const auto there = exactHits(*f->world, hits, moved).at(ax, ay);
-  const auto expected = exactTexel(hits, f->world->geometry(), moved, ax, ay);
+  const auto expected = exactTexel(hits, f->world->geometry(), moved, ax, ay, &f->world->rtScene());
   EXPECT_TRUE(sameHit(there, expected));
-  EXPECT_FALSE(sameHit(there, exactTexel(hits, f->world->geometry(), camera, ax, ay)));
+  EXPECT_FALSE(
+      sameHit(there, exactTexel(hits, f->world->geometry(), camera, ax, ay, &f->world->rtScene())));
   EXPECT_EQ(f->world->cpuCached<ExactHitBuffer>().builds(), before + 2);
 }
 
@@ -179,9 +181,11 @@ TEST(ExactHits, PassKeyedBufferFollowsTheCameraBetweenFrames) {
   int differ = 0;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
-      ASSERT_TRUE(sameHit(exact.at(x, y), exactTexel(hits, f->world->geometry(), moved, x, y)))
+      ASSERT_TRUE(sameHit(exact.at(x, y), exactTexel(hits, f->world->geometry(), moved, x, y,
+                                                     &f->world->rtScene())))
           << "pixel " << x << "," << y;
-      differ += !sameHit(exact.at(x, y), exactTexel(hits, f->world->geometry(), before, x, y));
+      differ += !sameHit(exact.at(x, y), exactTexel(hits, f->world->geometry(), before, x, y,
+                                                    &f->world->rtScene()));
     }
   EXPECT_GT(differ, 0) << "the old camera's rays would lift the texels elsewhere";
 }

@@ -59,7 +59,7 @@ Agreement compareHybridWithReference(const char* sceneFile, int w, int h,
       const Ray ray = primaryRay(frame.camera, w, h, x + 0.5f, y + 0.5f);
       const auto rt = world.rtScene().intersect(ray, 0.f, std::numeric_limits<float>::infinity());
       // The exact producers shade the G-buffer texel lifted onto the analytic surface.
-      const auto gl = exactTexel(gbuffer, world.geometry(), frame.camera, x, y);
+      const auto gl = exactTexel(gbuffer, world.geometry(), frame.camera, x, y, &world.rtScene());
       const bool same =
           (!rt && !gl) || (rt && gl && rt->instance == gl->instance &&
                            rt->primitive == gl->primitive && rt->analytic == gl->analytic);

@@ -92,9 +92,11 @@ TEST(VisibilityGBuffer, AFrameWithAGlReaderOrNoReaderKeepsThePerFragmentBarycent
 // The same hybrid frame with a GL reader of the hits added (shade_gl), so that its G-buffer
 // computes (u, v) per fragment and the CPU passes use them: the variant moves the CPU shade by
 // rounding only (GL's (u, v) and the C++ twin's round differently, docs/gl.md).
+// The spheres as triangles in both (impostors false): the exact G-buffer draws triangles.
 TEST(VisibilityGBuffer, TheVariantMovesTheHybridImageByRoundingOnly) {
   for (const char* scene : {"whitted.json", "cornell.json", "textures.json"}) {
-    auto visibility = renderHybridFrame(sample(scene), kW, kH, {"shade.color", "gbuffer.hits"});
+    auto visibility = renderHybridFrame(sample(scene), kW, kH, {"shade.color", "gbuffer.hits"},
+                                        withoutImpostors(defaultHybridRecipe()));
     auto exact =
         renderHybridFrame(sample(scene), kW, kH, {}, withShadeInBothDomains(defaultHybridRecipe()));
     ASSERT_TRUE(startsWith(visibility->pass("gbuffer")->variant, "visibility")) << scene;
@@ -124,6 +126,9 @@ TEST(VisibilityGBuffer, ExactHitsAreThePixelRaysPointOnTheNamedTriangle) {
       for (int x = 0; x < kW; ++x) {
         const auto hit = exact.at(x, y);
         if (!hit || hit->analytic) continue;
+        // A sphere impostor's texel that missed the sphere: the pixel's traced hit (Embree's
+        // (u, v)), which ImpostorsGiveEverySpherePixelThePixelRaysOwnHit checks.
+        if (hitsTexel(hits, x, y)->primitive == kImpostorPrimitive) continue;
         const WorldMesh& mesh = geometry.meshes[std::size_t(hit->instance)];
         if (mesh.analytic) continue;  // a lift that fell back to the tessellation
         ++triangles;
@@ -149,5 +154,66 @@ TEST(VisibilityGBuffer, ExactHitsAreThePixelRaysPointOnTheNamedTriangle) {
     EXPECT_GT(triangles, kW * kH / 4) << scene;
     EXPECT_GT(sameAsEmbree, triangles * 99 / 100) << scene;
     EXPECT_LT(worst, 1e-4) << scene;
+  }
+}
+
+// Analytic spheres as ray-cast impostors (engine/gl/gbuffer_raster.h): their texels name the
+// sphere, not a triangle, and the exact-hit buffer built from them is the pixel rays' own
+// closest hits, Embree's (whose sphere callback runs the same double-precision intersection)
+// bit for bit on the spheres: no ring of pixels at the silhouette where a tessellation inscribed
+// in the sphere misses it, and where the conservative test over-reports, the traced ray's hit.
+TEST(VisibilityGBuffer, ImpostorsGiveEverySpherePixelThePixelRaysOwnHit) {
+  for (const char* scene : {"whitted.json", "techniques.json"}) {
+    auto f = renderHybridFrame(sample(scene), kW, kH, {"shade.color", "gbuffer.hits"});
+    EXPECT_NE(f->pass("gbuffer")->variant.find("ray-cast impostors"), std::string::npos)
+        << f->pass("gbuffer")->variant;
+    const CpuImage& hits = f->output("gbuffer.hits");
+    const Camera camera = cameraOf(f->scene);
+    const ExactHitBuffer& exact = exactHits(*f->world, hits, camera);
+    int impostors = 0, sphere = 0;
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) {
+        const auto texel = hitsTexel(hits, x, y);
+        impostors += texel && texel->primitive == kImpostorPrimitive;
+        const Ray ray = primaryRay(camera, kW, kH, x + 0.5f, y + 0.5f);
+        const auto rt =
+            f->world->rtScene().intersect(ray, 0.f, std::numeric_limits<float>::infinity());
+        const auto hit = exact.at(x, y);
+        const bool onSphere = rt && rt->analytic;
+        ASSERT_EQ(hit && hit->analytic, onSphere) << scene << " pixel " << x << "," << y;
+        if (!onSphere) continue;
+        ++sphere;
+        ASSERT_EQ(hit->instance, rt->instance) << scene << " pixel " << x << "," << y;
+        ASSERT_EQ(hit->primitive, rt->primitive) << scene << " pixel " << x << "," << y;
+        ASSERT_EQ(hit->u, rt->u) << scene << " pixel " << x << "," << y;
+        ASSERT_EQ(hit->v, rt->v) << scene << " pixel " << x << "," << y;
+      }
+    }
+    std::printf("%s: %d impostor texels, %d sphere pixels\n", scene, impostors, sphere);
+    EXPECT_GT(sphere, 500) << scene;
+    EXPECT_GE(impostors, sphere) << scene << ": every sphere pixel from an impostor";
+  }
+}
+
+// A reader that needs the triangles (wag_shadows: its lit pieces are the tessellation's) keeps
+// them, as does the "impostors" parameter set false.
+TEST(VisibilityGBuffer, ImpostorsOnlyWhereNoReaderNeedsTheTriangles) {
+  Recipe wag = defaultHybridRecipe();
+  for (RecipePass& p : wag.passes)
+    if (p.name == "shadows") p.type = "wag_shadows";
+  for (const Recipe& recipe : {wag, withoutImpostors(defaultHybridRecipe())}) {
+    auto f =
+        renderHybridFrame(sample("whitted.json"), kW, kH, {"shade.color", "gbuffer.hits"}, recipe);
+    const std::string& variant = f->pass("gbuffer")->variant;
+    EXPECT_TRUE(startsWith(variant, "visibility buffer")) << variant;
+    EXPECT_NE(variant.find("analytic spheres as triangles"), std::string::npos) << variant;
+    const CpuImage& hits = f->output("gbuffer.hits");
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) {
+        if (const auto texel = hitsTexel(hits, x, y)) {
+          ASSERT_NE(texel->primitive, kImpostorPrimitive) << variant;
+        }
+      }
+    }
   }
 }
