@@ -132,3 +132,8 @@ string(FIND "${err}" "another diptych run is writing to this folder" pos)
 if(rc EQUAL 0 OR pos EQUAL -1 OR EXISTS "${WORK_DIR}/locked/results.json")
   message(FATAL_ERROR "a locked output folder was not refused (exit ${rc}):\n${err}")
 endif()
+# An analytic sphere (the hybrid G-buffer's impostor texels name no triangle) and no --receiver:
+# every covered pixel, the sphere's included, gets its exact point (samples/diptych/sweep/geometry.cpp).
+expect_success(sweep_analytic ARGS sweep "${SOURCE_DIR}/samples/scenes/shadow-sphere.json"
+               --slot visibility=shadow_map:bias=constant --vary constant_bias=0.01 --size 96x72
+               --out swa FILES swa/results.json)

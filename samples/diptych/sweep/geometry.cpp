@@ -90,14 +90,21 @@ void measureGeometry(StateReference& s, const FrameSettings& frame, int light,
   const std::vector<float> exact =
       l ? layer(signal, std::min(light, signal.desc.layers - 1)) : std::vector<float>(n, 1.f);
   const WorldGeometry& world = s.world->geometry();
-  // The hybrid's G-buffer is a visibility buffer: (u, v) come from the pixel ray (hits_texel.h).
+  // The hybrid's G-buffer is a visibility buffer: (u, v) come from the pixel ray (hits_texel.h),
+  // and its analytic spheres are impostors, whose texels name no triangle: the exact point, and
+  // where an impostor missed its sphere the traced one.
   const PinholeFrame pinhole(frame.camera, w, h);
+  const RtScene& rt = s.world->rtScene();
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const std::size_t i = std::size_t(y) * w + x;
       if (!s.mask[i]) continue;
-      const SurfacePoint p =
-          makeSurfacePoint(*s.scene, world, *triangleTexel(gb, world, pinhole, x, y), vec3(0.f));
+      const auto hit = exactTexel(gb, world, pinhole, x, y, &rt);
+      if (!hit) {  // an impostor's sliver whose ray, traced, found the background
+        s.mask[i] = 0;
+        continue;
+      }
+      const SurfacePoint p = makeSurfacePoint(*s.scene, world, *hit, vec3(0.f));
       const vec3 view = p.position - frame.camera.position;
       const double cosView = std::abs(glm::dot(glm::normalize(view), p.faceNormal));
       s.footprint[i] = float(glm::length(view) * pixelAngle / std::sqrt(std::max(cosView, 1e-3)));
@@ -146,8 +153,8 @@ ShadowContacts shadowContacts(RenderWorld& world, const CpuImage& gb, const Came
       if (gb.u(x, y, 0) == 0u) continue;
       c.object[i] = std::int32_t(gb.u(x, y, 0)) - 1;
       if (exact[i] >= 0.5f) continue;
-      const auto hit = exactTexel(gb, geometry, camera, x, y);
-      t[i] = occluderDistance(rt, l, shadowReceiver(geometry, *hit));
+      const auto hit = exactTexel(gb, geometry, camera, x, y, &rt);
+      if (hit) t[i] = occluderDistance(rt, l, shadowReceiver(geometry, *hit));
     }
   });
   // A contact line is thinner than a pixel: the pixels nearest it may all lie farther than the
