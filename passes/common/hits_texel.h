@@ -76,16 +76,7 @@ inline std::optional<SurfaceHit> triangleTexel(const CpuImage& hits, const World
   return hit;
 }
 
-// The texel as the exact producers see it: the triangle point (triangleTexel: in a visibility
-// buffer, (u, v) of the pixel-centre ray, primaryRay bit for bit, through the named triangle,
-// computed here in C++), and a hit on the tessellation of an analytic instance (quadric or SDF)
-// moved onto the exact surface along that ray (liftToAnalytic), so rt_shadows, rt_reflection,
-// rt_transmission and the CPU shade pass shade the point the Whitted reference finds; raster
-// producers keep reading the GL texel. Those passes read it from the frame's exact-hit buffer
-// (exact_hits.h), built once from this. `pinhole`: the camera frame at the hits image's size,
-// built once per image by per-pixel loops (primaryRay would rebuild it for every texel; the ray
-// is the same bit for bit).
-// An impostor texel (kImpostorPrimitive, engine/gl/gbuffer_raster.h) names the sphere, not a
+// An impostor texel (kImpostorPrimitive, engine/scene/world_geometry.h) names the sphere, not a
 // triangle: it is lifted the same way (liftToAnalytic along the pixel's ray). Where the exact
 // sphere is missed after all (the impostor's test is conservative: a sliver of a pixel at the
 // silhouette) the result is not analytic, and the pixel's ray is to be traced instead
@@ -105,6 +96,15 @@ inline SurfaceHit tracedTexel(const RtScene& rt, const Ray& ray) {
     return SurfaceHit{};
   return SurfaceHit{h.instance, h.primitive, h.u, h.v, h.analytic};
 }
+// The texel as the exact producers see it: the triangle point (triangleTexel: in a visibility
+// buffer, (u, v) of the pixel-centre ray, primaryRay bit for bit, through the named triangle,
+// computed here in C++), and a hit on the tessellation of an analytic instance (quadric or SDF)
+// moved onto the exact surface along that ray (liftToAnalytic), so rt_shadows, rt_reflection,
+// rt_transmission and the CPU shade pass shade the point the Whitted reference finds; raster
+// producers keep reading the GL texel. Those passes read it from the frame's exact-hit buffer
+// (exact_hits.h), built once from this. `pinhole`: the camera frame at the hits image's size,
+// built once per image by per-pixel loops (primaryRay would rebuild it for every texel; the ray
+// is the same bit for bit).
 // `rt`: where impostor texels (above) that miss their sphere are traced; without it such a
 // texel is an Error.
 inline std::optional<SurfaceHit> exactTexel(const CpuImage& hits, const WorldGeometry& world,
