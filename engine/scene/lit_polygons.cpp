@@ -24,11 +24,11 @@ struct HalfPlane {
   double operator()(const dvec2& p) const { return a * p.x + b * p.y + c; }
 };
 
-// Sutherland and Hodgman's clip of a convex polygon (either orientation) to a half-plane.
-Poly clipped(const Poly& p, const HalfPlane& h) {
-  Poly out;
-  if (p.empty()) return out;
-  out.reserve(p.size() + 1);
+// Sutherland and Hodgman's clip of a convex polygon (either orientation) to a half-plane, into
+// `out` (its storage reused: the receiver loop below clips millions of times, and an allocation
+// per clip was a third of building whitted's pieces; out must not alias p).
+void clip(const Poly& p, const HalfPlane& h, Poly& out) {
+  out.clear();
   for (std::size_t i = 0; i < p.size(); ++i) {
     const dvec2& a = p[i];
     const dvec2& b = p[(i + 1) % p.size()];
@@ -37,7 +37,13 @@ Poly clipped(const Poly& p, const HalfPlane& h) {
     if ((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0))
       out.push_back(a + (b - a) * (fa / (fa - fb)));
   }
-  return out.size() >= 3 ? out : Poly{};
+  if (out.size() < 3) out.clear();
+}
+Poly clipped(const Poly& p, const HalfPlane& h) {
+  Poly out;
+  out.reserve(p.size() + 1);
+  clip(p, h, out);
+  return out;
 }
 
 // The same in 3D against f(q) = dot(k, q) + k0 <= 0 (a light frustum's planes).
@@ -70,14 +76,16 @@ double signedArea(const Poly& p) {
 // nearly parallel edges bound a wedge reaching far beyond it, which subtract() would cut out of
 // a receiver (a thin false shadow across whitted's floor before this). The hull's half-planes
 // bound the hull itself.
-Poly hull(Poly p) {
-  if (p.size() < 3) return {};
+// Into h (its storage reused; p is sorted in place, h must not alias it).
+void hullOf(Poly& p, Poly& h) {
+  h.clear();
+  if (p.size() < 3) return;
   std::sort(p.begin(), p.end(),
             [](const dvec2& a, const dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   const auto turn = [](const dvec2& o, const dvec2& a, const dvec2& b) {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
   };
-  Poly h(2 * p.size());
+  h.resize(2 * p.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     while (k >= 2 && turn(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
@@ -88,7 +96,12 @@ Poly hull(Poly p) {
     h[k++] = p[i];
   }
   h.resize(k - 1);
-  return h.size() >= 3 ? h : Poly{};
+  if (h.size() < 3) h.clear();
+}
+Poly hull(Poly p) {
+  Poly h;
+  hullOf(p, h);
+  return h;
 }
 
 struct Box {
@@ -166,30 +179,47 @@ HalfPlane leftOf(const Poly& c, std::size_t e) {
   return {d.y, -d.x, d.x * a.y - d.y * a.x};
 }
 
-// The pieces minus the convex polygon `c` (a hull(), counter-clockwise): each piece cut along c's
-// edges, the parts outside kept (convex, at most one per edge), the part inside dropped. False when
-// nothing changed.
-bool subtract(std::vector<Poly>& pieces, std::vector<Box>& boxes, const Poly& c, double tiny) {
-  const Box cb = boxOf(c);
-  bool changed = false;
+// Per-thread storage that subtract() and the receiver loop reuse, call after call.
+struct Scratch {
+  Poly a, b, front, frontHull;
   std::vector<Poly> out;
   std::vector<Box> outBoxes;
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    if (!boxes[i].overlaps(cb)) {
-      out.push_back(std::move(pieces[i]));
-      outBoxes.push_back(boxes[i]);
-      continue;
-    }
+};
+
+// Whether the convex polygon `c` (a hull()) covers more than rounding (`tiny`) of `piece`: their
+// intersection, clipped into s.a (s.b its scratch).
+bool cuts(const Poly& piece, const Poly& c, double tiny, Scratch& s) {
+  s.a = piece;
+  for (std::size_t e = 0; e < c.size() && !s.a.empty(); ++e) {
+    clip(s.a, leftOf(c, e), s.b);
+    std::swap(s.a, s.b);
+  }
+  return !s.a.empty() && std::abs(signedArea(s.a)) > tiny;
+}
+
+// The pieces minus the convex polygon `c` (a hull(), counter-clockwise): each piece cut along c's
+// edges, the parts outside kept (convex, at most one per edge), the part inside dropped. False when
+// nothing changed, which is most calls: those return before touching the pieces.
+bool subtract(std::vector<Poly>& pieces, std::vector<Box>& boxes, const Poly& c, double tiny,
+              Scratch& s) {
+  const Box cb = boxOf(c);
+  std::size_t first = 0;  // the first piece c cuts
+  while (first < pieces.size() && !(boxes[first].overlaps(cb) && cuts(pieces[first], c, tiny, s)))
+    ++first;
+  if (first == pieces.size()) return false;
+  std::vector<Poly>& out = s.out;
+  std::vector<Box>& outBoxes = s.outBoxes;
+  out.clear();
+  outBoxes.clear();
+  for (std::size_t i = 0; i < first; ++i) out.push_back(std::move(pieces[i]));
+  outBoxes.assign(boxes.begin(), boxes.begin() + std::ptrdiff_t(first));
+  for (std::size_t i = first; i < pieces.size(); ++i) {
     // Untouched unless the piece and c overlap in more than rounding.
-    Poly inside = pieces[i];
-    for (std::size_t e = 0; e < c.size() && !inside.empty(); ++e)
-      inside = clipped(inside, leftOf(c, e));
-    if (inside.empty() || std::abs(signedArea(inside)) <= tiny) {
+    if (i > first && !(boxes[i].overlaps(cb) && cuts(pieces[i], c, tiny, s))) {
       out.push_back(std::move(pieces[i]));
       outBoxes.push_back(boxes[i]);
       continue;
     }
-    changed = true;
     Poly rest = std::move(pieces[i]);
     // First the parts outside c's bounding box, whole (axis-aligned cuts): cutting the piece
     // along c's edge lines alone leaves fans of slivers across the whole receiver, which every
@@ -224,9 +254,10 @@ bool subtract(std::vector<Poly>& pieces, std::vector<Box>& boxes, const Poly& c,
       rest = clipped(rest, left);
     }
   }
-  pieces = std::move(out);
-  boxes = std::move(outBoxes);
-  return changed;
+  // The pieces' old storage goes back to the scratch for the next call.
+  std::swap(pieces, out);
+  std::swap(boxes, outBoxes);
+  return true;
 }
 
 }  // namespace
@@ -383,6 +414,7 @@ LitPolygons::LitPolygons(const WorldGeometry& world, const std::vector<bool>& ca
       // What counts as rounding: relative to the smaller of receiver and occluder (below), so
       // that a small occluder on a large receiver still counts.
       const double receiverTiny = 1e-12 * r.area;
+      thread_local Scratch scratch;
       thread_local std::vector<std::uint32_t> seen;
       thread_local std::uint32_t stamp = 0;
       if (seen.size() < polys.size()) seen.assign(polys.size(), 0);
@@ -402,10 +434,12 @@ LitPolygons::LitPolygons(const WorldGeometry& world, const std::vector<bool>& ca
           const Projected& o = polys[j];
           if (!o.box.overlaps(r.box)) continue;
           ++clips[k];
-          const Poly front = hull(clipped(o.corners, inFront(view, o, r)));
+          clip(o.corners, inFront(view, o, r), scratch.front);
+          hullOf(scratch.front, scratch.frontHull);
+          const Poly& front = scratch.frontHull;
           const double tiny = std::min(receiverTiny, 1e-12 * o.area);
           if (front.empty() || std::abs(signedArea(front)) <= tiny) continue;
-          if (subtract(pieces, boxes, front, tiny)) touched[k] = 1;
+          if (subtract(pieces, boxes, front, tiny, scratch)) touched[k] = 1;
           if (pieces.empty()) break;
         }
       result[k] = std::move(pieces);
