@@ -14,6 +14,7 @@
 #include "engine/rt/occlusion_stream.h"
 #include "engine/rt/ray_offset.h"
 #include "engine/scene/analytic_hit.h"
+#include "engine/shading/shading.h"
 
 namespace diptych {
 
@@ -182,11 +183,19 @@ std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lig
 
 void traceShadowTile(const RtScene& rt, std::span<const Light> lights,
                      std::span<const ShadowReceiver> receivers, int areaSamples,
-                     std::span<const std::uint32_t> seeds, std::span<float> visibility) {
+                     std::span<const std::uint32_t> seeds, std::span<float> visibility,
+                     std::span<const std::uint8_t> lit) {
   const std::size_t n = receivers.size(), lightCount = lights.size();
   if (visibility.size() < n * lightCount)
     throw Error("traceShadowTile: visibility holds " + std::to_string(visibility.size()) +
                 " values, not " + std::to_string(n * lightCount));
+  if (!lit.empty() && lit.size() < n * lightCount)
+    throw Error("traceShadowTile: lit holds " + std::to_string(lit.size()) + " flags, not " +
+                std::to_string(n * lightCount));
+  // Visible, and no rays: a light that casts no shadows, or one that sends this receiver nothing.
+  const auto unshadowed = [&](std::size_t slot, const Light& light) {
+    return !light.castsShadows || (!lit.empty() && !lit[slot]);
+  };
   // Counts first (exact in float far beyond any ray count here), fractions at the end: the
   // same float(visible) / float(count) as traceShadowRays.
   std::fill_n(visibility.begin(), n * lightCount, 0.f);
@@ -198,7 +207,7 @@ void traceShadowTile(const RtScene& rt, std::span<const Light> lights,
     for (std::size_t l = 0; l < lightCount; ++l) {
       const Light& light = lights[l];
       const std::size_t slot = p * lightCount + l;
-      if (!light.castsShadows) {  // every ray inactive: visible
+      if (unshadowed(slot, light)) {
         visibility[slot] = 1.f;
         continue;
       }
@@ -210,8 +219,12 @@ void traceShadowTile(const RtScene& rt, std::span<const Light> lights,
   stream.flush();
   for (std::size_t p = 0; p < n; ++p)
     for (std::size_t l = 0; l < lightCount; ++l)
-      if (lights[l].castsShadows)
+      if (!unshadowed(p * lightCount + l, lights[l]))
         visibility[p * lightCount + l] /= float(shadowRaysPerReceiver(lights[l], areaSamples));
+}
+
+bool lightReaches(const shading::ShadingLight& light, const vec3& position) {
+  return shading::sampleLight(light, position).radiance != vec3(0.f);
 }
 
 }  // namespace diptych

@@ -10,6 +10,9 @@
 #include "engine/scene/scene.h"
 
 namespace diptych {
+namespace shading {
+struct ShadingLight;  // engine/shading/shading.h
+}
 
 // A receiver: a point on the world geometry and its unit geometric (face) normal, either side.
 // magnitude: per-axis max |vertex coordinate| of its triangle (SurfacePoint::positionMagnitude);
@@ -80,8 +83,18 @@ std::vector<float> traceShadowRays(const RtScene& rt, std::span<const Light> lig
 // 256, as WhittedTracer::radianceTile traces a tile's shadow rays: no per-frame ray, receiver or
 // result arrays. The same rays and fractions as traceShadowRays for the same seeds (seeds[p],
 // the receiver index when empty).
+// lit, when given (receiver-major as visibility), names the pairs worth a ray: where lit is 0
+// the light sends the receiver nothing (lightReaches), no ray is traced and the visibility is 1.
 void traceShadowTile(const RtScene& rt, std::span<const Light> lights,
                      std::span<const ShadowReceiver> receivers, int areaSamples,
-                     std::span<const std::uint32_t> seeds, std::span<float> visibility);
+                     std::span<const std::uint32_t> seeds, std::span<float> visibility,
+                     std::span<const std::uint8_t> lit = {});
+
+// Whether `light` sends any radiance to `position` (shading::sampleLight's radiance is not
+// zero): not behind a one-sided area light, not outside a spot's cone. The Whitted reference
+// traces no shadow ray where it does not (WhittedTracer::lightTerm, after pbrt-v4's
+// PathIntegrator::SampleLd, which skips the ray when the light sample carries nothing), and
+// neither does rt_shadows: the visibility it would measure multiplies zero in every shading.
+bool lightReaches(const shading::ShadingLight& light, const vec3& position);
 
 }  // namespace diptych

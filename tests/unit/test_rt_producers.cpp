@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <list>
+#include <memory>
 
 #include "engine/gl/context.h"
 #include "engine/graph/executor.h"
@@ -73,28 +75,51 @@ TEST(RtTransmission, BeyondTheCriticalAngleTheRayIsReflectedInsideWithoutNaN) {
   EXPECT_NEAR(tree[1].ray.direction.x, d.x, 1e-6f);
 }
 
-TEST(RtShadows, QuadAreaLightCastsUmbraPenumbraAndLitRegions) {
-  const Scene scene = loadScene(writeScene("area.json", R"({
+// A plane and a sphere under a 2 x 2 quad light at y = 10: `edgeV` (0, 0, 2) faces it down,
+// (0, 0, -2) up (cross(edge_u, edge_v)). The hybrid's shadows node, run once.
+struct QuadLitFrame {
+  std::unique_ptr<gl::GlContext> context;
+  std::unique_ptr<RenderWorld> world;
+  std::unique_ptr<GraphExecutor> executor;
+  CompiledGraph graph;
+  double shadowRays = -1.0, receivers = -1.0;
+};
+std::unique_ptr<QuadLitFrame> renderQuadLit(const std::string& name, const std::string& edgeV,
+                                            int w, int h) {
+  static std::list<Scene> scenes;  // a world refers to its scene: kept, unmoved, for the process
+  scenes.push_back(loadScene(writeScene(name, R"({
     "camera": {"position": [0, 9, 9], "target": [0, 0, 0], "fov": 50},
     "materials": {"white": {"color": [0.8, 0.8, 0.8]}},
-    "lights": [{"type": "quad", "position": [0, 10, 0], "edge_u": [2, 0, 0], "edge_v": [0, 0, -2],
-                "intensity": 50}],
+    "lights": [{"type": "quad", "position": [0, 10, 0], "edge_u": [2, 0, 0], "edge_v": )" +
+                                                  edgeV + R"(, "intensity": 50}],
     "objects": [{"type": "plane", "size": [30, 30], "material": "white"},
                 {"type": "sphere", "radius": 1, "segments": 64, "material": "white",
                  "transform": {"translate": [0, 2, 0]}}]
-  })"));
-  ASSERT_EQ(scene.lights.size(), 1u);
-  ASSERT_EQ(scene.lights[0].type, LightType::QuadArea);
-  const int w = 128, h = 128;
+  })")));
+  const Scene& scene = scenes.back();
+  auto f = std::make_unique<QuadLitFrame>();
   FrameSettings frame{w, h, scene.camera};
-  const CompiledGraph g = compileGraph(defaultHybridRecipe(), builtinPasses(), scene, frame,
-                                       {"shadows.visibility", "gbuffer.hits"});
-  auto context = gl::createContext(gl::ContextKind::Osmesa, w, h);
-  RenderWorld world(scene, context.get());
-  GraphExecutor ex(g, world);
-  ex.runFrame();
-  const CpuImage& vis = ex.output("shadows.visibility");
-  const CpuImage& gbuffer = ex.output("gbuffer.hits");
+  f->graph = compileGraph(defaultHybridRecipe(), builtinPasses(), scene, frame,
+                          {"shadows.visibility", "gbuffer.hits"});
+  f->context = gl::createContext(gl::ContextKind::Osmesa, w, h);
+  f->world = std::make_unique<RenderWorld>(scene, f->context.get());
+  f->executor = std::make_unique<GraphExecutor>(f->graph, *f->world);
+  f->executor->runFrame();
+  for (std::size_t i = 0; i < f->graph.nodes.size(); ++i) {
+    const GraphNode& node = f->graph.nodes[i];
+    if (node.kind != NodeKind::Pass || f->graph.passes[node.pass].type != "rt_shadows") continue;
+    f->shadowRays = f->executor->timings()[i].counters.at("rays");
+    f->receivers = f->executor->timings()[i].counters.at("receivers");
+  }
+  return f;
+}
+
+TEST(RtShadows, QuadAreaLightCastsUmbraPenumbraAndLitRegions) {
+  const int w = 128, h = 128;
+  const auto f = renderQuadLit("area.json", "[0, 0, 2]", w, h);
+  ASSERT_EQ(f->world->scene().lights[0].type, LightType::QuadArea);
+  const CpuImage& vis = f->executor->output("shadows.visibility");
+  const CpuImage& gbuffer = f->executor->output("gbuffer.hits");
   int umbra = 0, penumbra = 0, lit = 0, plane = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
@@ -107,10 +132,40 @@ TEST(RtShadows, QuadAreaLightCastsUmbraPenumbraAndLitRegions) {
       penumbra += v > 0.f && v < 1.f;
     }
   // Under the sphere the whole light is hidden (umbra), far away all of it is seen, and a ring
-  // in between sees part of it: the penumbra only an area light produces.
+  // in between sees part of it: the penumbra only an area light produces. The light faces down
+  // (cross(edge_u, edge_v) = -y): facing up it would send the plane nothing, and rt_shadows
+  // traces no ray where a light sends nothing (next test).
   EXPECT_GT(umbra, 20);
   EXPECT_GT(penumbra, 50) << "an area light must give fractional visibility in a penumbra";
   EXPECT_GT(lit, plane / 2);
+}
+
+// As the Whitted reference (WhittedTracer::lightTerm), rt_shadows traces no ray toward a light
+// that sends a point nothing (lightReaches): the same quad facing up lights nothing below it, so
+// every pixel reads 1 and costs no ray. Facing down, every covered pixel gets its 16 stratified
+// rays.
+TEST(RtShadows, NoRaysTowardALightThatSendsThePointNothing) {
+  const int w = 96, h = 96;
+  const auto down = renderQuadLit("area-down.json", "[0, 0, 2]", w, h);
+  const auto up = renderQuadLit("area-up.json", "[0, 0, -2]", w, h);
+  ASSERT_GT(down->receivers, 1000.0);
+  EXPECT_EQ(down->shadowRays, down->receivers * 16.0) << "every covered pixel is lit from below";
+  EXPECT_EQ(up->receivers, down->receivers);
+  const CpuImage& vis = up->executor->output("shadows.visibility");
+  const CpuImage& gbuffer = up->executor->output("gbuffer.hits");
+  int plane = 0, sphere = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::uint32_t id = gbuffer.u(x, y, 0);
+      if (id == 1u) {
+        ++plane;
+        EXPECT_EQ(vis.f(x, y, 0), 1.f) << "plane pixel " << x << "," << y << " is not lit";
+      }
+      sphere += id == 2u;
+    }
+  ASSERT_GT(plane, 1000);
+  ASSERT_GT(sphere, 100);
+  EXPECT_EQ(up->shadowRays, 0.0) << "the light sends nothing to anything below it";
 }
 
 TEST(SceneDrivenCulling, SamplesCullExactlyTheSlotsTheyDoNotNeed) {

@@ -122,10 +122,11 @@ TEST(ShadowMap, DirectionalSpotAndPointLightsAgreeWithShadowRays) {
 }
 
 TEST(ShadowMap, AreaLightUsesItsCentreAndPcssItsSize) {
+  // Facing down (cross(edge_u, edge_v) = -y), towards the plane it shadows.
   const Scene quad = smallScene("quad", {{"type", "quad"},
                                          {"position", {1, 6, 0}},
                                          {"edge_u", {1, 0, 0}},
-                                         {"edge_v", {0, 0, -1}},
+                                         {"edge_v", {0, 0, 1}},
                                          {"intensity", 10}});
   expectAgreement(quad, {{"bias", "slope"}}, 0.03);
   const auto soft = compareShadows(quad, {{"bias", "slope"}, {"filter", "pcss"}}, kPlane);
