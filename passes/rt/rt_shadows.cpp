@@ -39,6 +39,21 @@ void RtShadowsPass::execute(PassContext& c) {
   const std::size_t lightCount = lights.size();
   std::vector<shading::ShadingLight> shadingLights;
   for (const Light& light : lights) shadingLights.push_back(shading::toShadingLight(light));
+  // The lights that leave whole regions dark (one-sided area lights, spot cones, ranges). A
+  // point, directional or sphere light reaches everything but its own centre: testing it per
+  // receiver (lightReaches: a square root and a division) would cost for nothing.
+  std::vector<char> mayNotReach;
+  std::vector<std::size_t> raysPer;  // a receiver's rays toward each light
+  std::size_t raysPerReceiver = 0;
+  for (const Light& light : lights) {
+    mayNotReach.push_back(light.type == LightType::Spot || light.type == LightType::QuadArea ||
+                          light.type == LightType::DiscArea || light.range > 0.f);
+    raysPer.push_back(light.castsShadows ? std::size_t(shadowRaysPerReceiver(light, areaSamples_))
+                                         : 0);
+    raysPerReceiver += raysPer.back();
+  }
+  const bool testReach =
+      std::any_of(mayNotReach.begin(), mayNotReach.end(), [](char m) { return m; });
   std::atomic<std::size_t> covered{0}, traced{0};
   // One pass over the frame, row by row: each covered pixel's receiver built in place, its
   // shadow rays traced in coherent streams with its row's (traceShadowTile, as the Whitted
@@ -57,7 +72,7 @@ void RtShadowsPass::execute(PassContext& c) {
     column.resize(std::size_t(w));
     visibility.resize(std::size_t(w) * lightCount);
     lit.resize(std::size_t(w) * lightCount);
-    std::size_t n = 0, rays = 0;
+    std::size_t n = 0, unlitRays = 0;
     const SurfaceHit* hit = exact.row(y);
     for (int x = 0; x < w; ++x) {
       if (hit[x].instance < 0) continue;
@@ -65,17 +80,18 @@ void RtShadowsPass::execute(PassContext& c) {
       // As the reference: no ray toward a light that sends this point nothing (the ceiling of
       // a Cornell box behind its one-sided light: 16 rays a pixel for a visibility that
       // multiplies zero). The signal says 1 there, what a raster lookup outside its map says.
-      for (std::size_t l = 0; l < lightCount; ++l) {
-        const bool reaches = lightReaches(shadingLights[l], receivers[n].position);
+      for (std::size_t l = 0; testReach && l < lightCount; ++l) {
+        const bool reaches =
+            !mayNotReach[l] || lightReaches(shadingLights[l], receivers[n].position);
         lit[n * lightCount + l] = reaches;
-        rays +=
-            reaches && lights[l].castsShadows ? shadowRaysPerReceiver(lights[l], areaSamples_) : 0;
+        unlitRays += reaches ? 0 : raysPer[l];
       }
       seeds[n] = std::uint32_t(y * w + x);
       column[n++] = x;
     }
     traceShadowTile(rt, lights, {receivers.data(), n}, areaSamples_, {seeds.data(), n}, visibility,
-                    {lit.data(), n * lightCount});
+                    testReach ? std::span<const std::uint8_t>(lit.data(), n * lightCount)
+                              : std::span<const std::uint8_t>());
     for (std::size_t l = 0; l < lightCount; ++l) {
       // Layer l is R32F: pixel x's texel is word x of the row; uncovered pixels are visible.
       std::uint32_t* row = out.row(y, int(l));
@@ -86,7 +102,7 @@ void RtShadowsPass::execute(PassContext& c) {
     for (int l = int(lightCount); l < out.desc.layers; ++l)  // layers beyond the lights: visible
       std::fill_n(out.row(y, l), w, std::bit_cast<std::uint32_t>(1.f));
     covered.fetch_add(n, std::memory_order_relaxed);
-    traced.fetch_add(rays, std::memory_order_relaxed);
+    traced.fetch_add(n * raysPerReceiver - unlitRays, std::memory_order_relaxed);
   });
   c.count("rays", double(traced.load()));
   c.count("receivers", double(covered.load()));
