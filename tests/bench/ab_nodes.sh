@@ -3,15 +3,19 @@
 # from main, one from a branch) render the same scene and recipe alternately, RUNS times each,
 # and the medians of every node's process_cpu_ms (CPU time of all threads over the node,
 # median over the timed frames; --timings) and wall median are printed side by side with their ratio.
-# Interleaving puts a change of machine load on both sides; on a loaded machine trust the CPU
+# Interleaving, in alternating order, puts a change of machine load on both sides; on a loaded machine trust the CPU
 # columns. The images of each pair are compared byte for byte (tests/tools/compare_exr.py).
 # Usage (from the repository root):
 #   tests/bench/ab_nodes.sh OLD_DIPTYCH NEW_DIPTYCH SCENE RECIPE [RUNS] [WxH] [OUT_DIR]
 set -euo pipefail
 old=$1 new=$2 scene=$3 recipe=$4 runs=${5:-3} size=${6:-640x480} out=${7:-$(mktemp -d)}
 mkdir -p "$out/old" "$out/new"
+# The order alternates per round: run first in every round, one binary gained 7% over an
+# identical copy of itself on session 29's machine (the drift of a shared VM within a round).
 for r in $(seq "$runs"); do
-  for side in old new; do
+  order="old new"
+  [ $((r % 2)) -eq 0 ] && order="new old"
+  for side in $order; do
     bin=$old
     [ "$side" = new ] && bin=$new
     "$bin" render "$scene" --recipe "$recipe" --size "$size" --frames 3 --warmup 1 \
