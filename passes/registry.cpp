@@ -46,7 +46,8 @@ const PassRegistry& builtinPasses() {
     // Producers by slot; within a slot, `diptych compare` runs them in this order.
     r.add<RtShadowsPass>({.name = "rt_shadows",
                           .slot = "visibility",
-                          .summary = "exact light visibility by Embree shadow rays (CPU)"});
+                          .summary = "exact light visibility by Embree shadow rays (CPU); 1, with "
+                                     "no ray, where the light sends the point nothing"});
     r.add<ShadowMapPass>(
         {.name = "shadow_map",
          .slot = "visibility",
