@@ -46,7 +46,10 @@ class JsonObject {
  private:
   const json& value_;
   std::string path_;
-  const std::string& file_;
+  // A copy: callers pass temporaries (readCameraFile's path.string()), and a reference to one
+  // named another string in its error messages once the temporary's stack slot was reused
+  // ("camera: camera: missing" instead of "nocam.json: camera: missing", ASan build, session 29).
+  std::string file_;
   std::set<std::string> used_;
 };
 
