@@ -227,4 +227,9 @@ bool lightReaches(const shading::ShadingLight& light, const vec3& position) {
   return shading::sampleLight(light, position).radiance != vec3(0.f);
 }
 
+bool lightMayNotReach(const Light& light) {
+  return light.type == LightType::Spot || light.type == LightType::QuadArea ||
+         light.type == LightType::DiscArea || light.range > 0.f;
+}
+
 }  // namespace diptych

@@ -96,5 +96,9 @@ void traceShadowTile(const RtScene& rt, std::span<const Light> lights,
 // PathIntegrator::SampleLd, which skips the ray when the light sample carries nothing), and
 // neither does rt_shadows: the visibility it would measure multiplies zero in every shading.
 bool lightReaches(const shading::ShadingLight& light, const vec3& position);
+// Whether lightReaches can be false somewhere away from the light's own centre: spot, quad and
+// disc lights and any light with a range. Point, directional and sphere lights reach every point
+// (a per-receiver test, a square root and a division, would cost for nothing).
+bool lightMayNotReach(const Light& light);
 
 }  // namespace diptych

@@ -39,15 +39,11 @@ void RtShadowsPass::execute(PassContext& c) {
   const std::size_t lightCount = lights.size();
   std::vector<shading::ShadingLight> shadingLights;
   for (const Light& light : lights) shadingLights.push_back(shading::toShadingLight(light));
-  // The lights that leave whole regions dark (one-sided area lights, spot cones, ranges). A
-  // point, directional or sphere light reaches everything but its own centre: testing it per
-  // receiver (lightReaches: a square root and a division) would cost for nothing.
-  std::vector<char> mayNotReach;
+  std::vector<char> mayNotReach;     // lightMayNotReach: only those are tested per receiver
   std::vector<std::size_t> raysPer;  // a receiver's rays toward each light
   std::size_t raysPerReceiver = 0;
   for (const Light& light : lights) {
-    mayNotReach.push_back(light.type == LightType::Spot || light.type == LightType::QuadArea ||
-                          light.type == LightType::DiscArea || light.range > 0.f);
+    mayNotReach.push_back(lightMayNotReach(light));
     raysPer.push_back(light.castsShadows ? std::size_t(shadowRaysPerReceiver(light, areaSamples_))
                                          : 0);
     raysPerReceiver += raysPer.back();
