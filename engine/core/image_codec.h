@@ -5,10 +5,8 @@
 // unit-test process. So it lives in a module of its own (image_codec_oiio.cpp, built as
 // diptych_image_codec.so), loaded with dlopen the first time an image is read or written;
 // processes that touch no image file never load it.
-// Two builds link the module's source in statically instead (DIPTYCH_IMAGE_CODEC_STATIC): the
-// fuzz harnesses (tests/fuzz), which instrument OpenImageIO's callers in-process, and the
-// sanitizer build, whose LeakSanitizer (GCC 12) crashed at exit in processes that had dlopen'ed
-// OpenImageIO (engine/CMakeLists.txt).
+// The fuzz harnesses (tests/fuzz) link the module's source in statically instead
+// (DIPTYCH_IMAGE_CODEC_STATIC): they instrument OpenImageIO's callers in-process.
 #include <cstddef>
 #include <string>
 

@@ -15,7 +15,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 std::uint32_t bits(float v) {
   return std::bit_cast<std::uint32_t>(v);
@@ -68,5 +68,5 @@ TEST(SrgbTable, ReadImageOf8BitIsOpenImageIOsConversionBitForBit) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

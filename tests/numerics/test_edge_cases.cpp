@@ -29,7 +29,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
@@ -202,5 +202,5 @@ TEST(EdgeCases, CoplanarOverlappingSurfacesActAsOneForSecondaryRays) {
   EXPECT_EQ(transmittedBlocked, 0);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

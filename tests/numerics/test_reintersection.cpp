@@ -20,7 +20,7 @@
 #include "tests/support/rt_test_geometry.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 struct Trial {
   long rays = 0, selfHits = 0, belowPlane = 0, triangles = 0;
@@ -122,5 +122,5 @@ TEST(Reintersection, TheTrialFailsWithoutOffsetAndShowsTheMargin) {
   EXPECT_GT(tooSmall, 0) << "a cross term of 0.25 eps alone is expected to be too small";
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -18,7 +18,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kWidth = 160, kHeight = 120;
 
@@ -129,7 +129,6 @@ TEST(Rebase, MovesTheCameraToTheOriginAndKeepsRelativePositions) {
   EXPECT_EQ(rebaseIfFar(near), glm::dvec3(0.0));
 }
 
-}  // namespace
 TEST(Rebase, TriggersOnTheGeometryNotTheCamera) {
   // A small scene at the origin seen from far away stays where it is: moving it to the camera
   // would put the geometry, not the camera, at the large coordinate.
@@ -159,4 +158,5 @@ TEST(Rebase, CommandLineLightIsMovedWithTheWorld) {
   EXPECT_EQ(s.lights.back().position, vec3(glm::dvec3(100002, 3, 4) - origin));
 }
 
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

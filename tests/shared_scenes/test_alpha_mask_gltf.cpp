@@ -16,7 +16,7 @@
 #include "tests/unit/shadow_map_compare.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 TEST(AlphaMaskGltf, AlphaBlendModeTestRendersThroughBothProducers) {
   const std::filesystem::path file =
@@ -60,5 +60,5 @@ TEST(AlphaMaskGltf, AlphaBlendModeTestRendersThroughBothProducers) {
   EXPECT_LT(c.misclassified(), 0.05);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

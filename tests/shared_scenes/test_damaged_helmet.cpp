@@ -13,7 +13,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 const std::filesystem::path kHelmet =
     std::filesystem::path(DIPTYCH_SHARED_SCENES) / "damaged-helmet" / "DamagedHelmet.glb";
@@ -73,5 +73,5 @@ TEST(DamagedHelmet, DefaultLightingLightsItAndTheNormalMapIsUsed) {
   EXPECT_GT(perturbed, hits / 100);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

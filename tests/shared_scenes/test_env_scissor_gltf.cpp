@@ -12,7 +12,7 @@
 #include "tests/unit/env_scissor_check.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 TEST(EnvScissorGltf, RoughMaterialsWithPrefilterAreInsideTheScissor) {
   Scene scene = loadScene(DIPTYCH_SHARED_SCENES +
@@ -39,5 +39,5 @@ TEST(EnvScissorGltf, RoughMaterialsWithPrefilterAreInsideTheScissor) {
   EXPECT_LT(mirrorOnly, int(flattenScene(scene).meshes.size()));
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

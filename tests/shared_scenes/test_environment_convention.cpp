@@ -9,10 +9,10 @@
 #include "engine/scene/environment.h"
 #include "tests/support/test_paths.h"
 
-using namespace diptych;
 namespace fs = std::filesystem;
 
-namespace {
+namespace DIPTYCH_UNITY_ID {
+using namespace diptych;
 
 // Fibonacci-sphere directions: a near-uniform set without clustering at the poles.
 std::vector<vec3> sphereDirections(int n) {
@@ -28,8 +28,6 @@ std::vector<vec3> sphereDirections(int n) {
 float luminance(const vec3& c) {
   return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
-
-}  // namespace
 
 TEST(EnvironmentConvention, EquirectAndCubeOfRooitouParkAgree) {
   const fs::path shared = DIPTYCH_SHARED_SCENES;
@@ -70,3 +68,4 @@ TEST(EnvironmentConvention, EquirectAndCubeOfRooitouParkAgree) {
   EXPECT_LT(median, 0.05f);
   EXPECT_LT(sunAngle, 2.f);
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -21,7 +21,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 const fs::path kShared = DIPTYCH_SHARED_SCENES;
@@ -192,5 +192,5 @@ INSTANTIATE_TEST_SUITE_P(Models, HybridSharedModel,
                            return name;
                          });
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -16,7 +16,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 160, kH = 120;
 
@@ -97,5 +97,5 @@ TEST(IridescenceGltf, SuzannesChangeHueOnTheCpuAndTheGlShade) {
   EXPECT_LE(filmedRmse, 1e-4);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

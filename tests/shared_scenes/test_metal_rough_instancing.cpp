@@ -8,6 +8,7 @@
 #include "engine/scene/load.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 
 TEST(MetalRoughInstancing, OnePrototypeForEveryRepeatedSphereAndTheSameHitsAsFlattened) {
@@ -45,3 +46,5 @@ TEST(MetalRoughInstancing, OnePrototypeForEveryRepeatedSphereAndTheSameHitsAsFla
   EXPECT_LE(disagree, 3);              // silhouette rays a rounding may tip either way
   EXPECT_GE(same, hits - hits / 200);  // the rest: rays through a shared edge
 }
+
+}  // namespace DIPTYCH_UNITY_ID

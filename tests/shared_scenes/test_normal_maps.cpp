@@ -26,7 +26,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 struct Layout {
   const char* file;
@@ -156,5 +156,5 @@ INSTANTIATE_TEST_SUITE_P(
                              {{-0.95f, -0.63f, -0.29f}, {0.62f, 0.94f, 1.26f}}}),
     [](const auto& info) { return info.index == 0 ? "Generated" : "SuppliedMirrored"; });
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

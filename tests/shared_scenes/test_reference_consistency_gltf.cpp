@@ -17,7 +17,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 128, kH = 96;
 
@@ -74,5 +74,5 @@ INSTANTIATE_TEST_SUITE_P(Models, GltfReferenceConsistency,
                            return std::filesystem::path(info.param).stem().string();
                          });
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

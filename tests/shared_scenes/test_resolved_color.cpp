@@ -18,7 +18,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 96, kH = 72;
 
@@ -91,5 +91,5 @@ TEST(ResolvedColorAt, EqualsMakeSurfacePointOnCheckersAnalyticShapesAndSdfs) {
   EXPECT_GT(analytic, 0);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

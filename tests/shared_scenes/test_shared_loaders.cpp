@@ -11,10 +11,10 @@
 #include "engine/scene/load.h"
 #include "tests/support/test_paths.h"
 
-using namespace diptych;
 namespace fs = std::filesystem;
 
-namespace {
+namespace DIPTYCH_UNITY_ID {
+using namespace diptych;
 
 const fs::path kShared = DIPTYCH_SHARED_SCENES;
 
@@ -63,8 +63,6 @@ bool anyContains(const std::vector<std::string>& lines, const std::string& part)
     if (line.find(part) != std::string::npos) return true;
   return false;
 }
-
-}  // namespace
 
 TEST(SharedScenes, EveryGltfLoadsOrFailsWithTheExpectedNamedError) {
   const auto files = sharedGltfFiles();
@@ -160,3 +158,4 @@ TEST(SharedScenes, MetalRoughSpheresLoadsAMillionTriangles) {
   for (const Instance& inst : scene.instances) triangles += scene.meshes[inst.mesh].triangleCount();
   EXPECT_GT(triangles, 1000000u);
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -13,7 +13,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 240, kH = 180;
 
@@ -53,5 +53,5 @@ TEST(SingleSidedGltf, TextureSettingsTestSingleSidedCellShowsTheCheck) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

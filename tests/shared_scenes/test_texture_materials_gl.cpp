@@ -26,7 +26,7 @@
 #include "tests/unit/gl_test_context.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 96, kH = 72, kStride = 32, kValues = 31;
 
@@ -148,5 +148,5 @@ TEST(TextureMaterialsGl, TextureSettingsDamagedHelmetAndNormalMapsMatchTheCpu) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

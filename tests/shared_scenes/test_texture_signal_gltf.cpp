@@ -19,7 +19,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 96, kH = 72;
 
@@ -259,5 +259,5 @@ TEST(TextureSignalGltf, LectureShadingShowsAMetalsCheckerOnBothSides) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -17,7 +17,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 Scene alphaScene() {
   Scene scene = loadScene(std::filesystem::path(DIPTYCH_SHARED_SCENES) /
@@ -104,5 +104,5 @@ TEST(VisibilityAlpha, AlphaTestedMeshesKeepTheirBarycentrics) {
   EXPECT_LT(e, 1e-3);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -26,7 +26,7 @@
 #include "tests/support/rt_test_geometry.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kCells = 8;
 constexpr float kEdge = 0.01f;
@@ -208,5 +208,5 @@ TEST(AlphaMask, ConstantCoverageBelowCutoffIsCutOutEverywhere) {
   });
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

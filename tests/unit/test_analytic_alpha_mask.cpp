@@ -12,7 +12,7 @@
 #include "engine/scene/primitives.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kStripes = 8;
 
@@ -101,5 +101,5 @@ TEST(AnalyticAlphaMask, ClearStripesLetRaysThroughToTheFarSideOrPast) {
   EXPECT_GT(through, 50);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

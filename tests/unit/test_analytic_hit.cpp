@@ -22,9 +22,8 @@
 #include "engine/shading/texture_sampling.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 constexpr double kPi = 3.141592653589793;
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -39,8 +38,6 @@ dvec3 randomUnit(std::mt19937& rng) {
   const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
   return {s * std::cos(phi), s * std::sin(phi), z};
 }
-
-}  // namespace
 
 TEST(AnalyticHit, OctahedralEncodingRoundTripsEveryDirection) {
   std::mt19937 rng(14);
@@ -255,3 +252,4 @@ TEST(AnalyticHit, MaterialReadsUvForEachUvReadingFieldAlone) {
     }
   }
 }
+}  // namespace DIPTYCH_UNITY_ID

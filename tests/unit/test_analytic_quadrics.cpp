@@ -17,9 +17,8 @@
 #include "engine/scene/primitives.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -30,8 +29,6 @@ std::optional<ShapeHit> hitOf(const AnalyticShape& s, dvec3 o, dvec3 d) {
 AnalyticShape shape(ShapeType type, float radius, float height = 1.f, bool capped = true) {
   return AnalyticShape{type, radius, height, capped};
 }
-
-}  // namespace
 
 TEST(AnalyticQuadrics, SphereKnownTInsideTangentAndMiss) {
   const AnalyticShape s = shape(ShapeType::Sphere, 2.f);
@@ -299,3 +296,4 @@ TEST(AnalyticQuadrics, DegenerateShapesAreRejectedAtLoadByName) {
   EXPECT_NE(notQuadric.find("objects[0].geometry"), std::string::npos) << notQuadric;
   EXPECT_EQ(error(R"({"type": "cylinder", "capped": false, "geometry": "analytic"})"), "");
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -18,9 +18,8 @@
 #include "engine/rt/surface_point.h"
 #include "engine/scene/primitives.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 struct Counts {
   int trials = 0, misses = 0, selfHits = 0, nonFinite = 0;
@@ -132,8 +131,6 @@ void check(const char* name, const AnalyticShape& shape, std::uint32_t seed) {
   EXPECT_GT(c.trials - c.misses, c.trials / 2) << name;
 }
 
-}  // namespace
-
 TEST(AnalyticReintersection, SphereNeverReHitsItself) {
   check("sphere", {ShapeType::Sphere, 1.f}, 1);
 }
@@ -149,3 +146,4 @@ TEST(AnalyticReintersection, OpenCylinderNeverReHitsItself) {
 TEST(AnalyticReintersection, ConeNeverReHitsItself) {
   check("cone", {ShapeType::Cone, 1.f, 1.5f, true}, 5);
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -36,7 +36,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr double kH = 10.0, kC = 2.0, kR = 1.0;
 
@@ -148,5 +148,5 @@ TEST(AnalyticShadow, SphereOverPlaneShadowDiscHasTheExactRadius) {
   EXPECT_EQ(badShade, 0) << "shade must give shadowed plane pixels 0 and lit ones > 0";
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -22,7 +22,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kWidth = 200, kHeight = 150;
 
@@ -100,5 +100,5 @@ TEST(BlendDepthPrefill, FirstSurfaceStepWritesDepthAndLeavesTheFullscreenState) 
   EXPECT_EQ(mask, GL_TRUE);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -24,7 +24,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kWidth = 160, kHeight = 120;
 
@@ -119,5 +119,5 @@ TEST(BlendFirst, GatedForwardPassesDrawWhatRebuildingOnesDrawOnTransmissivePixel
   EXPECT_GT(behind, 200);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -15,7 +15,7 @@
 #include "tests/unit/bump_sinusoid.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 using namespace testing::bump;
 
@@ -81,5 +81,5 @@ TEST(Bump, TriangleTangentsAreTheUvDerivatives) {
   EXPECT_EQ(none.tu, vec3(0.f));
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -16,7 +16,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -85,5 +85,5 @@ TEST(BumpGl, BumpChangesTheGlFrame) {
   EXPECT_GT(change, 0.05);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

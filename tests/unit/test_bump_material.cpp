@@ -24,7 +24,7 @@
 #include "tests/unit/bump_sinusoid.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 using namespace testing::bump;
 
@@ -108,5 +108,5 @@ TEST(BumpMaterial, BadBumpKeysNameTheirPlace) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

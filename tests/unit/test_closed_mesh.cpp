@@ -20,7 +20,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 // The unit cube, counter-clockwise seen from outside.
 std::vector<vec3> cubeCorners() {
@@ -205,5 +205,5 @@ TEST(GBufferCulling, TheHitsAreTheSameWithAndWithoutCulling) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -16,6 +16,7 @@
 #include "engine/scene/world_geometry.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 
 TEST(Timing, MedianOfOddAndEvenCounts) {
@@ -171,3 +172,5 @@ TEST(WorldGeometry, StoredFaceNormalsAreTheComputedOnesBitForBit) {
     EXPECT_EQ(geometricNormal(byHand, 3), vec3(0.f, 1.f, 0.f));  // degenerate: the fallback
   }
 }
+
+}  // namespace DIPTYCH_UNITY_ID

@@ -17,6 +17,7 @@
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 
 TEST(DistributedTiles, AverageRadianceOverLensSamples) {
@@ -71,3 +72,5 @@ TEST(DistributedTiles, AverageRadianceOverLensSamples) {
   }
   EXPECT_LE(differ, (w * h + 999) / 1000);
 }
+
+}  // namespace DIPTYCH_UNITY_ID

@@ -23,7 +23,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 using namespace shading;
 constexpr double kPi = std::numbers::pi;
@@ -189,5 +189,5 @@ TEST(EnvBrdf, LookupIsWithinItsBoundOfAFreshIntegrationOfPbrDirect) {
   EXPECT_NEAR(pbrEnvironmentBrdf(1.f, 1.f).x + pbrEnvironmentBrdf(1.f, 1.f).y, 0.307f, 2e-3f);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

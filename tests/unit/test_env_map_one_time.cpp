@@ -16,7 +16,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 CompiledGraph envGraph(const Scene& scene, const std::string& type) {
   Recipe recipe;
@@ -66,5 +66,5 @@ TEST(EnvMapOneTime, SphereMapFollowsTheViewAndIsNotAOneTimeCost) {
   EXPECT_FALSE(run.repeatedAFrame);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -26,7 +26,7 @@
 #include "passes/registry.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 constexpr int kSize = 64;
@@ -194,5 +194,5 @@ TEST_F(EnvPrefilter, RoughnessZeroIsUnchanged) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -29,7 +29,7 @@
 #include "passes/registry.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 constexpr int kSize = 192;  // frame side
@@ -290,5 +290,5 @@ TEST_F(EnvFixture, SolidColourIsConstantAndBackgroundIsZero) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

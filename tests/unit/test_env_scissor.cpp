@@ -15,7 +15,7 @@
 #include "tests/unit/env_scissor_check.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 using testing::checkEnvScissor;
 
@@ -108,5 +108,5 @@ TEST(EnvScissor, DynamicCubeRendersNoCubeForAnOffScreenMirror) {
   EXPECT_LE(run.counters.at("cube_face_renders"), 6.0) << "at most the other sphere's cube";
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -20,7 +20,7 @@
 #include "passes/registry.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -99,5 +99,5 @@ TEST(EnvSphereCache, PrefiltersOncePerEnvironmentAndRebuildsOnlyWhenTheCameraTur
       first["cpu_ms"], first["prefilter_ms"], same["cpu_ms"], rotated["cpu_ms"]);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -12,10 +12,10 @@
 #include "engine/scene/load.h"
 #include "tests/support/test_paths.h"
 
-using namespace diptych;
 namespace fs = std::filesystem;
 
-namespace {
+namespace DIPTYCH_UNITY_ID {
+using namespace diptych;
 
 float luminance(const vec3& c) {
   return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
@@ -35,8 +35,6 @@ fs::path writeScene(const std::string& name, const std::string& environment) {
                    << R"(, "objects": [{"type": "plane"}]})";
   return p;
 }
-
-}  // namespace
 
 TEST(Sky, AnalyticModelHasSunGlowHorizonAndGradient) {
   const SkyParams p = testSky();
@@ -100,3 +98,4 @@ TEST(Sky, JsonBlockLoadsAndBadValuesNameTheirPath) {
   EXPECT_NE(error(R"({"sky": {}, "equirect": "x.hdr"})").find("environment.sky"),
             std::string::npos);
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -15,10 +15,9 @@
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 using namespace diptych::testing;
-
-namespace {
 
 constexpr int kW = 160, kH = 120;
 
@@ -32,8 +31,6 @@ bool sameHit(const std::optional<SurfaceHit>& a, const std::optional<SurfaceHit>
   return a->instance == b->instance && a->primitive == b->primitive && a->u == b->u &&
          a->v == b->v && a->analytic == b->analytic;
 }
-
-}  // namespace
 
 TEST(ExactHits, EqualsLiftingEachTexel) {
   auto f = whittedFrame();
@@ -247,3 +244,4 @@ TEST(ExactHits, TwoHitsResourcesInOneFrameEachGetTheirOwnBuffer) {
   EXPECT_TRUE(f->output("shade.color").words == one->output("shade.color").words)
       << "a consumer read the other resource's buffer wrongly";
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -17,9 +17,8 @@
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 Recipe shadowRecipe() {
   Recipe recipe;
@@ -52,8 +51,6 @@ struct TimedRun {
     for (int f = 0; f < frames; ++f) ex->runFrame();
   }
 };
-
-}  // namespace
 
 TEST(ExecutorGlTiming, EveryGlNodeGetsItsQueryResultAfterTheFrame) {
   constexpr int kFrames = 3;
@@ -229,3 +226,4 @@ TEST(ExecutorGlTiming, PerFrameSyncWaitsOnceAtTheFrameEndAndChangesNoSignal) {
   for (const char* signal : {"sm.visibility", "rt.visibility"})
     EXPECT_EQ(perFrame.ex->output(signal).words, perNode.ex->output(signal).words) << signal;
 }
+}  // namespace DIPTYCH_UNITY_ID

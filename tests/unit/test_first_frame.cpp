@@ -17,7 +17,7 @@
 #include "engine/graph/render_world.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr double kRecordedMs = 60, kUnrecordedMs = 200;
 
@@ -113,5 +113,5 @@ TEST(FirstFrame, UnrecordedFirstUseWorkIsToldApartFromRecordedOneTimeWork) {
   for (const NodeTiming& t : again.timings()) EXPECT_EQ(t.oneTimeMs, std::vector<double>{0.0});
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

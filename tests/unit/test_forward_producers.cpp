@@ -21,7 +21,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 Scene sceneFromJson(const std::string& name, const std::string& json) {
   const auto dir = ::diptych::testing::scratchDir("diptych_forward_producers");
@@ -340,5 +340,5 @@ TEST(DynamicCubeFaces, FaceDirectionsFollowTheGlCubeConvention) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

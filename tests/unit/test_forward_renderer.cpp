@@ -17,7 +17,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 // A lit quad over the left part of the view, in front of a constant sky (0.2, 0.4, 0.8).
 Scene quadOverSky() {
@@ -91,5 +91,5 @@ TEST(ForwardRenderer, BackgroundDrawnAfterTheMeshesGivesTheImageOfBackgroundFirs
   EXPECT_EQ(sky + quad, w * h);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -7,9 +7,8 @@
 #include "engine/graph/frame_graph.h"
 #include "engine/graph/render_world.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 // Writes a constant image; parameter "value".
 class ConstantPass : public Pass {
@@ -142,8 +141,6 @@ std::string errorOf(const std::function<void()>& f) {
   }
   return "";
 }
-
-}  // namespace
 
 TEST(FrameGraph, ExecutesInDependencyOrderAndProducesOutput) {
   const Scene scene = sceneWithTriangle(0.f);
@@ -396,3 +393,4 @@ TEST(FrameGraph, ExportsDotAndJsonWithCullReasonsMemoryAndTimings) {
   EXPECT_NE(dot.find("\"one\" -> \"sum\""), std::string::npos);
   EXPECT_NE(dot.find(" ms"), std::string::npos);
 }
+}  // namespace DIPTYCH_UNITY_ID

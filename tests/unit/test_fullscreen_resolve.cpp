@@ -21,7 +21,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -168,5 +168,5 @@ TEST_F(FullscreenResolveTest, ColourModesLeaveTheContractState) {
   for (int i = 0; i < kWidth * kHeight; ++i) EXPECT_EQ(color[4 * i], 0.25f) << i;
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -21,7 +21,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -84,5 +84,5 @@ TEST(GBufferDetailNormal, NormalOutputIsTheBumpOrNormalMappedShadingNormal) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -19,7 +19,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -147,5 +147,5 @@ TEST(GBufferTargets, NormalIsWrittenWhenRequested) {
   EXPECT_GT(hitPixels, 1000);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

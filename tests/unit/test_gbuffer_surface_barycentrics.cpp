@@ -16,7 +16,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 160, kH = 120;
 
@@ -47,5 +47,5 @@ TEST(GBufferSurfaceBarycentrics, ASurfaceRenderComputesTheBarycentrics) {
         << "layer " << layer;
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -19,6 +19,7 @@
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 
 // whitted.json rendered by rt_whitted (640 x 480) with both spheres tessellated at slices x
@@ -73,3 +74,5 @@ TEST(GeometryFigures, DISABLED_WhittedErrorAgainstTessellation) {
                 mean, ms);
   }
 }
+
+}  // namespace DIPTYCH_UNITY_ID

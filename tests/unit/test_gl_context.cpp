@@ -5,7 +5,7 @@
 #include "gl_test_context.h"
 
 namespace diptych::gl {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 TEST(GlContext, OsmesaIsGl45Core) {
   GlContext& context = testing::osmesaContext();
@@ -72,7 +72,7 @@ TEST(GlDebug, ErrorsAreCountedUnderTheActiveLabel) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych::gl
 
 // LeakSanitizer (asan preset) hook: Mesa's OSMesa keeps the buffer object it allocates in

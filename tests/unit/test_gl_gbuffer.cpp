@@ -14,7 +14,7 @@
 #include "gl_test_context.h"
 
 namespace diptych::gl {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 using glm::dvec3;
 
@@ -176,5 +176,5 @@ TEST(GBufferRaster, ReusedRasterizerHandlesResizeAndEmptyScenes) {
   EXPECT_THROW(rasterizer.render(scene, Camera{}, wrong), Error);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych::gl

@@ -16,7 +16,7 @@
 #include "engine/gl/transfer.h"
 
 namespace diptych::gl {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 bool haveDisplay() {
   const char* display = std::getenv("DISPLAY");
@@ -108,5 +108,5 @@ TEST(GlfwContextNoDisplay, FailsWithAClearError) {
   if (previous) ::setenv("DISPLAY", saved.c_str(), 1);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych::gl

@@ -13,7 +13,7 @@
 #include "gl_test_context.h"
 
 namespace diptych::gl {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 class GlObjects : public ::testing::Test {
  protected:
@@ -200,5 +200,5 @@ TEST_F(GlObjects, TimerQueryReportsMilliseconds) {
   EXPECT_EQ(*q.tryMilliseconds(), ms);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych::gl

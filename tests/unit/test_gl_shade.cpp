@@ -25,7 +25,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -327,5 +327,5 @@ TEST(GlShadePlacement, UnknownDomainIsAnErrorNamingThePlace) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -20,7 +20,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -88,5 +88,5 @@ TEST(GlShadeSplit, EqualsOneProgramAndKeepsTheDepthState) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

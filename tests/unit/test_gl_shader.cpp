@@ -11,7 +11,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych::gl {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -150,5 +150,5 @@ TEST(ShaderDirectory, EnvironmentOverridesTheSourceDirectory) {
   if (previous) ::setenv("DIPTYCH_SHADER_DIR", saved.c_str(), 1);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych::gl

@@ -17,7 +17,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kInStride = 8, kOutStride = 20;
 
@@ -104,5 +104,5 @@ TEST(GltfLectureParity, DielectricF0FollowsTheIorBelowOneToo) {
   EXPECT_EQ(gltfPbrToLecture(white, 0.f, 0.5f, 0.f, 1.f).ks, 0.f);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -42,7 +42,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 struct Agreement {
   long pixels = 0, covered = 0, idMismatches = 0, compared = 0;
@@ -63,8 +63,8 @@ struct Agreement {
 Agreement compareWithEmbree(const std::filesystem::path& file, int w, int h,
                             const std::vector<std::string>& outputs) {
   // Spheres as triangles in the visibility buffer too: the triangles are what this compares.
-  auto frame =
-      testing::renderHybridFrame(file, w, h, outputs, testing::withoutImpostors(defaultHybridRecipe()));
+  auto frame = testing::renderHybridFrame(file, w, h, outputs,
+                                          testing::withoutImpostors(defaultHybridRecipe()));
   const CpuImage& vis = frame->output("gbuffer.hits");
   EXPECT_EQ(vis.desc.width, w);
   EXPECT_EQ(vis.desc.height, h);
@@ -181,5 +181,5 @@ TEST(HybridConsistency, CornellVisibilityGBufferMatchesEmbreePrimaryRays) {
   checkScene("cornell.json", 640, 480, true);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -10,10 +10,9 @@
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 using namespace diptych::testing;
-
-namespace {
 
 float valueAt(int x, int y, int c, int layer) {
   return float(x) + 0.25f * float(y) + 1000.f * float(c) - 7.f * float(layer);
@@ -22,8 +21,6 @@ float valueAt(int x, int y, int c, int layer) {
 bool sameWords(const CpuImage& a, const CpuImage& b) {
   return a.desc == b.desc && a.words == b.words;
 }
-
-}  // namespace
 
 TEST(CpuImageRows, RowViewsReadAndWriteWhatFAndSetFDo) {
   for (const Format format : {Format::R32F, Format::RG32F, Format::RGBA32F}) {
@@ -82,3 +79,4 @@ TEST(HybridCpuLoops, AFrameAfterACameraMoveEqualsAFreshRenderOfThatCamera) {
   moving->executor->runFrame();
   EXPECT_FALSE(sameWords(moving->output("shade.color"), reference->output("shade.color")));
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -15,7 +15,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 const std::filesystem::path kWhitted =
     std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / "whitted.json";
@@ -103,5 +103,5 @@ TEST(HybridCulling, LightsThatCastNoShadowsCullTheShadowPassAndShadeReadsVisibil
   EXPECT_NE(a.words, c.words) << "shadows must change the image, or this test proves nothing";
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -19,10 +19,10 @@
 #include "engine/metrics/metrics.h"
 #include "tests/support/test_paths.h"
 
-using namespace diptych;
 namespace fs = std::filesystem;
 
-namespace {
+namespace DIPTYCH_UNITY_ID {
+using namespace diptych;
 
 // The message of the InputError `f` throws ("" when it throws nothing).
 template <typename F>
@@ -38,8 +38,6 @@ std::string errorOf(F&& f) {
 std::string nested(int depth) {
   return std::string(std::size_t(depth), '[') + std::string(std::size_t(depth), ']');
 }
-
-}  // namespace
 
 TEST(InputFile, ReadsARegularFileAndRefusesEverythingElse) {
   const fs::path dir = ::diptych::testing::scratchDir("diptych_input_file");
@@ -251,3 +249,4 @@ TEST(ImageRead, AVolumeImageIsRefusedBeforeDecoding) {
   EXPECT_NE(message.find("volume.dds"), std::string::npos) << message;
   EXPECT_NE(message.find("volume of depth 5"), std::string::npos) << message;
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -11,9 +11,8 @@
 #include "engine/core/check.h"
 #include "engine/graph/ids.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 std::string failure(const std::function<void()>& f) {
   try {
     f();
@@ -22,7 +21,6 @@ std::string failure(const std::function<void()>& f) {
   }
   return "";
 }
-}  // namespace
 
 TEST(Invariants, CheckNamesThePlaceTheExpressionAndTheMessage) {
   const int size = 2;
@@ -51,3 +49,4 @@ TEST(Invariants, IdVectorRefusesIdsOutOfRange) {
   EXPECT_NE(failure([&] { (void)passes[PassIndex()]; }).find("id -1"), std::string::npos);
   EXPECT_EQ(passes.ids(), std::vector<PassIndex>{first});
 }
+}  // namespace DIPTYCH_UNITY_ID

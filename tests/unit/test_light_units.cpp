@@ -18,7 +18,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 const std::filesystem::path kSample =
     std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / "blender-point-light.gltf";
@@ -74,5 +74,5 @@ TEST(LightUnits, BlenderPointLightPlaneRadianceMatchesPhotometricPrediction) {
   EXPECT_EQ(saturated, 0) << "no plane pixel may reach 1 at exposure 0";
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -24,7 +24,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -168,5 +168,5 @@ TEST(MaterialGates, ACheckerOnABlackGltfMetalStillReflects) {
   EXPECT_FALSE(shading::materialHasReflection(m));
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -10,9 +10,8 @@
 #include "engine/metrics/metrics.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 Image pixels2x1(std::initializer_list<float> values, int channels = 3) {
   Image img(2, 1, channels);
@@ -75,8 +74,6 @@ Image withBlur(const Image& src, int radius) {
   }
   return out;
 }
-
-}  // namespace
 
 TEST(Metrics, HandComputedPixelMetrics) {
   // Differences: pixel 0 red -0.5, pixel 1 green +0.5; six colour samples.
@@ -281,3 +278,4 @@ TEST(Flip, ExposureCountIsBoundedOnAnExtremeRange) {
   EXPECT_GT(r.exposureStop - r.exposureStart, 150.0) << "the whole range is still covered";
   for (float v : r.map.pixels) EXPECT_TRUE(std::isfinite(v) && v >= 0.f && v <= 1.f);
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -11,7 +11,7 @@
 #include "tests/support/random_image.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 using ::diptych::testing::randomImage;
 
@@ -177,5 +177,5 @@ TEST(MipChain, LodFromGradientsIsLog2OfTheTexelFootprint) {
   for (int c = 0; c < 4; ++c) EXPECT_NEAR(aniso[c], probes[c] / 8.f, 1e-6f);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

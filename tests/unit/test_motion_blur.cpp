@@ -27,9 +27,8 @@
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 std::filesystem::path writeScene(const std::string& name, const std::string& json) {
   const auto dir = ::diptych::testing::scratchDir("diptych_motion_blur");
@@ -81,8 +80,6 @@ std::string ballScene(const std::string& kind = "analytic") {
          ball + R"( "material": "ball",
                  "transform": {"translate": [0, 1, 0]}, "motion": [4, 0, 0]}]})";
 }
-
-}  // namespace
 
 // The scene format: "motion" lands on every instance the object makes and is checked like a
 // coordinate; a malformed one is an error naming its place.
@@ -313,3 +310,4 @@ TEST(MotionBlur, SnapshotAtATimeIsWhatRaysAtThatTimeSee) {
     }
   }
 }
+}  // namespace DIPTYCH_UNITY_ID

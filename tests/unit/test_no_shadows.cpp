@@ -7,6 +7,7 @@
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 
 TEST(NoShadows, LightsEveryPixelAndOnlyAddsLight) {
@@ -47,3 +48,5 @@ TEST(NoShadows, LightsEveryPixelAndOnlyAddsLight) {
   EXPECT_GT(inShadow, 0);
   EXPECT_GT(brighter, 0);
 }
+
+}  // namespace DIPTYCH_UNITY_ID

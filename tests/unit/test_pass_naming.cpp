@@ -12,10 +12,10 @@
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
-using namespace diptych;
 namespace fs = std::filesystem;
 
-namespace {
+namespace DIPTYCH_UNITY_ID {
+using namespace diptych;
 
 fs::path passesDir() {
   return fs::canonical(fs::path(DIPTYCH_SAMPLES_DIR) / ".." / "passes");
@@ -43,8 +43,6 @@ bool declaresClassFor(const std::string& header, const std::string& type) {
     if (classKey((*m)[1]) == classKey(type) + "pass") return true;
   return false;
 }
-
-}  // namespace
 
 TEST(PassNaming, EveryTypeIsItsClassInItsHeader) {
   for (const PassTypeInfo& t : builtinPasses().all()) {
@@ -85,3 +83,4 @@ TEST(PassNaming, ShadersAreNamedAfterThePassThatLoadsThem) {
   }
   EXPECT_GE(checked, 6);
 }
+}  // namespace DIPTYCH_UNITY_ID

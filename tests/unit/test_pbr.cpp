@@ -16,7 +16,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 using namespace shading;
 constexpr float kPi = 3.14159265358979f;
@@ -306,5 +306,5 @@ TEST(Pbr, GltfMaterialsUseTheGltfModelByDefault) {
   for (const Material& m : scene.materials) EXPECT_EQ(m.model, ShadingModel::Gltf) << m.name;
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -22,7 +22,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr float kPi = 3.14159265358979f;
 
@@ -107,5 +107,5 @@ TEST(PbrFurnace, PathTracedWhiteSphereReflectsAtMostWhatArrives) {
     }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

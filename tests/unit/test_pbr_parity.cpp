@@ -26,7 +26,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 using namespace shading;
 constexpr int kInStride = 32, kOutStride = 16;
@@ -221,5 +221,5 @@ TEST(PbrParity, GlslAndCppAgreeWithAThinFilm) {
   checkParity(true, 20261130u);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -12,9 +12,8 @@
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 struct VisibilityPair {
   int groundPixels = 0, exactShadow = 0, planarShadow = 0, mismatched = 0, litElsewhere = 0,
@@ -68,8 +67,6 @@ std::string sphere(float x, float y, float z, float r) {
          R"(, "segments": [128, 64], "material": "m", "transform": {"translate": [)" +
          std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) + "]}}";
 }
-
-}  // namespace
 
 TEST(PlanarShadows, ProjectedPointLiesOnThePlaneAlongTheLightRay) {
   std::mt19937 rng(7);
@@ -140,3 +137,4 @@ TEST(PlanarShadows, DirectionalLightsProjectAlongTheirDirection) {
   EXPECT_GT(r.exactShadow, 50);
   EXPECT_LE(r.mismatched, r.exactShadow / 20) << r.planarShadow << " vs " << r.exactShadow;
 }
+}  // namespace DIPTYCH_UNITY_ID

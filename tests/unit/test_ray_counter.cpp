@@ -8,7 +8,7 @@
 #include "engine/rt/ray_counter.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 TEST(RayCounter, EveryThreadsCountsAreKeptBeyondTheExclusiveSlots) {
   RayCounter counter;
@@ -29,5 +29,5 @@ TEST(RayCounter, EveryThreadsCountsAreKeptBeyondTheExclusiveSlots) {
   EXPECT_EQ(counter.total(), 7u);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -10,6 +10,7 @@
 #include "passes/slots.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 
 TEST(Recipes, TheBuiltInRecipeIsHybridJsonWithEverySlotOnItsExactProducer) {
@@ -48,3 +49,5 @@ TEST(Recipes, EverySampleRecipeUsesRegisteredPassTypes) {
   }
   EXPECT_GE(count, 1);
 }
+
+}  // namespace DIPTYCH_UNITY_ID

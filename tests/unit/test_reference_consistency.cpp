@@ -23,9 +23,8 @@
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 struct Agreement {
   double relativeRmse = 0;  // sqrt(sum |h - r|^2 / sum |r|^2) over pixels whose primary hit agrees
@@ -79,8 +78,6 @@ Agreement compareHybridWithReference(const char* sceneFile, int w, int h,
   return {std::sqrt(num / den), double(mismatched) / double(w * h), w * h, analyticPixels};
 }
 
-}  // namespace
-
 // Bound: relative RMSE < 1e-4 over the pixels whose primary hit agrees (the rest, at most 0.1%,
 // sit on silhouettes where the rasterizer and Embree legitimately pick different triangles).
 // The residual comes from G-buffer barycentrics (float Moller-Trumbore in GLSL) differing from
@@ -117,3 +114,4 @@ TEST(ReferenceConsistency, AllExactHybridMatchesWhittedUnderTheGltfModel) {
     EXPECT_LT(a.relativeRmse, 1e-4) << file;
   }
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -22,9 +22,8 @@
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 std::filesystem::path writeScene(const std::string& name, const std::string& json) {
   const auto dir = ::diptych::testing::scratchDir("diptych_references");
@@ -103,8 +102,6 @@ const char* kFurnace = R"({
   "materials": {"wall": {"color": [1, 1, 1], "kd": 0.5, "emission": [0.5, 0.5, 0.5]}},
   "objects": [{"type": "box", "size": [2, 2, 2], "material": "wall"}]
 })";
-
-}  // namespace
 
 // rt_distributed with one sample per pixel and a pinhole is the Whitted reference itself: the
 // pixel-centre ray, seeded with the pixel index, through the same WhittedTracer. Equality is
@@ -431,3 +428,4 @@ TEST(RtPath, IsReproducible) {
   for (int y = 0; y < 20; ++y)
     for (int x = 0; x < 20; ++x) ASSERT_EQ(a.f(x, y, 0), b.f(x, y, 0));
 }
+}  // namespace DIPTYCH_UNITY_ID

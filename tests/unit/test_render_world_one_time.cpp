@@ -18,7 +18,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 Scene sample(const std::string& name) {
   return loadScene(std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes" / name);
@@ -102,5 +102,5 @@ TEST(RenderWorldOneTime, TheHybridFrameUploadsNoTexture) {
   EXPECT_EQ(world.glShading().textures.count, int(scene.textures.size()));
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -8,9 +8,8 @@
 #include "engine/rt/rt_scene.h"
 #include "tests/support/rt_test_geometry.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 // Five copies of one sphere (three plain, one a separate but identical Mesh, two mirrored) and a
 // plane that occurs once.
@@ -26,8 +25,6 @@ Scene repeatedSpheres() {
   place(1, glm::scale(glm::translate(mat4(1.f), vec3(1.5f, 1.f, 3.f)), vec3(1.f, 1.f, -1.2f)));
   return s;
 }
-
-}  // namespace
 
 TEST(RtInstancing, RepeatedMeshesAreBuiltOnceAndHitTheSameInstancePrimitiveAndPoint) {
   const Scene scene = repeatedSpheres();
@@ -92,3 +89,4 @@ TEST(RtInstancing, AlphaMaskedAndSingleMeshesAreNotInstanced) {
   const RtScene without(device, world);  // no Scene: nothing to group by
   EXPECT_EQ(without.prototypes(), 0);
 }
+}  // namespace DIPTYCH_UNITY_ID

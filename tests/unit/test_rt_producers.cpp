@@ -15,9 +15,8 @@
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 std::filesystem::path writeScene(const std::string& name, const std::string& json) {
   const auto dir = ::diptych::testing::scratchDir("diptych_rt_producers");
@@ -32,8 +31,6 @@ const char* kSlab = R"({
   "objects": [{"type": "box", "size": [200, 1, 200], "material": "glass",
                "transform": {"translate": [0, 0.5, 0]}}]
 })";
-
-}  // namespace
 
 TEST(RtTransmission, SlabAt45DegreesExitsParallelShiftedByTheAnalyticDistance) {
   const Scene scene = loadScene(writeScene("slab.json", kSlab));
@@ -190,3 +187,4 @@ TEST(SceneDrivenCulling, SamplesCullExactlyTheSlotsTheyDoNotNeed) {
   EXPECT_EQ(shadowSphere.at("transmission"), "scene has no transmissive materials");
   EXPECT_EQ(shadowSphere.count("shadows"), 0u);
 }
+}  // namespace DIPTYCH_UNITY_ID

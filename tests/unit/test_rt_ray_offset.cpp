@@ -13,9 +13,8 @@
 #include "engine/rt/rt_scene.h"
 #include "tests/support/rt_test_geometry.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 struct RandomTriangle {
   vec3 p[3];
@@ -94,8 +93,6 @@ OffsetStats runOffsetTrial(bool useVertexMagnitude, float minCentreFactor, bool 
   }
   return stats;
 }
-
-}  // namespace
 
 TEST(RayOffset, StepIsRelativeToTheCoordinatesWithNoAbsoluteFloor) {
   // Off an axis plane through the origin the step along n is kCrossOffset * max|coordinate|
@@ -238,3 +235,4 @@ TEST(RayOffset, NextFloatUpAndDownAreStdNextafter) {
     EXPECT_TRUE(same(nextFloatDown(x), std::nextafter(x, -kInf))) << x;
   }
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -7,9 +7,8 @@
 #include "engine/rt/rt_scene.h"
 #include "tests/support/rt_test_geometry.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 Mesh triangleMesh(vec3 a, vec3 b, vec3 c) {
   Mesh m;
@@ -22,8 +21,6 @@ Mesh triangleMesh(vec3 a, vec3 b, vec3 c) {
 glm::dvec3 toD(vec3 v) {
   return glm::dvec3(v);
 }
-
-}  // namespace
 
 TEST(RtScene, HitOnKnownTriangleMatchesAnalyticTAndInterpolatePosition) {
   const vec3 p0(1.f, 2.f, 3.f), p1(4.f, 2.5f, 3.2f), p2(1.5f, 5.f, 2.8f);
@@ -144,3 +141,4 @@ TEST(RtDevice, EmbreeErrorsBecomeErrorsNamingTheCode) {
   EXPECT_NO_THROW(device.check("after the error was taken"));
   EXPECT_EQ(embreeErrorName(RTC_ERROR_OUT_OF_MEMORY), "RTC_ERROR_OUT_OF_MEMORY");
 }
+}  // namespace DIPTYCH_UNITY_ID

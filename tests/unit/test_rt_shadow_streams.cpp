@@ -15,9 +15,8 @@
 #include "engine/rt/shadow_rays.h"
 #include "tests/support/rt_test_geometry.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 struct ShadowCase {
   Scene scene;
@@ -48,8 +47,6 @@ ShadowCase shadowCase() {
   }
   return k;
 }
-
-}  // namespace
 
 // traceShadowTile (rt_shadows' row streams: receiver-major, every light in one stream) gives
 // traceShadowRays' values bit for bit, for tiles of any length (a row's covered pixels).
@@ -154,3 +151,4 @@ TEST(ShadowStreams, OcclusionStreamAnswersEachRayAsASingleRayQuery) {
   stream.flush();                                // nothing pending: no answer twice
   EXPECT_EQ(answers.size(), rays.size());
 }
+}  // namespace DIPTYCH_UNITY_ID

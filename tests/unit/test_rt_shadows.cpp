@@ -8,9 +8,8 @@
 #include "engine/rt/surface_point.h"
 #include "tests/support/rt_test_geometry.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 constexpr float kH = 10.f, kC = 2.f, kR = 1.f;  // light height, sphere centre height, radius
 
@@ -45,8 +44,6 @@ std::vector<ShadowReceiver> ringFromBelow(const SphereOverPlane& s, float radius
   }
   return out;
 }
-
-}  // namespace
 
 TEST(ShadowRays, SphereShadowDiscUnderPointLightMatchesAnalyticRadius) {
   SphereOverPlane s;
@@ -137,3 +134,4 @@ TEST(ShadowRays, OccluderDistanceIsTheHitDistanceAlongTheShadowRay) {
   point.position = vec3(0.f, kH, 0.f);
   EXPECT_NEAR(occluderDistance(*s.rt, point, under), kC - kR, 1e-4f);
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -7,9 +7,8 @@
 #include "engine/shading/texture_sampling.h"
 #include "tests/support/rt_test_geometry.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 // 2x2 RGBA: red, green / blue, white (row 0 is the top row, v = 0).
 Image quadImage() {
@@ -24,8 +23,6 @@ Image quadImage() {
 void expectNear(vec4 a, vec4 b) {
   for (int k = 0; k < 4; ++k) EXPECT_NEAR(a[k], b[k], 1e-6f) << "channel " << k;
 }
-
-}  // namespace
 
 TEST(TextureSampling, WrapModesOnTexelIndices) {
   EXPECT_EQ(wrapTexel(5, 4, WrapMode::Repeat), 1);
@@ -132,3 +129,4 @@ TEST(Surface, HitFromBehindFlipsNormalsAndResolvesTexturesAndChecker) {
   EXPECT_THROW(makeSurfacePoint(scene, world, {5, 0, 0.f, 0.f}, down.direction), Error);
   EXPECT_THROW(makeSurfacePoint(scene, world, {0, 9, 0.f, 0.f}, down.direction), Error);
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -14,10 +14,10 @@
 #include "engine/scene/validate.h"
 #include "tests/support/test_paths.h"
 
-using namespace diptych;
 namespace fs = std::filesystem;
 
-namespace {
+namespace DIPTYCH_UNITY_ID {
+using namespace diptych;
 
 fs::path tempDir() {
   const fs::path dir = ::diptych::testing::scratchDir("diptych_test_scene_json");
@@ -62,8 +62,6 @@ Aabb boundsOf(const Mesh& m) {
   for (const vec3& p : m.positions) box.extend(p);
   return box;
 }
-
-}  // namespace
 
 TEST(Primitives, TriangleCountsNormalsAndBounds) {
   const Mesh plane = makePlane({4.f, 2.f}, {3, 2});
@@ -476,3 +474,4 @@ TEST(Environment, SolidColourAndEquirectConvention) {
   EXPECT_EQ(cubeFace(vec3(0, 0, -1), st), 5);
   EXPECT_EQ(st, vec2(0.5f));
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -7,7 +7,7 @@
 #include "passes/raster/screen_rect.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 160, kH = 120;
 
@@ -70,5 +70,5 @@ TEST(ScreenRect, ABoxFarOffScreenGetsAnEmptyRectangle) {
   EXPECT_TRUE(windowRect(Aabb{}, viewProj(), kW, kH).empty());
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -20,9 +20,8 @@
 #include "engine/scene/sdf.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 Sdf single(SdfNode node) {
   Sdf s;
@@ -48,8 +47,6 @@ Sdf combine(SdfKind op, SdfNode a, SdfNode b, double k = 0.1) {
   s.nodes = {root, a, b};
   return s;
 }
-
-}  // namespace
 
 // The SDF sphere against the quadric: the tracer stops where the distance is below tol, so its
 // t is short of the exact one by at most tol / cos (cos: the incidence at the exact hit). Step
@@ -322,3 +319,4 @@ TEST(Sdf, JsonObjectsLoadAndBadTreesAreRejectedByName) {
       load(R"({"type": "sdf", "relaxation": 2.5, "shape": {"type": "sphere"}})");
   EXPECT_NE(relax.find("objects[0].relaxation"), std::string::npos) << relax;
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -13,7 +13,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 // An SDF sphere in front of an opaque wall; no lights and no mirrors, so each pixel traces its
 // primary ray only and the steps of a pixel are those of that one ray.
@@ -132,5 +132,5 @@ TEST(SdfSteps, EveryExactProducerSphereTracesTheSdfObject) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -13,7 +13,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 std::map<std::string, std::string> definesOf(const Scene& scene) {
   std::map<std::string, std::string> out;
@@ -97,5 +97,5 @@ TEST(ShaderFeatures, TheDefaultMaterialCountsOnlyWhereAMeshUsesIt) {
   EXPECT_EQ(definesOf(scene).at("DIPTYCH_SCENE_LIGHT_TYPE"), "-1");
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -8,10 +8,9 @@
 
 #include "engine/shading/shading.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 using namespace diptych::shading;
-
-namespace {
 
 ShadingMaterial material(float ka, float kd, float ks, float e) {
   Material m;
@@ -43,8 +42,6 @@ vec3 dirAt(double thetaFromNormal) {  // unit vector in the xz plane, angle from
 bool finite(vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
-
-}  // namespace
 
 TEST(Shading, DiffuseUnderPointLightIsKdCCosOverDistanceSquared) {
   const ShadingMaterial m = material(0.f, 0.8f, 0.f, 1.f);
@@ -281,3 +278,4 @@ TEST(Shading, NoNaNOrInfOverRandomAndExtremeInputs) {
     ASSERT_TRUE(finite(safeNormalize(randomVec())));
   }
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -32,7 +32,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 using namespace shading;
 constexpr int kInStride = 64, kOutStride = 24;  // floats per record (shading_parity.comp)
@@ -293,5 +293,5 @@ TEST(ShadingParity, SurfaceFromVisibilityMatchesMakeSurfacePoint) {
             << ", shading normal " << worst[2] << ", uv " << worst[3] << "\n";
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

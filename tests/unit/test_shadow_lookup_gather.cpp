@@ -25,7 +25,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 CpuImage visibility(const Scene& scene, bool gather, const std::string& bias, int resolution) {
   Recipe recipe;
@@ -99,5 +99,5 @@ TEST(ShadowLookup, TheGatheredPathIsTakenByTheInteriorPass) {
   EXPECT_GT(quarter, 1000);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

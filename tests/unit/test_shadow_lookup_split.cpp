@@ -20,7 +20,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 // The GL state that passes/raster/fullscreen_resolve.h promises after every full-screen draw.
 struct GlState {
@@ -131,5 +131,5 @@ TEST(ShadowLookup, SplitCubeEqualsOnePass) {
       }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -14,11 +14,11 @@
 #include "shadow_map_compare.h"
 #include "tests/support/test_paths.h"
 
-using namespace diptych;
 using diptych::testing::compareShadows;
 using nlohmann::json;
 
-namespace {
+namespace DIPTYCH_UNITY_ID {
+using namespace diptych;
 
 const Scene& shadowSphere() {
   static const Scene scene =
@@ -70,8 +70,6 @@ void expectAgreement(const Scene& scene, const json& params, double bound) {
   EXPECT_LT(c.misclassified(), bound) << params.dump() << ": false shadow " << c.falseShadow
                                       << ", false lit " << c.falseLit << " of " << c.considered;
 }
-
-}  // namespace
 
 // Slope-scaled bias (glPolygonOffset) is the one that needs no knowledge of the receiver in
 // the lookup, and with D32F reversed-Z its units term stays tiny, so it removes acne on the
@@ -199,3 +197,4 @@ TEST(ShadowMap, DISABLED_MeasureMisclassificationTable) {
                     100.0 * double(c.falseLit) / double(c.considered), 100.0 * c.misclassified());
       }
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -17,7 +17,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 struct Frame {
   CpuImage visibility;
@@ -147,5 +147,5 @@ TEST(ShadowMapCache, AMeasuredFrameThatBuildsTheMapsIsMeasuredAgain) {
   EXPECT_TRUE(second.oneTimeMs.empty());
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -16,10 +16,9 @@
 #include "passes/registry.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 using shadowmap::boxOutsideFrustum;
-
-namespace {
 
 Aabb box(vec3 lo, vec3 hi) {
   return Aabb{lo, hi};
@@ -34,8 +33,6 @@ mat4 downFace() {
   const auto frusta = shadowmap::fitLightFrusta({light}, bounds, {});
   return frusta[0].viewProj[3];  // faces +x, -x, +y, -y, +z, -z
 }
-
-}  // namespace
 
 TEST(ShadowMapCulling, FrustumTestIsConservative) {
   const mat4 down = downFace();
@@ -76,3 +73,4 @@ TEST(ShadowMapCulling, WhittedCubeFacesDrawOnlyTheCastersTheySee) {
   EXPECT_GE(draws, 3);
   EXPECT_LE(draws, 9);
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -16,7 +16,7 @@
 #include "tests/unit/gl_test_context.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 struct Frame {
   CpuImage visibility;
@@ -60,5 +60,5 @@ TEST(ShadowMapUpload, AChangedLightSizeReachesTheLookupWithTheMapsCached) {
   EXPECT_EQ(pcssFrame(scene, world, 0.005).visibility.words, small.visibility.words);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -3,9 +3,8 @@
 #include "engine/core/error.h"
 #include "engine/metrics/signal_metrics.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 // A w x h visibility with shadow (0) left of column `edge`, lit (1) from it on.
 std::vector<float> halfShadow(int w, int h, int edge) {
   std::vector<float> v(std::size_t(w) * h);
@@ -13,7 +12,6 @@ std::vector<float> halfShadow(int w, int h, int edge) {
     for (int x = 0; x < w; ++x) v[std::size_t(y) * w + x] = x < edge ? 0.f : 1.f;
   return v;
 }
-}  // namespace
 
 TEST(VisibilityConfusion, IdenticalSignalsHaveNoErrors) {
   const auto v = halfShadow(20, 10, 8);
@@ -136,3 +134,4 @@ TEST(ShadowArtifacts, SoftValuesCountInTheMeanAbsoluteError) {
   EXPECT_NEAR(a.meanAbsError, 0.4, 1e-6);
   EXPECT_THROW(classifyShadows(soft, exact, mask, 4, 4, std::vector<float>(3, 1.f)), Error);
 }
+}  // namespace DIPTYCH_UNITY_ID

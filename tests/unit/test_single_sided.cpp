@@ -18,7 +18,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 32, kH = 24;
 
@@ -161,11 +161,11 @@ TEST(SingleSided, ReflectedRaysSeeBackFaces) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 // whitted.json seen from outside: its glass and mirror spheres are analytic (Embree user
 // geometry, culled by their outward normal) and closed. Made single-sided, nothing the camera
@@ -184,5 +184,5 @@ TEST(SingleSided, ClosedSingleSidedGlassKeepsItsImage) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

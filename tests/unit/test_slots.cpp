@@ -10,16 +10,14 @@
 #include "passes/slots.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 // The resource feeding shade's input for `slot`.
 std::string slotSignalOf(const Recipe& r, const TechniqueSlot& slot) {
   for (const RecipePass& p : r.passes)
     if (p.type == "shade") return p.inputs.at(slot.shadeInput);
   return "";
 }
-}  // namespace
 
 TEST(Slots, ParsesTypeAndTypedParameters) {
   const SlotOverride o = parseSlotOverride("reflection=rt_reflection:depth=3,fast=true,mode=pcf5");
@@ -126,3 +124,4 @@ TEST(Slots, SchemaDefaultsAndRangesComeFromTheRegistry) {
     EXPECT_NE(std::string(e.what()).find("[16.0, 16384.0]"), std::string::npos) << e.what();
   }
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -17,7 +17,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 std::uint32_t bits(float v) {
   return std::bit_cast<std::uint32_t>(v);
@@ -118,5 +118,5 @@ TEST(SrgbTable, GltfTexturesAreTheDirectDecodeBitForBit) {
   EXPECT_EQ(colour, 2);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

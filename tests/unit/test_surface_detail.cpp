@@ -22,7 +22,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -205,5 +205,5 @@ TEST(SurfaceDetail, FlatDropsTheBumpAndBumpKeepsTheScene) {
   EXPECT_FALSE(parseSurfaceDetail("normal-map").has_value());
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -19,7 +19,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 const std::filesystem::path kScene =
     std::filesystem::path(DIPTYCH_SAMPLES_DIR) / "scenes/textures.json";
@@ -176,5 +176,5 @@ TEST(TextureFiltering, RayConesInTheFullRayTracers) {
   }
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -18,7 +18,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 Texture randomTexture(int w, int h, WrapMode s, WrapMode t, FilterMode min, FilterMode mag,
                       std::mt19937& rng) {
@@ -104,5 +104,5 @@ TEST(TextureParity, GlSamplersMatchCpuPerSamplerMode) {
             << worst << ")\n";
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -12,7 +12,7 @@
 #include "engine/shading/texture_sampling.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 // reduceCoordinate's rule (texture_sampling.cpp): whole periods of the wrap mode removed.
 float reduced(float t, WrapMode mode) {
@@ -102,8 +102,8 @@ TEST(TextureSampling, LookupsEqualTheGeneralPathAtEveryEdgeForEveryWrapMode) {
       const std::vector<float> us = coordinates(size[0]), vs = coordinates(size[1]);
       for (WrapMode s : modes)
         for (WrapMode t : modes) {
-          SCOPED_TRACE(testing::Message() << size[0] << "x" << size[1] << "x" << channels
-                                          << " wrap " << int(s) << "," << int(t));
+          SCOPED_TRACE(::testing::Message() << size[0] << "x" << size[1] << "x" << channels
+                                            << " wrap " << int(s) << "," << int(t));
           for (float u : us)
             for (float v : vs) {
               expectSameBits(sampleBilinear(image, {u, v}, s, t),
@@ -150,5 +150,5 @@ TEST(TextureSampling, CheckerParityEqualsFmod) {
   EXPECT_GT(cellsB, 100);  // both colours occur
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -20,7 +20,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kW = 160, kH = 120;
 constexpr double kAllowedDifferent = 0.001;
@@ -167,5 +167,5 @@ TEST(TextureSupersampleStreams, SecondaryFootprintIsTheMeanOfTheSubPixelRaysRefl
   expectFootprintIsTheRayByRayMean(2);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -13,7 +13,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 Image constantImage(vec3 c, int w = 8, int h = 4) {
   Image img(w, h, 3);
@@ -182,5 +182,5 @@ TEST(DefaultLighting, EnvironmentFromTheCommandLineKeepsTheSun) {
   EXPECT_NEAR(sampleEnvironment(scene.environment, vec3(1.f, 0.f, 0.f)).z, 0.9f, 1e-5f);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -16,10 +16,9 @@
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
 using namespace diptych::testing;
-
-namespace {
 
 constexpr int kW = 160, kH = 120;
 
@@ -57,8 +56,6 @@ double relativeRmse(const CpuImage& a, const CpuImage& b) {
       }
   return std::sqrt(num / den);
 }
-
-}  // namespace
 
 TEST(VisibilityGBuffer, TheHybridFrameRastersAVisibilityBuffer) {
   // Requesting the hits as an output beside the CPU readers (as compare does) changes nothing.
@@ -217,3 +214,4 @@ TEST(VisibilityGBuffer, ImpostorsOnlyWhereNoReaderNeedsTheTriangles) {
     }
   }
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -24,7 +24,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 constexpr int kSize = 33;  // odd: the centre pixel's ray passes through the sphere's centre
 const vec3 kColor(0.5f, 0.7f, 0.9f);
@@ -111,5 +111,5 @@ TEST(VolumeAttenuation, RasterBlendAppliesTheThicknessOnce) {
   expectNear(sortedBlendSignal(glassSphere(true)), predicted * thin, 1e-4f, "sorted_blend, volume");
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

@@ -10,7 +10,7 @@
 #include "tests/support/test_paths.h"
 
 namespace diptych {
-namespace {
+namespace DIPTYCH_UNITY_ID {
 
 Scene loadTriangles(const nlohmann::json& nodes) {
   const auto dir = testing::scratchDir("volume_scale");
@@ -74,5 +74,5 @@ TEST(VolumeThicknessScale, ThicknessFollowsTheNodeScaleAndSplitsAcrossScales) {
   EXPECT_EQ(thicknessOf(s, thin), 0.f);
 }
 
-}  // namespace
+}  // namespace DIPTYCH_UNITY_ID
 }  // namespace diptych

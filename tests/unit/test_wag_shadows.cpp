@@ -12,9 +12,8 @@
 #include "tests/support/hybrid_frame.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 struct Mismatch {
   int covered = 0, exactShadow = 0, wagShadow = 0, mismatched = 0;
@@ -77,8 +76,6 @@ Light light(LightType type, vec3 position, vec3 direction) {
   l.direction = direction;
   return l;
 }
-
-}  // namespace
 
 // A floor triangle (legs 8 along x and z, area 32) under a square occluder of side 1 at height
 // h: straight down from a directional light the shadow is the square (1/32 of the floor); from a
@@ -181,3 +178,4 @@ TEST(WagShadows, MatchesRtShadowsOnTheSamples) {
     EXPECT_LE(m.mismatched, m.covered / 200) << name;
   }
 }
+}  // namespace DIPTYCH_UNITY_ID

@@ -15,9 +15,8 @@
 #include "engine/scene/load.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 // An analytic unit sphere at the origin seen from z = 5; one point light at (0, 0, lightZ).
 Scene sphereScene(const std::string& material, float lightZ) {
@@ -52,8 +51,6 @@ Counts trace(const Scene& scene) {
   return {tracer.raysTraced(), w * h, hits.load()};
 }
 
-}  // namespace
-
 TEST(WhittedShadowSkip, ADiffuseSurfaceFacingTheLightTracesOneShadowRayPerHit) {
   const Counts c = trace(sphereScene(R"({"kd": 1})", 10.f));
   ASSERT_GT(c.hits, 100);
@@ -73,3 +70,4 @@ TEST(WhittedShadowSkip, ALightBehindTheVisibleSideNeedsNoShadowRays) {
   ASSERT_GT(c.hits, 100);
   EXPECT_EQ(c.rays, std::uint64_t(c.primaries));
 }
+}  // namespace DIPTYCH_UNITY_ID

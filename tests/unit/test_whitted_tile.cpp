@@ -25,9 +25,8 @@
 #include "tests/support/rt_test_geometry.h"
 #include "tests/support/test_paths.h"
 
+namespace DIPTYCH_UNITY_ID {
 using namespace diptych;
-
-namespace {
 
 constexpr int kW = 96, kH = 72;
 
@@ -166,8 +165,6 @@ void expectStreamHitsWithinBudget(const Scene& scene, std::vector<int>& hitsPerI
   EXPECT_LE(differ, int(rays.size()) / 1000) << "of " << rays.size() << " rays";
 }
 
-}  // namespace
-
 TEST(WhittedTile, RadianceTileEqualsRayByRayOnWhitted) {
   // Analytic mirror and glass spheres over a checker, one point light.
   int hits = 0, differ = -1;
@@ -300,3 +297,4 @@ TEST(WhittedTile, TracedTileEqualsReflectedAndTransmitted) {
       eye.direction);
   EXPECT_FALSE(tracer.secondaryRay(p, -eye.direction, 5, 0u, nullptr, true, s));
 }
+}  // namespace DIPTYCH_UNITY_ID
