@@ -20,7 +20,7 @@ struct BiasCli {
 
 // One row per curve: predicted = (w/2) tan(theta) (or the mode's 1/2); model = where the
 // per-pixel model's acne drops below 1% (constant bias); acne<1% = where the measured one does.
-void printSummary(const nlohmann::json& summary) {
+void printBiasSummary(const nlohmann::json& summary) {
   std::printf("%-15s %-20s %10s %10s %10s %7s %10s %8s %8s %8s %8s\n", "mode", "curve", "predicted",
               "model", "acne<1%", "ratio", "best", "miscl.", "acne", "p-pan", "leak");
   for (const auto& m : summary["modes"])
@@ -87,7 +87,7 @@ void addShadowBiasCommand(CLI::App& app, int& exitCode) {
     c->options.out = c->out;
     const nlohmann::json summary = runBiasStudy(c->options);
     writeBiasReport(c->options.out, summary);
-    printSummary(summary);
+    printBiasSummary(summary);
     std::printf("wrote %s/report.html, summary.json, summary.csv, plots/\n", c->out.c_str());
     exitCode = 0;
   });

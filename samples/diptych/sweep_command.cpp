@@ -20,7 +20,7 @@ struct SweepCli {
   std::vector<std::string> vary, varyLight, varyView;
 };
 
-void printSummary(const nlohmann::json& results) {
+void printSweepSummary(const nlohmann::json& results) {
   for (const auto& p : results["points"]) {
     std::string params;
     for (const auto& [k, v] : p["params"].items())
@@ -77,7 +77,7 @@ void addSweepCommand(CLI::App& app, int& exitCode) {
     for (const auto& v : c->varyLight) c->options.axes.push_back(parseAxis(v, AxisKind::Light));
     for (const auto& v : c->varyView) c->options.axes.push_back(parseAxis(v, AxisKind::View));
     const nlohmann::json results = runSweep(c->options);
-    printSummary(results);
+    printSweepSummary(results);
     std::printf("%s\nwrote %s/results.json, %s/results.csv\n",
                 results["method"].get<std::string>().c_str(), c->out.c_str(), c->out.c_str());
     exitCode = 0;

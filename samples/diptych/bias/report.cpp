@@ -24,7 +24,7 @@ std::string curveName(const nlohmann::json& c) {
   return s;
 }
 
-std::string csvOf(const nlohmann::json& summary) {
+std::string biasCsv(const nlohmann::json& summary) {
   std::string csv =
       "mode,key,resolution,elevation,filter,texel_world,incidence_deg,predicted_threshold,"
       "acne_crossing_1pct,crossing_over_predicted,predicted_crossing_1pct,max_acne_rate,best_"
@@ -62,7 +62,7 @@ const char* kLegend =
 std::vector<std::string> writeBiasReport(const std::filesystem::path& dir,
                                          const nlohmann::json& summary) {
   writeTextFile(dir / "summary.json", summary.dump(1));
-  writeTextFile(dir / "summary.csv", csvOf(summary));
+  writeTextFile(dir / "summary.csv", biasCsv(summary));
   const std::string script = std::string(DIPTYCH_BIAS_TOOLS_DIR) + "/plot_shadow_bias.py";
   const std::string command =
       fmt::format("/usr/bin/python3 '{}' '{}' '{}'", script, (dir / "summary.json").string(),

@@ -11,12 +11,11 @@
 #include "engine/scene/load.h"
 #include "engine/scene/world_geometry.h"
 #include "passes/raster/shadow_map_frusta.h"
+#include "samples/diptych/sweep/geometry.h"
 #include "samples/diptych/sweep/sweep.h"
 
 namespace diptych::cli {
 namespace {
-
-constexpr double kDegrees = 3.14159265358979323846 / 180.0;
 
 std::string join(const auto& values) {
   std::string out;
@@ -171,7 +170,7 @@ double predictedThreshold(const std::string& mode, double texelWorld, double inc
   // w tan(theta) across one texel, and the map holds the depth at the texel centre, so the
   // receiver's own depth misses the stored one by up to (w/2) tan(theta) (Woo 1992 names the
   // self-shadowing; Isidoro 2006 and Dou et al. 2014 give this bound).
-  if (mode == "constant") return 0.5 * texelWorld * std::tan(incidenceDeg * kDegrees);
+  if (mode == "constant") return 0.5 * texelWorld * std::tan(incidenceDeg * kRadiansPerDegree);
   // Normal offset delta = k w sin(theta) along n puts the point delta / cos(theta) above the
   // receiver along the light; clearing (w/2) tan(theta) needs k >= 1/2 whatever theta
   // (Holbert 2011 scales the offset by the texel and sin(theta) for exactly this reason).

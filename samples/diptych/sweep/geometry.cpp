@@ -14,14 +14,6 @@
 namespace diptych::cli {
 namespace {
 
-constexpr double kDegrees = 3.14159265358979323846 / 180.0;
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
 // Cube face (+x, -x, +y, -y, +z, -z) of direction d: its major axis, as the lookup shader's
 // cubeFace() picks it.
 int cubeFace(const vec3& d) {
@@ -119,7 +111,8 @@ void measureGeometry(StateReference& s, const FrameSettings& frame, int light,
         vec3 nrm = p.faceNormal;
         if (glm::dot(nrm, r.toLight) < 0) nrm = -nrm;  // the light's side, as shadow rays do
         r.normal = nrm;
-        r.incidence = std::acos(std::clamp(double(glm::dot(nrm, r.toLight)), -1.0, 1.0)) / kDegrees;
+        r.incidence =
+            std::acos(std::clamp(double(glm::dot(nrm, r.toLight)), -1.0, 1.0)) / kRadiansPerDegree;
       }
       s.receivers.push_back(r);
     }
@@ -216,14 +209,20 @@ TexelPrediction predictTexel(const StateReference& s, int resolution, int light,
     double a = 0, c = 0;
     if (!selfError(f.viewProj[std::size_t(face)], resolution, r, a, c)) continue;
     // The effective texel w of the pixel: the one for which (w/2) tan(theta) is its threshold.
-    const double tanTheta = std::tan(std::min(r.incidence, 89.999) * kDegrees);
+    const double tanTheta = std::tan(std::min(r.incidence, 89.999) * kRadiansPerDegree);
     if (tanTheta > 1e-6) widths.push_back(2 * (a + c) / tanTheta);
     if (counted) acne += uniformSumAbove(a, c, bias);
   }
-  out.texelWorld = median(widths);
-  out.incidenceDeg = median(incidences);
+  out.texelWorld = upperMedian(widths);
+  out.incidenceDeg = upperMedian(incidences);
   if (bias >= 0) out.acneRate = lit ? acne / double(lit) : 0.0;
   return out;
+}
+
+double upperMedian(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
 }
 
 }  // namespace diptych::cli

@@ -14,6 +14,12 @@
 
 namespace diptych::cli {
 
+inline constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
+// The middle element of v (the upper one of the two middle elements for an even count; 0 for
+// none): the sweep's per-receiver summaries.
+double upperMedian(std::vector<double> v);
+
 struct ReceiverPixel {
   std::size_t pixel = 0;
   vec3 position{0.f}, toLight{0.f};

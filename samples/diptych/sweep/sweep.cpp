@@ -29,8 +29,6 @@
 namespace diptych::cli {
 namespace {
 
-constexpr double kDegrees = 3.14159265358979323846 / 180.0;
-
 bool isStateKey(const std::string& k) {
   return std::find(lightKeys().begin(), lightKeys().end(), k) != lightKeys().end() ||
          std::find(viewKeys().begin(), viewKeys().end(), k) != viewKeys().end();
@@ -54,7 +52,7 @@ FrameSettings frameAt(const FrameSettings& base, const nlohmann::json& point) {
   Camera& c = f.camera;
   glm::dvec3 offset = glm::dvec3(c.position) - glm::dvec3(c.target);
   if (point.contains("camera_azimuth")) {
-    const double a = point["camera_azimuth"].get<double>() * kDegrees;
+    const double a = point["camera_azimuth"].get<double>() * kRadiansPerDegree;
     offset = glm::dvec3(std::cos(a) * offset.x + std::sin(a) * offset.z, offset.y,
                         -std::sin(a) * offset.x + std::cos(a) * offset.z);
   }
@@ -76,13 +74,7 @@ Recipe pointRecipe(const SlotOverride& base, const nlohmann::json& params) {
   return recipe;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
-std::string csvOf(const nlohmann::json& results) {
+std::string sweepCsv(const nlohmann::json& results) {
   std::vector<std::string> keys, signal;
   for (const auto& a : results["spec"]["axes"]) keys.push_back(a["key"]);
   for (const auto& p : results["points"])
@@ -118,11 +110,11 @@ Scene sceneAt(const Scene& base, const nlohmann::json& point, int light) {
   if (!point.contains("elevation") && !point.contains("azimuth")) return s;
   Light& l = s.lights[light];
   const vec3 toLight = -glm::normalize(l.direction);
-  double elevation = std::asin(std::clamp(double(toLight.y), -1.0, 1.0)) / kDegrees;
-  double azimuth = std::atan2(double(toLight.z), double(toLight.x)) / kDegrees;
+  double elevation = std::asin(std::clamp(double(toLight.y), -1.0, 1.0)) / kRadiansPerDegree;
+  double azimuth = std::atan2(double(toLight.z), double(toLight.x)) / kRadiansPerDegree;
   elevation = point.value("elevation", elevation);
   azimuth = point.value("azimuth", azimuth);
-  const double e = elevation * kDegrees, a = azimuth * kDegrees;
+  const double e = elevation * kRadiansPerDegree, a = azimuth * kRadiansPerDegree;
   l.direction =
       -vec3(float(std::cos(e) * std::cos(a)), float(std::sin(e)), float(std::cos(e) * std::sin(a)));
   return s;
@@ -328,17 +320,17 @@ nlohmann::json runSweep(const SweepOptions& o) {
     std::vector<double> footprints = state->receiverFootprints;
     row["geometry"] = {{"texel_world", t.texelWorld},
                        {"incidence_deg", t.incidenceDeg},
-                       {"pixel_world", median(std::move(footprints))},
+                       {"pixel_world", upperMedian(std::move(footprints))},
                        {"contact_world", state->contactDistance}};
     if (t.acneRate >= 0) row["geometry"]["predicted_acne_rate"] = t.acneRate;
     results["points"].push_back(row);
     writeTextFile(resultsFile, results.dump(1));
-    writeTextFile(o.out / "results.csv", csvOf(results));
+    writeTextFile(o.out / "results.csv", sweepCsv(results));
     progress(o.label, int(i) + 1, int(points.size()), passPart.dump() + " " + statePart.dump());
   }
   // A completed resume rewrites the files in point order.
   writeTextFile(resultsFile, results.dump(1));
-  writeTextFile(o.out / "results.csv", csvOf(results));
+  writeTextFile(o.out / "results.csv", sweepCsv(results));
   std::fprintf(stderr, "%s: %zu points, %d resumed from %s\n", o.label, points.size(), resumed,
                resultsFile.string().c_str());
   return results;
