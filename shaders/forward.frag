@@ -92,9 +92,9 @@ void main() {
   vec3 face = safeNormalize(cross(p1 - p0, p2 - p0));
   vec3 n = w * sceneNormal(idx.x) + bary.x * sceneNormal(idx.y) + bary.y * sceneNormal(idx.z);
   n = maxAbsComponent(n) > 0.0 ? normalize(n) : face;
-  vec2 t0 = vec2(sceneUvs[2u * idx.x], sceneUvs[2u * idx.x + 1u]);
-  vec2 t1 = vec2(sceneUvs[2u * idx.y], sceneUvs[2u * idx.y + 1u]);
-  vec2 t2 = vec2(sceneUvs[2u * idx.z], sceneUvs[2u * idx.z + 1u]);
+  vec2 t0 = sceneUv(idx.x);
+  vec2 t1 = sceneUv(idx.y);
+  vec2 t2 = sceneUv(idx.z);
   vec2 uv = w * t0 + bary.x * t1 + bary.y * t2;
   // Normal and bump maps on the front side, as makeSurfacePoint(), before the side flip.
   vec4 tg = w * sceneTangent(idx.x) + bary.x * sceneTangent(idx.y) + bary.y * sceneTangent(idx.z);

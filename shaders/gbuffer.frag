@@ -57,9 +57,9 @@ void main() {
 #ifdef DIPTYCH_ALPHA_MASK
   // Texture uv at the exact barycentrics, in interpolateUv's order, so the hole is the one the
   // Embree filter cuts for the same primary ray.
-  vec2 t0 = vec2(sceneUvs[2u * idx.x], sceneUvs[2u * idx.x + 1u]);
-  vec2 t1 = vec2(sceneUvs[2u * idx.y], sceneUvs[2u * idx.y + 1u]);
-  vec2 t2 = vec2(sceneUvs[2u * idx.z], sceneUvs[2u * idx.z + 1u]);
+  vec2 t0 = sceneUv(idx.x);
+  vec2 t1 = sceneUv(idx.y);
+  vec2 t2 = sceneUv(idx.z);
   int material = int(uMaterial);
   if (sceneMaterialAlpha(material, w * t0 + uv.x * t1 + uv.y * t2) <
       sceneMaterialAlphaCutoff(material)) {

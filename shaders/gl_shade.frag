@@ -78,7 +78,7 @@ void main() {
     // are mapped from it (withBaseColorSignal; docs/textures.md).
     vec4 albedo = imageLoad(uAlbedo, p);
     bool remapped = m.model != SHADING_MODEL_GLTF &&
-                    (int(sceneMaterials[s.material + 1].modelTransSpec.w) & 8) != 0;
+                    (int(sceneMaterialRecord(s.material).modelTransSpec.w) & 8) != 0;
     if (albedo.a >= 0.0 && remapped) {
       sceneApplyGltfPbr(m, albedo.xyz, m.metallic, m.roughness, m.transmission);
       m.baseColor = albedo.xyz;

@@ -14,6 +14,6 @@ out vec2 vUv;
 void main() {
   gl_Position = uViewProjection * vec4(aPosition, 1.0);
 #ifdef DIPTYCH_ALPHA_MASK
-  vUv = vec2(sceneUvs[2 * gl_VertexID], sceneUvs[2 * gl_VertexID + 1]);
+  vUv = sceneUv(uint(gl_VertexID));
 #endif
 }

@@ -23,18 +23,31 @@ const int FILTER_PCF = 1;
 const int FILTER_POISSON = 2;
 const int FILTER_PCSS = 3;
 
-struct ShadowLayer {
-  mat4 viewProj;
-  mat4 invViewProj;
-};
-layout(std430, binding = BINDING_SHADOW_LAYERS) readonly buffer ShadowLayers { ShadowLayer shadowLayers[]; };
+// Layer l: its view-projection and inverse, column by column, texels 8 l .. 8 l + 7 of an RGBA32F
+// buffer texture (shadow_map_lookup.cpp GpuLayer).
+layout(binding = UNIT_SHADOW_LAYERS) uniform samplerBuffer uShadowLayers;
+mat4 shadowLayerMatrix(int layer, int inverse) {
+  int t = 8 * layer + 4 * inverse;
+  return mat4(texelFetch(uShadowLayers, t), texelFetch(uShadowLayers, t + 1),
+              texelFetch(uShadowLayers, t + 2), texelFetch(uShadowLayers, t + 3));
+}
 struct ShadowLight {
   ivec4 info;            // kind, first layer, layer count, -
   vec4 positionNear;     // light position, near plane (axis depth)
   vec4 directionFar;     // travel direction, far plane (axis depth)
   vec4 texelScaleSize;   // texel footprint (ortho: world; else per unit axis depth), PCSS size
 };
-layout(std430, binding = BINDING_SHADOW_LIGHTS) readonly buffer ShadowLights { ShadowLight shadowLights[]; };
+// Light i: texels 4 i .. 4 i + 3 of an RGBA32I buffer texture (shadow_map_lookup.cpp
+// GpuShadowLight), the float fields as their bits.
+layout(binding = UNIT_SHADOW_LIGHTS) uniform isamplerBuffer uShadowLights;
+ShadowLight shadowLightRecord(int i) {
+  ShadowLight l;
+  l.info = texelFetch(uShadowLights, 4 * i);
+  l.positionNear = intBitsToFloat(texelFetch(uShadowLights, 4 * i + 1));
+  l.directionFar = intBitsToFloat(texelFetch(uShadowLights, 4 * i + 2));
+  l.texelScaleSize = intBitsToFloat(texelFetch(uShadowLights, 4 * i + 3));
+  return l;
+}
 
 layout(binding = 0) uniform usampler2D uHits;
 layout(binding = 1) uniform sampler2DArray uShadowMaps;
@@ -75,14 +88,14 @@ bool gGradOk = false;
 // (uv in [0,1]^2, reversed depth, clip w) of a world point on one layer; a point behind a
 // perspective light gets uv (-1, -1), outside every map.
 vec4 project(int face, vec3 p) {
-  vec4 c = shadowLayers[gFirst + face].viewProj * vec4(p, 1.0);
+  vec4 c = shadowLayerMatrix(gFirst + face, 0) * vec4(p, 1.0);
   if (!(c.w > 0.0)) return vec4(-1.0, -1.0, 0.0, 0.0);
   vec3 ndc = c.xyz / c.w;
   return vec4(0.5 * ndc.xy + 0.5, ndc.z, c.w);
 }
 
 vec3 unproject(int face, vec2 uv, float depth) {
-  vec4 h = shadowLayers[gFirst + face].invViewProj * vec4(2.0 * uv - 1.0, depth, 1.0);
+  vec4 h = shadowLayerMatrix(gFirst + face, 1) * vec4(2.0 * uv - 1.0, depth, 1.0);
   return h.xyz / h.w;
 }
 
@@ -263,7 +276,7 @@ void main() {
   // Receiver-plane bias keeps them in its quads: its screen derivatives read their lanes.
   if (uBias != BIAS_RECEIVER_PLANE && hits.x == 0u) discard;
   SceneSurface s = gbufferSurface(ivec2(gl_FragCoord.xy), hits);
-  ShadowLight light = shadowLights[uLight];
+  ShadowLight light = shadowLightRecord(uLight);
   gFirst = light.info.y;
   gLightPos = light.positionNear.xyz;
   gNear = light.positionNear.w;

@@ -41,11 +41,11 @@ void main() {
   float bu = uintBitsToFloat(texel.z), bv = uintBitsToFloat(texel.w), bw = 1.0 - bu - bv;
   vec3 p0 = scenePosition(tri.x), p1 = scenePosition(tri.y), p2 = scenePosition(tri.z);
   vec3 position = bw * p0 + bu * p1 + bv * p2;
-  vec2 t0 = vec2(sceneUvs[2u * tri.x], sceneUvs[2u * tri.x + 1u]);
-  vec2 t1 = vec2(sceneUvs[2u * tri.y], sceneUvs[2u * tri.y + 1u]);
-  vec2 t2 = vec2(sceneUvs[2u * tri.z], sceneUvs[2u * tri.z + 1u]);
+  vec2 t0 = sceneUv(tri.x);
+  vec2 t1 = sceneUv(tri.y);
+  vec2 t2 = sceneUv(tri.z);
   vec2 uv = bw * t0 + bu * t1 + bv * t2;
-  GpuMaterial g = sceneMaterials[material + 1];
+  GpuMaterial g = sceneMaterialRecord(material);
   // The colour the material's model reads (common/shading.glsl textureSignalColor): C for the
   // lecture's, the base colour for glTF's and for materials re-mapped per texel (gate 8,
   // remapsPerTexel: shade maps their coefficients from it); the texel multiplies either.
@@ -82,7 +82,7 @@ void main() {
       // footprint of a pixel facing the camera (the ray-cone LOD without the cosine):
       // lambda = log2(distance * 2 tan(fov/2) / H) + 0.5 log2(uv area / world area) + 0.5 log2(w h).
       float worldArea = length(n), uvArea = abs(f1.x * f2.y - f1.y * f2.x);
-      vec2 texSize = vec2(sceneTextureInfo[tex].xy);
+      vec2 texSize = vec2(sceneTextureInfo(tex).xy);
       float lambda = log2(length(position - uEye) * 2.0 * length(uUp) / float(size.y)) +
                      0.5 * log2(uvArea / worldArea) + 0.5 * log2(texSize.x * texSize.y);
       c = sceneSampleFiltered(tex, uv, worldArea > 0.0 && uvArea > 0.0 ? lambda : 0.0, true,

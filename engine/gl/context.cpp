@@ -2,9 +2,11 @@
 
 #include <cstdio>
 #include <string_view>
+#include <utility>
 
 #include "engine/core/error.h"
 #include "engine/core/log.h"
+#include "engine/gl/bindings.h"
 #include "engine/gl/debug.h"
 #include "engine/gl/loader.h"
 
@@ -83,6 +85,19 @@ void GlContext::initialize() {
   if (info_.major * 10 + info_.minor < 45 || !info_.coreProfile) {
     throw Error("OpenGL context '" + contextName + "' is '" + info_.version + "' (" +
                 (info_.coreProfile ? "core" : "not core") + "); Diptych needs 4.5 core");
+  }
+  // The scene's data sits on texture units up to UNIT_COUNT - 1 in every stage that reads it.
+  for (const auto& [limit, stage] : {std::pair{GL_MAX_TEXTURE_IMAGE_UNITS, "fragment"},
+                                     std::pair{GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS, "vertex"},
+                                     std::pair{GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, "compute"}}) {
+    GLint units = 0;
+    glGetIntegerv(limit, &units);
+    if (units < UNIT_COUNT) {
+      throw Error("OpenGL context '" + contextName + "' ('" + info_.renderer + "') offers " +
+                  std::to_string(units) + " texture units to the " + stage +
+                  " stage; Diptych binds " + std::to_string(UNIT_COUNT) +
+                  " (shaders/common/bindings.glsl)");
+    }
   }
   GLint extensions = 0;
   glGetIntegerv(GL_NUM_EXTENSIONS, &extensions);

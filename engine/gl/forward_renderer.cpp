@@ -185,8 +185,8 @@ void ForwardRenderer::render(const ForwardScene& input, const ForwardView& view,
   if (transmissiveOnly) glBindTextureUnit(UNIT_BLEND_FIRST, o.transmissiveFirst->id());
   program.use();
   buffers.vertexArray.bind();
-  buffers.bindStorage();
-  shading.bindStorage();
+  buffers.bind();
+  shading.bind();
   for (const int i : drawList(scene, buffers, o)) {
     const GlMeshRange& mesh = buffers.meshes[std::size_t(i)];
     if (mesh.triangleCount == 0 || mesh.instance == o.excludeInstance) continue;

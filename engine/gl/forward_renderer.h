@@ -2,7 +2,7 @@
 // A forward renderer of the shaded scene, for the raster producers of the reflection and
 // transmission slots (sorted blending, planar mirror, dynamic cube capture).
 //
-// Every fragment is shaded with the shared model (shaders/common/shading.glsl) on the SSBO
+// Every fragment is shaded with the shared model (shaders/common/shading.glsl) on the scene's
 // materials and lights (shaders/gl/scene_shading.glsl):
 //   L = M_E + A_G + sum_i S_i L_dir,i
 // with V_i = 1 (no shadows) and the secondary terms k_ps M_PS L_refl and k_t M_T L_trans left

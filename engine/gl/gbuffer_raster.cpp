@@ -186,8 +186,8 @@ void GBufferRasterizer::render(const GlSceneBuffers& scene, const Camera& camera
   }
 
   scene.vertexArray.bind();
-  scene.bindStorage();
-  if (shading) shading->bindStorage();
+  scene.bind();
+  if (shading) shading->bind();
   culledMeshes_ = 0;
   impostorMeshes_ = 0;
   const float nearReach = nearPlaneReach(camera.znear, camera.verticalFov, aspect);
@@ -248,7 +248,7 @@ void GBufferRasterizer::resolveSurface(const Texture& hits, const Texture& surfa
   ScopedGlLabel label("gbuffer.surface");
   const Program& resolve = surfaceProgram(shading);
   resolve.use();
-  shading.bindStorage();
+  shading.bind();
   glBindTextureUnit(0, hits.id());
   glBindImageTexture(0, surface.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glDispatchCompute(GLuint((hits.width() + 7) / 8), GLuint((hits.height() + 7) / 8), 1);

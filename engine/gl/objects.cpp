@@ -211,6 +211,29 @@ void Buffer::bindBase(GLenum target, GLuint index) const {
   glBindBufferBase(target, index, id());
 }
 
+BufferTexture BufferTexture::create(const Buffer& buffer, GLenum internalFormat,
+                                    std::size_t texelBytes, std::string_view label) {
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  const std::size_t texels = buffer.size() / texelBytes;
+  if (texels > std::size_t(maxTexels)) {
+    throw Error("scene data '" + std::string(label) + "' has " + std::to_string(texels) +
+                " texels; this GL reads at most " + std::to_string(maxTexels) +
+                " from one buffer texture (GL_MAX_TEXTURE_BUFFER_SIZE)");
+  }
+  BufferTexture t;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+  t.handle_ = GlHandle<detail::deleteTexture>(id);
+  glTextureBuffer(id, internalFormat, buffer.id());
+  glObjectLabel(GL_TEXTURE, id, GLsizei(label.size()), label.data());
+  return t;
+}
+
+void BufferTexture::bind(GLuint unit) const {
+  glBindTextureUnit(unit, id());
+}
+
 VertexArray VertexArray::create() {
   VertexArray v;
   GLuint id = 0;

@@ -140,6 +140,25 @@ class Buffer {
   std::size_t size_ = 0;
 };
 
+// A read-only typed view of a whole Buffer (GL 4.5 core, 8.1 glTextureBuffer), read in GLSL by
+// texelFetch on a samplerBuffer. The scene's data reaches shaders this way rather than as SSBOs:
+// llvmpipe runs each SSBO load as a loop over its SIMD lanes with a bounds test per lane, and a
+// buffer texel fetch as one gather (docs/gl.md, "Scene data"); GPUs read both at the same speed.
+// The buffer must outlive the view.
+class BufferTexture {
+ public:
+  BufferTexture() = default;
+  // Texels of `internalFormat` (GL_RGBA32F, GL_RGB32UI, ...), `texelBytes` each; throws an Error
+  // naming `label` when their count exceeds the driver's GL_MAX_TEXTURE_BUFFER_SIZE.
+  static BufferTexture create(const Buffer& buffer, GLenum internalFormat, std::size_t texelBytes,
+                              std::string_view label);
+  GLuint id() const { return handle_.get(); }
+  void bind(GLuint unit) const;
+
+ private:
+  GlHandle<detail::deleteTexture> handle_;
+};
+
 class VertexArray {
  public:
   VertexArray() = default;

@@ -64,6 +64,11 @@ GlSceneBuffers uploadScene(const WorldGeometry& geometry) {
   out.uvs = Buffer::create(uvs.size() * 4, uvs.data());
   out.tangents = Buffer::create(tangents.size() * 4, tangents.data());
   out.indices = Buffer::create(indices.size() * 4, indices.data());
+  out.positionTexels = BufferTexture::create(out.positions, GL_RGB32F, 12, "scene.positions");
+  out.normalTexels = BufferTexture::create(out.normals, GL_RGB32F, 12, "scene.normals");
+  out.uvTexels = BufferTexture::create(out.uvs, GL_RG32F, 8, "scene.uvs");
+  out.indexTexels = BufferTexture::create(out.indices, GL_RGB32UI, 12, "scene.indices");
+  out.tangentTexels = BufferTexture::create(out.tangents, GL_RGBA32F, 16, "scene.tangents");
 
   out.vertexArray = VertexArray::create();
   const GLuint vao = out.vertexArray.id();
@@ -75,12 +80,12 @@ GlSceneBuffers uploadScene(const WorldGeometry& geometry) {
   return out;
 }
 
-void GlSceneBuffers::bindStorage() const {
-  positions.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_POSITIONS);
-  normals.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_NORMALS);
-  uvs.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_UVS);
-  indices.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INDICES);
-  tangents.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_TANGENTS);
+void GlSceneBuffers::bind() const {
+  positionTexels.bind(UNIT_SCENE_POSITIONS);
+  normalTexels.bind(UNIT_SCENE_NORMALS);
+  uvTexels.bind(UNIT_SCENE_UVS);
+  indexTexels.bind(UNIT_SCENE_INDICES);
+  tangentTexels.bind(UNIT_SCENE_TANGENTS);
 }
 
 }  // namespace diptych::gl

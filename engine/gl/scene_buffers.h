@@ -2,8 +2,9 @@
 // A WorldGeometry on the GPU. All meshes share one set of buffers; mesh m's triangles are
 // triangles [firstTriangle, firstTriangle + triangleCount) of the shared index buffer, whose
 // indices are already offset to the shared vertex arrays. The buffers are tightly packed float
-// and uint arrays, so shaders read them as std430 `float[]`/`uint[]` SSBOs (a vec3[] would have
-// a 16-byte stride) as well as vertex attributes.
+// and uint arrays: vertex attributes and the element buffer for draws, and buffer textures of
+// one vertex (RGB32F, RG32F, RGBA32F) or one triangle (RGB32UI) a texel for the shaders that
+// rebuild a hit (shaders/gl/scene_buffers.glsl).
 #include <cstdint>
 #include <vector>
 
@@ -31,18 +32,20 @@ struct GlMeshRange {
 };
 
 struct GlSceneBuffers {
-  Buffer positions;                 // 3 floats per vertex, world space
-  Buffer normals;                   // 3 floats per vertex, world space, unit
-  Buffer uvs;                       // 2 floats per vertex; (0, 0) for meshes without uvs
-  Buffer indices;                   // 3 uints per triangle, into the shared vertex arrays
-  Buffer tangents;                  // 4 floats per vertex (xyz, handedness); 0 without a normal map
+  Buffer positions;  // 3 floats per vertex, world space
+  Buffer normals;    // 3 floats per vertex, world space, unit
+  Buffer uvs;        // 2 floats per vertex; (0, 0) for meshes without uvs
+  Buffer indices;    // 3 uints per triangle, into the shared vertex arrays
+  Buffer tangents;   // 4 floats per vertex (xyz, handedness); 0 without a normal map
+  // The five buffers' views, in the order above (UNIT_SCENE_POSITIONS ... UNIT_SCENE_TANGENTS).
+  BufferTexture positionTexels, normalTexels, uvTexels, indexTexels, tangentTexels;
   VertexArray vertexArray;          // attribute 0 = position, element buffer = indices
   std::vector<GlMeshRange> meshes;  // same order as WorldGeometry::meshes
   std::size_t vertexCount = 0;
   std::size_t triangleCount = 0;
 
-  // Binds the five buffers to the BINDING_SCENE_* SSBO points (engine/gl/bindings.h).
-  void bindStorage() const;
+  // Binds the five views to their UNIT_SCENE_* texture units (engine/gl/bindings.h).
+  void bind() const;
 };
 
 GlSceneBuffers uploadScene(const WorldGeometry& geometry);

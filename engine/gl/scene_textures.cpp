@@ -64,7 +64,7 @@ int textureFlags(const diptych::Texture& t) {
 
 void GlSceneTextures::bind() const {
   glBindTextureUnit(UNIT_SCENE_TEXTURES, texels.id());
-  info.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_TEXTURES);
+  infoTexels.bind(UNIT_SCENE_TEXTURE_INFO);
 }
 
 GlSceneTextures uploadTextures(const Scene& scene) {
@@ -109,6 +109,7 @@ GlSceneTextures uploadTextures(const Scene& scene) {
   }
   if (info.empty()) info = {0, 0, 0, 0};
   out.info = Buffer::create(info.size() * sizeof(std::int32_t), info.data());
+  out.infoTexels = BufferTexture::create(out.info, GL_RGBA32I, 16, "scene.texture_info");
   return out;
 }
 

@@ -13,6 +13,9 @@
 namespace diptych::gl {
 namespace {
 
+// vec4s per material record: packMaterial's, and GLSL's GpuMaterial (GPU_MATERIAL_TEXELS).
+constexpr std::size_t kMaterialTexels = 20;
+
 // The texture whose alpha multiplies the material's coverage (resolveMaterial: a checker
 // replaces the colour texture, and an empty image samples as 1).
 const diptych::Texture* coverageTexture(const Scene& scene, const Material& m) {
@@ -49,8 +52,8 @@ int wrapCode(WrapMode w) {
   return 0;
 }
 
-// std430 layout of scene_shading.glsl's GpuMaterial: nine vec4, then the glTF model's three,
-// the four of the textures, the bump map's two and the iridescence's two.
+// scene_shading.glsl's GpuMaterial, a vec4 a texel (kMaterialTexels): nine vec4, then the glTF
+// model's three, the four of the textures, the bump map's two and the iridescence's two.
 // Which secondary signals some point of the material can have (shading::materialHas*, bounds
 // over its textures), as bits of GpuMaterial.modelTransSpec.w: the GL producers' gate before
 // rebuilding any surface (scene_shading.glsl sceneHitMay*), as rt_secondary.cpp decides first.
@@ -137,7 +140,7 @@ void packLight(const Light& l, std::vector<float>& out) {
 }
 
 Buffer makeBuffer(const void* data, std::size_t bytes) {
-  // A zero-sized SSBO cannot be bound; keep one dummy element so shaders always see a buffer.
+  // A zero-sized buffer cannot back a buffer texture; one dummy element keeps every view valid.
   static const float dummy[4] = {0, 0, 0, 0};
   return bytes ? Buffer::create(bytes, data) : Buffer::create(sizeof(dummy), dummy);
 }
@@ -151,10 +154,10 @@ AlphaDraw alphaDraw(const Scene& scene, int material) {
   return m.alpha < m.alphaCutoff ? AlphaDraw::Hidden : AlphaDraw::Opaque;
 }
 
-void GlShadingBuffers::bindStorage() const {
-  materials.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_MATERIALS);
-  instances.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_INSTANCES);
-  lights.bindBase(GL_SHADER_STORAGE_BUFFER, BINDING_SCENE_LIGHTS);
+void GlShadingBuffers::bind() const {
+  materialTexels.bind(UNIT_SCENE_MATERIALS);
+  instanceTexels.bind(UNIT_SCENE_INSTANCES);
+  lightTexels.bind(UNIT_SCENE_LIGHTS);
   glBindTextureUnit(UNIT_SCENE_ALPHA_MASKS, alphaMasks.id());
   textures.bind();
 }
@@ -236,6 +239,12 @@ GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometr
   out.materials = makeBuffer(materials.data(), materials.size() * sizeof(float));
   out.instances = makeBuffer(instances.data(), instances.size() * sizeof(std::int32_t));
   out.lights = makeBuffer(lights.data(), lights.size() * sizeof(float));
+  // GLSL reads a material as GPU_MATERIAL_TEXELS texels (scene_shading.glsl sceneMaterialRecord).
+  DIPTYCH_CHECK(materials.size() == materialIndices.size() * 4 * kMaterialTexels,
+                "packMaterial wrote a record of another size than GLSL's GpuMaterial");
+  out.materialTexels = BufferTexture::create(out.materials, GL_RGBA32F, 16, "scene.materials");
+  out.instanceTexels = BufferTexture::create(out.instances, GL_RG32I, 8, "scene.instances");
+  out.lightTexels = BufferTexture::create(out.lights, GL_RGBA32F, 16, "scene.lights");
   out.materialCount = int(scene.materials.size() + 1);
   out.instanceCount = int(scene.instances.size());
   out.lightCount = int(scene.lights.size());

@@ -36,6 +36,8 @@ struct GlShadingBuffers {
                      // is materials[m]
   Buffer instances;  // 2 ints per instance: (material + 1, first triangle in the shared buffers)
   Buffer lights;     // 5 vec4 per light
+  // Their views (RGBA32F, RG32I, RGBA32F) on UNIT_SCENE_MATERIALS, _INSTANCES, _LIGHTS.
+  BufferTexture materialTexels, instanceTexels, lightTexels;
   // R32F 2D array: layer k holds the alpha of one colour texture used by a masked material, at
   // its own size in the corner of the layer (GLSL does the wrap and the filter, as
   // sampleTexture does, with texelFetch). A 1x1x1 dummy when no material is alpha-tested.
@@ -49,9 +51,9 @@ struct GlShadingBuffers {
   // The scene's shader permutation (shader_features.h): passes compile with these first.
   std::vector<ShaderDefine> defines;
 
-  // Binds the three buffers to their BINDING_SCENE_* points, alphaMasks to
-  // UNIT_SCENE_ALPHA_MASKS and the textures (engine/gl/bindings.h).
-  void bindStorage() const;
+  // Binds the three views to their UNIT_SCENE_* units, alphaMasks to UNIT_SCENE_ALPHA_MASKS and
+  // the textures (engine/gl/bindings.h).
+  void bind() const;
   AlphaDraw alphaDraw(int material) const;  // -1 or out of range: the default material
   bool anyAlphaTested() const { return alphaMaskLayers > 0; }
 };

@@ -22,8 +22,8 @@ FullscreenResolve::FullscreenResolve(gl::Program program) : program_(std::move(p
 
 void FullscreenResolve::draw(RenderWorld& world, const gl::Texture& target,
                              const FullscreenOptions& o) {
-  world.glScene().bindStorage();
-  world.glShading().bindStorage();
+  world.glScene().bind();
+  world.glShading().bind();
   auto& [framebuffer, empty] = world.glCached<FullscreenTarget>();
   framebuffer.attachColor(0, target, 0, o.layer);
   if (o.depth)

@@ -1,7 +1,7 @@
 #pragma once
 // A full-screen triangle drawn into one frame-size texture with a program of the caller's,
 // for the per-pixel steps of the forward producers (mask, resolve) and GL shade. The scene and
-// shading SSBOs are bound so that the fragment shader can rebuild G-buffer points
+// shading buffer textures are bound so that the fragment shader can rebuild G-buffer points
 // (shaders/gl/scene_shading.glsl, surfaceFromHits). The triangle lies at depth 0
 // (shaders/fullscreen.vert), the far end of the engine's reversed-Z (camera_math.h). Every draw
 // of a world goes through that world's one framebuffer (fullscreen_resolve.cpp says why).

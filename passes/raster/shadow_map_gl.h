@@ -68,6 +68,7 @@ class ShadowMapGl {
   gl::Program alphaDepth_;   // DIPTYCH_ALPHA_MASK variant of depth_, compiled on first need
   gl::Framebuffer depthFbo_;
   gl::Buffer layers_, lights_;
+  gl::BufferTexture layerTexels_, lightTexels_;  // their views, read by the lookup
   // The bytes last uploaded to layers_ and lights_: a static light's frusta are uploaded once,
   // not every frame (an upload into a buffer that queued draws read makes llvmpipe wait for them).
   std::vector<std::byte> uploadedLayers_, uploadedLights_;

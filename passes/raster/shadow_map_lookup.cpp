@@ -17,7 +17,8 @@ namespace diptych::shadowmap {
 
 namespace {
 
-// std430 layouts of ShadowLayers / ShadowLights in shaders/shadow_map_lookup.frag.
+// The records of uShadowLayers (RGBA32F) and uShadowLights (RGBA32I) in
+// shaders/shadow_map_lookup.frag.
 struct GpuLayer {
   mat4 viewProj, invViewProj;
 };
@@ -29,14 +30,19 @@ struct GpuShadowLight {
 };
 static_assert(sizeof(GpuLayer) == 128 && sizeof(GpuShadowLight) == 64);
 
-// Uploads `data` unless `uploaded` (what the buffer holds) already equals it.
+// Uploads `data` unless `uploaded` (what the buffer holds) already equals it; a new buffer gets
+// a new view `texels` of `format`, 16-byte texels.
 template <class T>
-void uploadArray(gl::Buffer& buffer, const std::vector<T>& data, std::vector<std::byte>& uploaded) {
+void uploadArray(gl::Buffer& buffer, gl::BufferTexture& texels, GLenum format, const char* label,
+                 const std::vector<T>& data, std::vector<std::byte>& uploaded) {
   const std::size_t bytes = std::max<std::size_t>(sizeof(T), data.size() * sizeof(T));
   const auto* first = reinterpret_cast<const std::byte*>(data.data());
   const std::vector<std::byte> now(first, first + data.size() * sizeof(T));
   if (buffer.id() && buffer.size() >= bytes && now == uploaded) return;
-  if (!buffer.id() || buffer.size() < bytes) buffer = gl::Buffer::create(bytes);
+  if (!buffer.id() || buffer.size() < bytes) {
+    buffer = gl::Buffer::create(bytes);
+    texels = gl::BufferTexture::create(buffer, format, 16, label);
+  }
   if (!data.empty()) buffer.upload(0, data.size() * sizeof(T), data.data());
   uploaded = now;
 }
@@ -76,8 +82,8 @@ void ShadowMapGl::uploadFrusta(const std::vector<LightFrustum>& frusta, const Se
     lights.push_back({int(f.kind), f.firstLayer, f.layers, 0, vec4(f.position, f.zNear),
                       vec4(f.direction, f.zFar), vec4(f.texelScale, f.lightSize, 0.f, 0.f)});
   }
-  uploadArray(layers_, layers, uploadedLayers_);
-  uploadArray(lights_, lights, uploadedLights_);
+  uploadArray(layers_, layerTexels_, GL_RGBA32F, "shadow_map.layers", layers, uploadedLayers_);
+  uploadArray(lights_, lightTexels_, GL_RGBA32I, "shadow_map.lights", lights, uploadedLights_);
 }
 
 FullscreenResolve& ShadowMapGl::lookupDraw(RenderWorld& world, ViewKind kind, const Settings& s,
@@ -110,8 +116,8 @@ void ShadowMapGl::lookup(RenderWorld& world, const std::vector<LightFrustum>& fr
   gl::ScopedGlLabel label("shadow_map.lookup");
   uploadFrusta(frusta, s);
   const gl::GlShadingBuffers& shading = world.glShading();
-  layers_.bindBase(GL_SHADER_STORAGE_BUFFER, gl::BINDING_SHADOW_LAYERS);
-  lights_.bindBase(GL_SHADER_STORAGE_BUFFER, gl::BINDING_SHADOW_LIGHTS);
+  layerTexels_.bind(gl::UNIT_SHADOW_LAYERS);
+  lightTexels_.bind(gl::UNIT_SHADOW_LIGHTS);
   gl::glBindTextureUnit(0, gbuffer.id());
   gl::glBindTextureUnit(1, maps.id());
   if (surface) gl::glBindTextureUnit(gl::UNIT_GBUFFER_SURFACE, surface->id());

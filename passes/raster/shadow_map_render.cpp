@@ -112,8 +112,8 @@ int ShadowMapGl::renderMaps(RenderWorld& world, const std::vector<LightFrustum>&
                                   {{"DIPTYCH_ALPHA_MASK", ""}});
   }
   if (shading.anyAlphaTested()) {
-    scene.bindStorage();
-    shading.bindStorage();
+    scene.bind();
+    shading.bind();
   }
   scene.vertexArray.bind();
   const std::vector<Aabb>& bounds = meshBounds(world);  // screen_rect.h: one per world

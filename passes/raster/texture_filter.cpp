@@ -48,8 +48,8 @@ void TextureFilterPass::execute(PassContext& c) {
   RenderWorld& world = c.world();
   const Camera& camera = c.frame().camera;
   const gl::GlShadingBuffers& shading = world.glShading();
-  world.glScene().bindStorage();
-  shading.bindStorage();
+  world.glScene().bind();
+  shading.bind();
   const gl::Texture& out = c.glTexture(io_.signal);
   // The pinhole of engine/scene/camera_math.cpp primaryRay: d = forward + ndc.x right' +
   // ndc.y up' with right' = right aspect tan(fov/2), up' = up tan(fov/2).

@@ -1,26 +1,21 @@
-// The scene as uploaded by engine/gl/scene_buffers.cpp: tightly packed float/uint arrays (std430
-// `float[]`, since a vec3[] would be padded to 16 bytes). Bindings: common/bindings.glsl.
+// The scene as uploaded by engine/gl/scene_buffers.cpp: buffer textures over its tightly packed
+// arrays, a vertex or a triangle a texel, read with texelFetch (not SSBOs, which llvmpipe reads
+// a lane at a time; docs/gl.md, "Scene data"). Units: common/bindings.glsl.
 #include "common/bindings.glsl"
-layout(std430, binding = BINDING_SCENE_POSITIONS) readonly buffer ScenePositions { float scenePositions[]; };
-layout(std430, binding = BINDING_SCENE_NORMALS) readonly buffer SceneNormals { float sceneNormals[]; };
-layout(std430, binding = BINDING_SCENE_UVS) readonly buffer SceneUvs { float sceneUvs[]; };
-layout(std430, binding = BINDING_SCENE_INDICES) readonly buffer SceneIndices { uint sceneIndices[]; };
+layout(binding = UNIT_SCENE_POSITIONS) uniform samplerBuffer uScenePositions;  // RGB32F
+layout(binding = UNIT_SCENE_NORMALS) uniform samplerBuffer uSceneNormals;      // RGB32F
+layout(binding = UNIT_SCENE_UVS) uniform samplerBuffer uSceneUvs;              // RG32F
+layout(binding = UNIT_SCENE_INDICES) uniform usamplerBuffer uSceneIndices;     // RGB32UI
 // World tangent xyz and handedness w per vertex; zero where the mesh has none (no normal map).
-layout(std430, binding = BINDING_SCENE_TANGENTS) readonly buffer SceneTangents { vec4 sceneTangents[]; };
+layout(binding = UNIT_SCENE_TANGENTS) uniform samplerBuffer uSceneTangents;    // RGBA32F
 
-vec4 sceneTangent(uint vertex) { return sceneTangents[vertex]; }
+vec4 sceneTangent(uint vertex) { return texelFetch(uSceneTangents, int(vertex)); }
 
-uvec3 sceneTriangle(uint triangle) {
-  return uvec3(sceneIndices[3u * triangle], sceneIndices[3u * triangle + 1u],
-               sceneIndices[3u * triangle + 2u]);
-}
+uvec3 sceneTriangle(uint triangle) { return texelFetch(uSceneIndices, int(triangle)).xyz; }
 
-vec3 scenePosition(uint vertex) {
-  return vec3(scenePositions[3u * vertex], scenePositions[3u * vertex + 1u],
-              scenePositions[3u * vertex + 2u]);
-}
+vec3 scenePosition(uint vertex) { return texelFetch(uScenePositions, int(vertex)).xyz; }
 
-vec3 sceneNormal(uint vertex) {
-  return vec3(sceneNormals[3u * vertex], sceneNormals[3u * vertex + 1u],
-              sceneNormals[3u * vertex + 2u]);
-}
+vec3 sceneNormal(uint vertex) { return texelFetch(uSceneNormals, int(vertex)).xyz; }
+
+// The texture coordinates of a vertex; (0, 0) for meshes without them.
+vec2 sceneUv(uint vertex) { return texelFetch(uSceneUvs, int(vertex)).xy; }

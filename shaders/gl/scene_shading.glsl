@@ -30,8 +30,40 @@ struct GpuMaterial {
   vec4 iridescence;           // KHR_materials_iridescence factor, film IOR, thickness min, max (nm)
   vec4 iridescenceTextures;   // iridescence texture (R), thickness texture (G), unused, unused
 };
-layout(std430, binding = BINDING_SCENE_MATERIALS) readonly buffer SceneMaterials { GpuMaterial sceneMaterials[]; };
-layout(std430, binding = BINDING_SCENE_INSTANCES) readonly buffer SceneInstances { ivec2 sceneInstances[]; };
+// Material m (-1: the default) as engine/gl/shading_buffers.cpp packMaterial writes it: the
+// texels (m + 1) GPU_MATERIAL_TEXELS + k of an RGBA32F buffer texture, k in GpuMaterial's
+// order. A caller's unused fields cost nothing: their fetches are dead code to the compiler.
+const int GPU_MATERIAL_TEXELS = 20;
+layout(binding = UNIT_SCENE_MATERIALS) uniform samplerBuffer uSceneMaterials;
+vec4 sceneMaterialTexel(int m, int k) {
+  return texelFetch(uSceneMaterials, (m + 1) * GPU_MATERIAL_TEXELS + k);
+}
+GpuMaterial sceneMaterialRecord(int m) {
+  GpuMaterial g;
+  g.colorKa = sceneMaterialTexel(m, 0);
+  g.kdKsExpKps = sceneMaterialTexel(m, 1);
+  g.specularIor = sceneMaterialTexel(m, 2);
+  g.mirrorKt = sceneMaterialTexel(m, 3);
+  g.transmitAlpha = sceneMaterialTexel(m, 4);
+  g.emissionChecker = sceneMaterialTexel(m, 5);
+  g.checkerAScale = sceneMaterialTexel(m, 6);
+  g.checkerBCutoff = sceneMaterialTexel(m, 7);
+  g.alphaMask = sceneMaterialTexel(m, 8);
+  g.baseMetallic = sceneMaterialTexel(m, 9);
+  g.tintRoughness = sceneMaterialTexel(m, 10);
+  g.modelTransSpec = sceneMaterialTexel(m, 11);
+  g.texColorEmitMrAo = sceneMaterialTexel(m, 12);
+  g.texNormalScales = sceneMaterialTexel(m, 13);
+  g.baseFactorMetallic = sceneMaterialTexel(m, 14);
+  g.roughnessFactor = sceneMaterialTexel(m, 15);
+  g.bumpKindTexKDelta = sceneMaterialTexel(m, 16);
+  g.bumpWave = sceneMaterialTexel(m, 17);
+  g.iridescence = sceneMaterialTexel(m, 18);
+  g.iridescenceTextures = sceneMaterialTexel(m, 19);
+  return g;
+}
+// Per instance (material + 1, first triangle in the shared buffers): RG32I.
+layout(binding = UNIT_SCENE_INSTANCES) uniform isamplerBuffer uSceneInstances;
 struct GpuLight {
   vec4 typeRangeCos;     // type, range, cos inner, cos outer
   vec4 colorIntensity;   // colour, intensity
@@ -39,8 +71,18 @@ struct GpuLight {
   vec4 directionShadow;  // direction, 1 when it casts shadows
   vec4 edgeURadius;      // quad edge u, radius
 };
-layout(std430, binding = BINDING_SCENE_LIGHTS) readonly buffer SceneLights { GpuLight sceneLights[]; };
-uniform int uLightCount;  // sceneLights has a dummy entry when the scene has no lights
+// Light i, 5 RGBA32F texels in GpuLight's order (engine/gl/shading_buffers.cpp packLight).
+layout(binding = UNIT_SCENE_LIGHTS) uniform samplerBuffer uSceneLights;
+GpuLight sceneLightRecord(int i) {
+  GpuLight g;
+  g.typeRangeCos = texelFetch(uSceneLights, 5 * i + 0);
+  g.colorIntensity = texelFetch(uSceneLights, 5 * i + 1);
+  g.positionArea = texelFetch(uSceneLights, 5 * i + 2);
+  g.directionShadow = texelFetch(uSceneLights, 5 * i + 3);
+  g.edgeURadius = texelFetch(uSceneLights, 5 * i + 4);
+  return g;
+}
+uniform int uLightCount;  // the buffer has a dummy entry when the scene has no lights
 // Alpha of the colour textures of alpha-masked materials, one per layer at its own size in the
 // layer's corner, image row y at GL row y (engine/gl/shading_buffers.cpp).
 layout(binding = UNIT_SCENE_ALPHA_MASKS) uniform sampler2DArray uSceneAlphaMasks;
@@ -67,7 +109,7 @@ void sceneApplyGltfPbr(inout ShadingMaterial s, vec3 base, float metallic, float
 vec4 sceneMaterialTexture(int tex, vec2 uv, float uvLod) {
   if (!sceneTextureValid(tex)) return vec4(1.0);
   if (!(uvLod > -1.0e38)) return sceneSampleTexture(tex, uv);
-  vec2 size = vec2(sceneTextureInfo[tex].xy);
+  vec2 size = vec2(sceneTextureInfo(tex).xy);
   return sceneSampleTextureLod(tex, uv, uvLod + 0.5 * log2(max(size.x * size.y, 1.0)));
 }
 
@@ -76,7 +118,7 @@ int sceneMaterialModel(int m) {
 #if DIPTYCH_SCENE_MODEL >= 0
   return DIPTYCH_SCENE_MODEL;  // shading.glsl's model dispatch folds
 #else
-  return int(sceneMaterials[m + 1].modelTransSpec.x + 0.5);
+  return int(sceneMaterialRecord(m).modelTransSpec.x + 0.5);
 #endif
 }
 
@@ -87,7 +129,7 @@ int sceneMaterialModel(int m) {
 // or checker),
 // occlusion scaling k_a, the film's strength and thickness textures.
 ShadingMaterial sceneMaterialLod(int m, vec2 uv, float uvLod) {
-  GpuMaterial g = sceneMaterials[m + 1];
+  GpuMaterial g = sceneMaterialRecord(m);
   ShadingMaterial s;
   s.color = g.colorKa.xyz;
   s.ka = g.colorKa.w;
@@ -172,7 +214,7 @@ ShadingMaterial sceneMaterial(int m, vec2 uv) { return sceneMaterialLod(m, uv, -
 
 // KHR_materials_volume on the raster side: volumeTransmittance over the material's
 // thicknessFactor (1 for thin-walled materials), packed by engine/gl/shading_buffers.cpp.
-vec3 sceneVolumeTransmittance(int m) { return sceneMaterials[m + 1].roughnessFactor.yzw; }
+vec3 sceneVolumeTransmittance(int m) { return sceneMaterialRecord(m).roughnessFactor.yzw; }
 
 // glTF 3.9.3 normal map as engine/rt/surface_point.cpp normalMapped: n' = normalize(T x + B y
 // + N z), (x, y, z) = (2 texel - 1) * (scale, scale, 1), T Gram-Schmidt against n, B = w (N x T).
@@ -180,7 +222,7 @@ vec3 sceneNormalMapped(int m, vec3 n, vec4 tangent, vec2 uv) {
 #if !DIPTYCH_SCENE_NORMAL_MAPS
   return n;
 #endif
-  GpuMaterial g = sceneMaterials[m + 1];
+  GpuMaterial g = sceneMaterialRecord(m);
   int tex = int(g.texNormalScales.x);
   if (!sceneTextureValid(tex)) return n;
   vec3 nn = length(n) > 0.0 ? normalize(n) : n;
@@ -212,7 +254,7 @@ float sceneBumpHeight(GpuMaterial g, vec2 uv) {
 
 // n' of material m at uv from t_u = dP/du, t_v = dP/dv; n unchanged without a bump map.
 vec3 sceneBumpMapped(int m, vec3 n, vec3 tu, vec3 tv, vec2 uv) {
-  GpuMaterial g = sceneMaterials[m + 1];
+  GpuMaterial g = sceneMaterialRecord(m);
   if (!(g.bumpKindTexKDelta.x > 0.5)) return n;
   float k = g.bumpKindTexKDelta.z, d = g.bumpKindTexKDelta.w;
   float du = bumpSlope(sceneBumpHeight(g, uv + vec2(d, 0.0)), sceneBumpHeight(g, uv - vec2(d, 0.0)), k, d);
@@ -240,7 +282,7 @@ vec3 sceneDetailNormal(int m, vec3 n, vec4 tangent, vec3 p0, vec3 p1, vec3 p2, v
                        vec2 t2, vec2 uv) {
   n = sceneNormalMapped(m, n, tangent, uv);
 #if DIPTYCH_SCENE_BUMP  // gl/scene_features.glsl
-  if (!(sceneMaterials[m + 1].bumpKindTexKDelta.x > 0.5)) return n;
+  if (!(sceneMaterialRecord(m).bumpKindTexKDelta.x > 0.5)) return n;
   vec3 tu, tv;
   sceneTriangleTangents(p0, p1, p2, t0, t1, t2, tu, tv);
   n = sceneBumpMapped(m, n, tu, tv, uv);
@@ -251,7 +293,7 @@ vec3 sceneDetailNormal(int m, vec3 n, vec4 tangent, vec3 p0, vec3 p1, vec3 p2, v
 // Coverage of material m at uv: its alpha times its colour texture's alpha (nearest or
 // bilinear by the texture's magnification filter), as resolveMaterial computes it on the CPU.
 float sceneMaterialAlpha(int m, vec2 uv) {
-  GpuMaterial g = sceneMaterials[m + 1];
+  GpuMaterial g = sceneMaterialRecord(m);
   float alpha = g.transmitAlpha.w;
   int layer = int(g.alphaMask.x);
   if (layer < 0) return alpha;
@@ -277,10 +319,10 @@ float sceneMaterialAlpha(int m, vec2 uv) {
   return alpha * mix(top, bottom, f.y);
 }
 
-float sceneMaterialAlphaCutoff(int m) { return sceneMaterials[m + 1].checkerBCutoff.w; }
+float sceneMaterialAlphaCutoff(int m) { return sceneMaterialRecord(m).checkerBCutoff.w; }
 
 ShadingLight sceneLight(int i) {
-  GpuLight g = sceneLights[i];
+  GpuLight g = sceneLightRecord(i);
   ShadingLight l;
 #if DIPTYCH_SCENE_LIGHT_TYPE >= 0
   l.type = DIPTYCH_SCENE_LIGHT_TYPE;  // a constant: sampleLight's type tests fold
@@ -298,10 +340,10 @@ ShadingLight sceneLight(int i) {
   return l;
 }
 
-bool sceneLightCastsShadows(int i) { return sceneLights[i].directionShadow.w > 0.5; }
+bool sceneLightCastsShadows(int i) { return sceneLightRecord(i).directionShadow.w > 0.5; }
 
-int sceneInstanceMaterial(int instance) { return sceneInstances[instance].x - 1; }
-uint sceneInstanceFirstTriangle(int instance) { return uint(sceneInstances[instance].y); }
+int sceneInstanceMaterial(int instance) { return texelFetch(uSceneInstances, instance).x - 1; }
+uint sceneInstanceFirstTriangle(int instance) { return uint(texelFetch(uSceneInstances, instance).y); }
 
 // Whether the material of a hits texel can have a reflection (`lobe`: as hasReflection) or a
 // transmission signal at any of its points (bits packed by engine/gl/shading_buffers.cpp from
@@ -309,12 +351,12 @@ uint sceneInstanceFirstTriangle(int instance) { return uint(sceneInstances[insta
 // so a producer writes its zero without rebuilding the surface (as passes/rt/rt_secondary.cpp).
 bool sceneHitMayReflect(uvec4 hits, bool lobe) {
   if (hits.x == 0u) return false;
-  int gates = int(sceneMaterials[sceneInstanceMaterial(int(hits.x) - 1) + 1].modelTransSpec.w);
+  int gates = int(sceneMaterialRecord(sceneInstanceMaterial(int(hits.x) - 1)).modelTransSpec.w);
   return (gates & (lobe ? 2 : 1)) != 0;
 }
 bool sceneHitMayTransmit(uvec4 hits) {
   if (hits.x == 0u) return false;
-  int gates = int(sceneMaterials[sceneInstanceMaterial(int(hits.x) - 1) + 1].modelTransSpec.w);
+  int gates = int(sceneMaterialRecord(sceneInstanceMaterial(int(hits.x) - 1)).modelTransSpec.w);
   return (gates & 4) != 0;
 }
 
@@ -354,9 +396,9 @@ SceneSurface surfaceFromHits(uvec4 texel) {
   s.faceNormal = safeNormalize(cross(p1 - p0, p2 - p0));
   vec3 n = w * sceneNormal(tri.x) + u * sceneNormal(tri.y) + v * sceneNormal(tri.z);
   s.shadingNormal = maxAbsComponent(n) > 0.0 ? normalize(n) : s.faceNormal;
-  vec2 t0 = vec2(sceneUvs[2u * tri.x], sceneUvs[2u * tri.x + 1u]);
-  vec2 t1 = vec2(sceneUvs[2u * tri.y], sceneUvs[2u * tri.y + 1u]);
-  vec2 t2 = vec2(sceneUvs[2u * tri.z], sceneUvs[2u * tri.z + 1u]);
+  vec2 t0 = sceneUv(tri.x);
+  vec2 t1 = sceneUv(tri.y);
+  vec2 t2 = sceneUv(tri.z);
   s.uv = w * t0 + u * t1 + v * t2;
   s.material = sceneInstanceMaterial(s.instance);
   // The CPU maps the interpolated normal (makeSurfacePoint); zero tangents leave it unchanged.

@@ -4,7 +4,9 @@
 // EXT_texture_filter_anisotropic's probes. Included by scene_shading.glsl.
 #include "common/bindings.glsl"
 #include "gl/scene_features.glsl"
-layout(std430, binding = BINDING_SCENE_TEXTURES) readonly buffer SceneTextures { ivec4 sceneTextureInfo[]; };
+// Per texture (width, height, levels, flags), RGBA32I (engine/gl/scene_textures.h).
+layout(binding = UNIT_SCENE_TEXTURE_INFO) uniform isamplerBuffer uSceneTextureInfo;
+ivec4 sceneTextureInfo(int tex) { return texelFetch(uSceneTextureInfo, tex); }
 layout(binding = UNIT_SCENE_TEXTURES) uniform sampler2DArray uSceneTextures;
 
 // The wrap modes (0 repeat, 1 clamp to edge, 2 mirrored repeat): the coordinate reduced by
@@ -33,11 +35,11 @@ bool sceneTextureValid(int tex) {
 #if !DIPTYCH_SCENE_TEXTURES && !DIPTYCH_SCENE_NORMAL_MAPS && !DIPTYCH_SCENE_BUMP
   return false;  // folds every texture path away (scene_features.glsl)
 #endif
-  return tex >= 0 && tex < sceneTextureInfo.length() && sceneTextureInfo[tex].z > 0;
+  return tex >= 0 && tex < textureSize(uSceneTextureInfo) && sceneTextureInfo(tex).z > 0;
 }
 
 ivec2 sceneTextureLevelSize(int tex, int level) {
-  return max(ivec2(1), sceneTextureInfo[tex].xy >> ivec2(level));
+  return max(ivec2(1), sceneTextureInfo(tex).xy >> ivec2(level));
 }
 
 vec4 sceneTexelAt(int tex, int level, int x, int y) {
@@ -46,7 +48,7 @@ vec4 sceneTexelAt(int tex, int level, int x, int y) {
 
 vec4 sceneSampleLevel(int tex, int level, vec2 uv, bool linearTexels) {
   ivec2 size = sceneTextureLevelSize(tex, level);
-  int flags = sceneTextureInfo[tex].w;
+  int flags = sceneTextureInfo(tex).w;
   int wrapS = flags & 3, wrapT = (flags >> 2) & 3;
   vec2 t = vec2(sceneReduceCoordinate(uv.x, wrapS), sceneReduceCoordinate(uv.y, wrapT));
   if (!linearTexels) {
@@ -71,7 +73,7 @@ const int SCENE_MIPS_NONE = 0, SCENE_MIPS_NEAREST = 1, SCENE_MIPS_LINEAR = 2;
 // d = ceil(lambda + 1/2) - 1, or levels floor(lambda), floor(lambda) + 1 blended.
 vec4 sceneSampleFiltered(int tex, vec2 uv, float lambda, bool linearTexels, int mips) {
   if (!sceneTextureValid(tex)) return vec4(1.0);
-  int top = sceneTextureInfo[tex].z - 1;
+  int top = sceneTextureInfo(tex).z - 1;
   if (mips == SCENE_MIPS_NONE || !(lambda > 0.0)) return sceneSampleLevel(tex, 0, uv, linearTexels);
   float l = min(lambda, float(top));
   if (mips == SCENE_MIPS_NEAREST)
@@ -86,7 +88,7 @@ vec4 sceneSampleFiltered(int tex, vec2 uv, float lambda, bool linearTexels, int 
 // sampleTextureLod: the texture's own sampler; magnification (level 0) when lambda <= 0.
 vec4 sceneSampleTextureLod(int tex, vec2 uv, float lambda) {
   if (!sceneTextureValid(tex)) return vec4(1.0);
-  int flags = sceneTextureInfo[tex].w;
+  int flags = sceneTextureInfo(tex).w;
   if (!(lambda > 0.0)) return sceneSampleFiltered(tex, uv, 0.0, (flags & 128) != 0, SCENE_MIPS_NONE);
   int minCode = (flags >> 4) & 7;  // 0 N, 1 L, 2 NMN, 3 LMN, 4 NML, 5 LML
   bool linearTexels = minCode == 1 || minCode == 3 || minCode == 5;
@@ -99,7 +101,7 @@ vec4 sceneSampleTexture(int tex, vec2 uv) { return sceneSampleTextureLod(tex, uv
 
 // lodFromGradients: lambda = log2(max(|dx| size, |dy| size)).
 float sceneLodFromGradients(int tex, vec2 dx, vec2 dy) {
-  vec2 size = vec2(sceneTextureInfo[tex].xy);
+  vec2 size = vec2(sceneTextureInfo(tex).xy);
   float rho = max(length(dx * size), length(dy * size));
   return rho > 0.0 ? log2(rho) : -3.0e38;
 }
@@ -108,7 +110,7 @@ float sceneLodFromGradients(int tex, vec2 dx, vec2 dy) {
 // longer axis at lambda = log2(Pmax / N).
 vec4 sceneSampleAnisotropic(int tex, vec2 uv, vec2 dx, vec2 dy, int maxAnisotropy) {
   if (!sceneTextureValid(tex)) return vec4(1.0);
-  vec2 size = vec2(sceneTextureInfo[tex].xy);
+  vec2 size = vec2(sceneTextureInfo(tex).xy);
   float px = length(dx * size), py = length(dy * size);
   float pmax = max(px, py), pmin = min(px, py);
   if (!(pmax > 0.0) || isinf(pmax)) return sceneSampleFiltered(tex, uv, 0.0, true, SCENE_MIPS_LINEAR);

@@ -43,8 +43,8 @@ double mismatchFraction(const std::filesystem::path& file, int& hits,
   const gl::Buffer out = gl::Buffer::create(std::size_t(kW) * kH * kStride * 4);
   const gl::Program program = gl::loadProgram(
       {std::filesystem::path(DIPTYCH_TESTS_DIR) / "unit/shaders/material_parity.comp"});
-  world.glScene().bindStorage();
-  world.glShading().bindStorage();
+  world.glScene().bind();
+  world.glShading().bind();
   out.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   program.use();
   gl::glBindTextureUnit(0, targets.hits.id());

@@ -4,11 +4,14 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 
 #include "engine/core/error.h"
 #include "engine/gl/debug.h"
 #include "engine/gl/loader.h"
 #include "engine/gl/objects.h"
+#include "engine/gl/shader.h"
 #include "engine/gl/transfer.h"
 #include "gl_test_context.h"
 
@@ -182,6 +185,55 @@ TEST_F(GlObjects, BufferRoundTripAndMoveSemantics) {
   b.download(0, 20, back.data());
   EXPECT_EQ(back[2], 9u);
   EXPECT_THROW(b.upload(20, 4, &nine), Error);
+}
+
+// A buffer texture reads its buffer's bytes as texels of its format, bit for bit, and knows its
+// texel count: the scene's positions, indices and material records reach every GL pass this
+// way (objects.h BufferTexture, shaders/gl/scene_buffers.glsl).
+TEST_F(GlObjects, BufferTextureFetchesTheBufferBitForBit) {
+  const std::vector<float> floats = {0.1f, -0.f, 3.0e38f, 1.f, -2.f, 1e-30f, 7.5f, 0.3f, -9.f};
+  const std::vector<std::uint32_t> uints = {7, 0xFFFFFFFFu, 3, 4, 5, 0x80000000u};
+  const Buffer floatBuffer = Buffer::create(floats.size() * 4, floats.data());
+  const Buffer uintBuffer = Buffer::create(uints.size() * 4, uints.data());
+  const BufferTexture floatTexels =
+      BufferTexture::create(floatBuffer, GL_RGB32F, 12, "test.rgb32f");
+  const BufferTexture uintTexels =
+      BufferTexture::create(uintBuffer, GL_RGB32UI, 12, "test.rgb32ui");
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "diptych_buffer_texture_test.comp";
+  std::ofstream(file) << R"(layout(local_size_x = 1) in;
+layout(binding = 0) uniform samplerBuffer uFloats;
+layout(binding = 1) uniform usamplerBuffer uUints;
+layout(std430, binding = 0) writeonly buffer Out { uint words[]; };
+void main() {
+  for (int t = 0; t < 3; ++t) {
+    vec3 v = texelFetch(uFloats, t).xyz;
+    for (int c = 0; c < 3; ++c) words[3 * t + c] = floatBitsToUint(v[c]);
+  }
+  for (int t = 0; t < 2; ++t) {
+    uvec3 v = texelFetch(uUints, t).xyz;
+    for (int c = 0; c < 3; ++c) words[9 + 3 * t + c] = v[c];
+  }
+  words[15] = uint(textureSize(uFloats));
+  words[16] = uint(textureSize(uUints));
+}
+)";
+  const Program program = loadProgram({file});
+  std::filesystem::remove(file);
+  const Buffer out = Buffer::create(17 * 4);
+  out.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  floatTexels.bind(0);
+  uintTexels.bind(1);
+  program.use();
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<std::uint32_t> words(17);
+  out.download(0, words.size() * 4, words.data());
+  for (std::size_t i = 0; i < floats.size(); ++i)
+    EXPECT_EQ(words[i], std::bit_cast<std::uint32_t>(floats[i])) << "float " << i;
+  for (std::size_t i = 0; i < uints.size(); ++i) EXPECT_EQ(words[9 + i], uints[i]) << "uint " << i;
+  EXPECT_EQ(words[15], 3u);
+  EXPECT_EQ(words[16], 2u);
 }
 
 TEST_F(GlObjects, TimerQueryReportsMilliseconds) {

@@ -249,8 +249,8 @@ TEST(ShadingParity, SurfaceFromVisibilityMatchesMakeSurfacePoint) {
   gl::rasterizeGBuffer(world.glScene(), scene.camera, kW, kH, targets);
   const gl::Buffer out = gl::Buffer::create(std::size_t(kW) * kH * kStride * 4);
   const gl::Program program = gl::loadProgram({kShader}, {{"SURFACE_CASES", ""}});
-  world.glScene().bindStorage();
-  world.glShading().bindStorage();
+  world.glScene().bind();
+  world.glShading().bind();
   out.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   program.use();
   program.set("uLightCount", world.glShading().lightCount);
