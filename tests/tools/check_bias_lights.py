@@ -11,6 +11,8 @@ point (cube map, light overhead): the ground is normal to the -y face's axis, so
 axis depth is constant on it and the model predicts (nearly) no acne whatever the incidence;
 the measured acne stays under 2% with no bias at all, where a distance-along-the-ray model would
 say up to 50%.
+Spot: ground pixels outside the cone are left out of the counts (unreached_pixels > 0); point:
+none is (a point light reaches every pixel).
 """
 import json
 import sys
@@ -36,6 +38,10 @@ def spot(path):
         assert gap < 0.05, "model and measurement differ by %.3f" % gap
         print("spot %d: acne < 1%% from %.4g, model %.4g (ratio %.2f), largest gap %.1f points" %
               (c["resolution"], measured, model, ratio, 100 * gap))
+    # Ground pixels outside the cone get no light: they are no receivers of it (the exact side
+    # traces no ray there), so a map's depth test there counts neither as acne nor as a shadow.
+    unreached = {p["geometry"]["unreached_pixels"] for p in m["points"]}
+    assert len(unreached) == 1 and unreached.pop() > 0, "no pixel left out of the cone: %s" % unreached
 
 
 def point(path):
@@ -45,6 +51,7 @@ def point(path):
         first = points[c["indices"][0]]
         assert first["geometry"]["predicted_acne_rate"] < 0.02, first["geometry"]
         assert c["max_acne_rate"] < 0.02, "acne on the ground under a point light: %s" % c
+        assert first["geometry"]["unreached_pixels"] == 0, "a point light reaches every pixel"
         print("point %d: model %.2f%%, measured at most %.2f%% acne" %
               (c["resolution"], 100 * first["geometry"]["predicted_acne_rate"],
                100 * c["max_acne_rate"]))

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "engine/rt/shadow_rays.h"
 #include "engine/rt/surface_point.h"
+#include "engine/shading/shading.h"
 #include "passes/common/hits_texel.h"
 #include "passes/raster/shadow_map_frusta.h"
 
@@ -69,7 +71,7 @@ double uniformSumAbove(double a, double c, double s) {
 }
 
 void measureGeometry(StateReference& s, const FrameSettings& frame, int light,
-                     double contactDistance) {
+                     double contactDistance, bool reachedOnly) {
   const CpuImage& gb = s.exact.outputs.at("gbuffer.hits");
   const int w = gb.desc.width, h = gb.desc.height;
   const std::size_t n = std::size_t(w) * h;
@@ -87,6 +89,9 @@ void measureGeometry(StateReference& s, const FrameSettings& frame, int light,
   // where an impostor missed its sphere the traced one.
   const PinholeFrame pinhole(frame.camera, w, h);
   const RtScene& rt = s.world->rtScene();
+  const std::optional<shading::ShadingLight> reach =
+      reachedOnly && l && lightMayNotReach(*l) ? std::optional(shading::toShadingLight(*l))
+                                               : std::nullopt;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const std::size_t i = std::size_t(y) * w + x;
@@ -97,6 +102,11 @@ void measureGeometry(StateReference& s, const FrameSettings& frame, int light,
         continue;
       }
       const SurfacePoint p = makeSurfacePoint(*s.scene, world, *hit, vec3(0.f));
+      if (reach && !lightReaches(*reach, p.position)) {
+        s.mask[i] = 0;
+        ++s.unreachedPixels;
+        continue;
+      }
       const vec3 view = p.position - frame.camera.position;
       const double cosView = std::abs(glm::dot(glm::normalize(view), p.faceNormal));
       s.footprint[i] = float(glm::length(view) * pixelAngle / std::sqrt(std::max(cosView, 1e-3)));

@@ -41,6 +41,7 @@ struct StateReference {
   ShadowContacts contacts;               // of the swept light (empty without one)
   double contactDistance = 0;            // world units
   std::string contactFile;               // its image, relative to the sweep's folder
+  int unreachedPixels = 0;               // left out of the mask: the light sends them nothing
 };
 
 // The contacts as an image: contact pixels red, other receivers grey, background black.
@@ -49,8 +50,12 @@ Image contactImage(const StateReference& state, int width, int height);
 // Fills footprint, receivers and contacts from the exact run's G-buffer and signal. A contact
 // pixel is exactly shadowed and its exact shadow ray (toward the light's centre) meets the
 // occluder within `contactDistance` world units (< 0: 1e-3 x the scene's bounding diagonal).
+// `reachedOnly` (a visibility sweep): a pixel that the light sends nothing (lightReaches: outside
+// a spot's cone, behind a one-sided area light, beyond its range) leaves the mask. Its visibility
+// multiplies zero in every shading, and the exact side writes 1 there without tracing a ray,
+// so a shadow map's 0 there would count as a false shadow that no image shows.
 void measureGeometry(StateReference& state, const FrameSettings& frame, int light,
-                     double contactDistance);
+                     double contactDistance, bool reachedOnly);
 
 // The contacts of light `light` on the frame whose G-buffer hits are `gbuffer` and exact
 // visibility `exact` (one layer): a pixel is a contact when it is exactly shadowed and its exact

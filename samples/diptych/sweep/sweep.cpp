@@ -254,7 +254,7 @@ nlohmann::json runSweep(const SweepOptions& o) {
             m = m && std::count(receivers.begin(), receivers.end(), int(gb.u(x, y, 0)) - 1);
           }
       }
-      measureGeometry(*state, frame, o.light, o.contact);
+      measureGeometry(*state, frame, o.light, o.contact, base.slot == "visibility");
       if (!state->contacts.contact.empty()) {  // the contacts of this state, for the docs/report
         state->contactFile = fmt::format("classes/contacts-p{:04d}.png", i);
         writeImage(o.out / state->contactFile, contactImage(*state, width, height));
@@ -321,7 +321,8 @@ nlohmann::json runSweep(const SweepOptions& o) {
     row["geometry"] = {{"texel_world", t.texelWorld},
                        {"incidence_deg", t.incidenceDeg},
                        {"pixel_world", upperMedian(std::move(footprints))},
-                       {"contact_world", state->contactDistance}};
+                       {"contact_world", state->contactDistance},
+                       {"unreached_pixels", state->unreachedPixels}};
     if (t.acneRate >= 0) row["geometry"]["predicted_acne_rate"] = t.acneRate;
     results["points"].push_back(row);
     writeTextFile(resultsFile, results.dump(1));
