@@ -13,9 +13,6 @@
 namespace diptych::gl {
 namespace {
 
-// vec4s per material record: packMaterial's, and GLSL's GpuMaterial (GPU_MATERIAL_TEXELS).
-constexpr std::size_t kMaterialTexels = 20;
-
 // The texture whose alpha multiplies the material's coverage (resolveMaterial: a checker
 // replaces the colour texture, and an empty image samples as 1).
 const diptych::Texture* coverageTexture(const Scene& scene, const Material& m) {
@@ -52,7 +49,7 @@ int wrapCode(WrapMode w) {
   return 0;
 }
 
-// scene_shading.glsl's GpuMaterial, a vec4 a texel (kMaterialTexels): nine vec4, then the glTF
+// scene_shading.glsl's GpuMaterial, a vec4 a texel (GPU_MATERIAL_TEXELS): nine vec4, then the glTF
 // model's three, the four of the textures, the bump map's two and the iridescence's two.
 // Which secondary signals some point of the material can have (shading::materialHas*, bounds
 // over its textures), as bits of GpuMaterial.modelTransSpec.w: the GL producers' gate before
@@ -239,9 +236,11 @@ GlShadingBuffers uploadShading(const Scene& scene, const GlSceneBuffers& geometr
   out.materials = makeBuffer(materials.data(), materials.size() * sizeof(float));
   out.instances = makeBuffer(instances.data(), instances.size() * sizeof(std::int32_t));
   out.lights = makeBuffer(lights.data(), lights.size() * sizeof(float));
-  // GLSL reads a material as GPU_MATERIAL_TEXELS texels (scene_shading.glsl sceneMaterialRecord).
-  DIPTYCH_CHECK(materials.size() == materialIndices.size() * 4 * kMaterialTexels,
+  // GLSL reads records of GPU_MATERIAL_TEXELS and GPU_LIGHT_TEXELS texels (bindings.glsl).
+  DIPTYCH_CHECK(materials.size() == materialIndices.size() * 4 * GPU_MATERIAL_TEXELS,
                 "packMaterial wrote a record of another size than GLSL's GpuMaterial");
+  DIPTYCH_CHECK(lights.size() == scene.lights.size() * 4 * GPU_LIGHT_TEXELS,
+                "packLight wrote a record of another size than GLSL's GpuLight");
   out.materialTexels = BufferTexture::create(out.materials, GL_RGBA32F, 16, "scene.materials");
   out.instanceTexels = BufferTexture::create(out.instances, GL_RG32I, 8, "scene.instances");
   out.lightTexels = BufferTexture::create(out.lights, GL_RGBA32F, 16, "scene.lights");

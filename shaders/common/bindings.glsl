@@ -1,6 +1,7 @@
-// bindings.glsl: every texture unit shared between passes, defined once for GLSL and C++. GLSL
-// includes it and writes `layout(binding = X)` (constant expressions in layout qualifiers: GLSL
-// 4.40+, section 4.4); C++ includes it inside namespace diptych::gl through engine/gl/bindings.h.
+// bindings.glsl: every texture unit shared between passes (and the record sizes of the scene's
+// buffer textures), defined once for GLSL and C++. GLSL includes it and writes
+// `layout(binding = X)` (constant expressions in layout qualifiers: GLSL 4.40+, section 4.4);
+// C++ includes it inside namespace diptych::gl through engine/gl/bindings.h.
 // Same subset rules as shading.glsl: only `const int` declarations here.
 #ifndef DIPTYCH_BINDINGS_GLSL
 #define DIPTYCH_BINDINGS_GLSL
@@ -18,6 +19,10 @@ const int UNIT_SCENE_TANGENTS = 20;
 const int UNIT_SCENE_MATERIALS = 21;
 const int UNIT_SCENE_INSTANCES = 22;
 const int UNIT_SCENE_LIGHTS = 23;
+// Their records' sizes in RGBA32F texels: GpuMaterial and GpuLight (scene_shading.glsl), as
+// engine/gl/shading_buffers.cpp packMaterial and packLight write them.
+const int GPU_MATERIAL_TEXELS = 20;
+const int GPU_LIGHT_TEXELS = 5;
 // Per-texture records (engine/gl/scene_textures.cpp, shaders/gl/scene_textures.glsl).
 const int UNIT_SCENE_TEXTURE_INFO = 24;
 // The shadow-map lookup's per-layer matrices and per-light records (shadow_map_lookup.frag).

@@ -33,7 +33,6 @@ struct GpuMaterial {
 // Material m (-1: the default) as engine/gl/shading_buffers.cpp packMaterial writes it: the
 // texels (m + 1) GPU_MATERIAL_TEXELS + k of an RGBA32F buffer texture, k in GpuMaterial's
 // order. A caller's unused fields cost nothing: their fetches are dead code to the compiler.
-const int GPU_MATERIAL_TEXELS = 20;
 layout(binding = UNIT_SCENE_MATERIALS) uniform samplerBuffer uSceneMaterials;
 vec4 sceneMaterialTexel(int m, int k) {
   return texelFetch(uSceneMaterials, (m + 1) * GPU_MATERIAL_TEXELS + k);
@@ -71,15 +70,16 @@ struct GpuLight {
   vec4 directionShadow;  // direction, 1 when it casts shadows
   vec4 edgeURadius;      // quad edge u, radius
 };
-// Light i, 5 RGBA32F texels in GpuLight's order (engine/gl/shading_buffers.cpp packLight).
+// Light i, GPU_LIGHT_TEXELS RGBA32F texels in GpuLight's order (engine/gl/shading_buffers.cpp
+// packLight).
 layout(binding = UNIT_SCENE_LIGHTS) uniform samplerBuffer uSceneLights;
 GpuLight sceneLightRecord(int i) {
   GpuLight g;
-  g.typeRangeCos = texelFetch(uSceneLights, 5 * i + 0);
-  g.colorIntensity = texelFetch(uSceneLights, 5 * i + 1);
-  g.positionArea = texelFetch(uSceneLights, 5 * i + 2);
-  g.directionShadow = texelFetch(uSceneLights, 5 * i + 3);
-  g.edgeURadius = texelFetch(uSceneLights, 5 * i + 4);
+  g.typeRangeCos = texelFetch(uSceneLights, GPU_LIGHT_TEXELS * i + 0);
+  g.colorIntensity = texelFetch(uSceneLights, GPU_LIGHT_TEXELS * i + 1);
+  g.positionArea = texelFetch(uSceneLights, GPU_LIGHT_TEXELS * i + 2);
+  g.directionShadow = texelFetch(uSceneLights, GPU_LIGHT_TEXELS * i + 3);
+  g.edgeURadius = texelFetch(uSceneLights, GPU_LIGHT_TEXELS * i + 4);
   return g;
 }
 uniform int uLightCount;  // the buffer has a dummy entry when the scene has no lights
